@@ -1,0 +1,63 @@
+// A sharpening job as the case file `hobsharp-case/1` states it (shared/case-format.md), in the
+// file's units: lengths in mm, angles in degrees, coefficients in SI with the motion parameter,
+// deviations in µm. Optional fields are empty when the file leaves them out.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "axis_polynomials.h"
+#include "correction.h"
+#include "tooth_face.h"
+
+namespace hobsharp {
+
+struct HobInput {
+  double normalModule = 0;         // mm
+  double normalPressureAngle = 0;  // deg
+  double outerDiameter = 0;        // d_a, mm
+  double pitchDiameter = 0;        // d_p, mm
+  double gashDepth = 0;            // mm, from the outer diameter
+  double length = 0;               // mm
+  double rakeOffset = 0;           // e, mm
+  GashKind gash = GashKind::Helical;
+  Hand hand = Hand::Right;
+  std::optional<double> gashLead;        // L_c, mm, positive
+  std::optional<double> gashHelixAngle;  // deg, at the pitch diameter
+};
+
+struct GridInput {
+  std::optional<int> radial, axial;
+  std::optional<double> rMin, rMax, xMin, xMax;  // mm
+};
+
+struct CorrectionInput {
+  std::optional<double> truncation;
+  std::optional<double> amplification;
+  std::vector<Axis> lockedAxes;
+  std::vector<Coefficient> locked;
+};
+
+struct CaseInput {
+  HobInput hob;
+  double wheelOuterDiameter = 0;  // mm
+  double tilt = 0;                // eta, deg
+  std::optional<double> settingAngle;    // gamma_m, deg
+  std::optional<double> centerDistance;  // E_t, mm
+  MachineConstants machine;
+  int degree = 4;
+  GridInput grid;
+  std::optional<AxisPolynomials> axes;      // what the machine ran
+  std::optional<Eigen::MatrixXd> measured;  // µm, grid.radial x grid.axial
+  CorrectionInput correction;
+};
+
+// The largest grid the calculator takes, per direction.
+constexpr int kMaxGridLines = 201;
+// How far a grid may reach past the face (root, tip, hob ends), mm.
+constexpr double kGridTolerance = 1e-3;
+
+}  // namespace hobsharp

@@ -1,0 +1,299 @@
+#include "case_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+
+#include <nlohmann/json.hpp>
+
+namespace hobsharp {
+namespace {
+
+using Json = nlohmann::json;
+
+Error refuse(const std::string& field, const std::string& reason) {
+  return Error{field, field + ": " + reason};
+}
+
+const char* typeName(const Json& j) {
+  if (j.is_null()) return "null";
+  if (j.is_boolean()) return "a boolean";
+  if (j.is_number()) return "a number";
+  if (j.is_string()) return "a string";
+  if (j.is_array()) return "a list";
+  return "an object";
+}
+
+// Finds where the text stops being JSON, without exceptions.
+struct ErrorPosition : nlohmann::json_sax<Json> {
+  std::size_t position = 0;
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return true; }
+  bool key(string_t&) override { return true; }
+  bool end_object() override { return true; }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t p, const std::string&, const nlohmann::detail::exception&) override {
+    position = p;
+    return false;
+  }
+};
+
+// An object of the document with its path, for reading fields and naming them in messages.
+class Node {
+ public:
+  Node(const Json& j, std::string path) : j_(j), path_(std::move(path)) {}
+
+  std::string field(const char* key) const { return path_.empty() ? key : path_ + "." + key; }
+  const Json* find(const char* key) const {
+    auto it = j_.find(key);
+    return it == j_.end() ? nullptr : &*it;
+  }
+
+  std::optional<Error> onlyKnown(std::initializer_list<const char*> known) const {
+    for (auto it = j_.begin(); it != j_.end(); ++it) {
+      if (std::none_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; })) {
+        std::string list;
+        for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+        return refuse(field(it.key().c_str()), "unknown field (expected one of: " + list + ").");
+      }
+    }
+    return std::nullopt;
+  }
+
+  Outcome<Node> object(const char* key, bool required) const {
+    const Json* v = find(key);
+    if (!v) {
+      if (required) return refuse(field(key), "is missing.");
+      static const Json empty = Json::object();
+      return Node(empty, field(key));
+    }
+    if (!v->is_object()) return refuse(field(key), std::string("must be an object; got ") + typeName(*v) + ".");
+    return Node(*v, field(key));
+  }
+
+  // A required number, or an optional one (empty when absent).
+  std::optional<Error> number(const char* key, double* out) const {
+    const Json* v = find(key);
+    if (!v) return refuse(field(key), "is missing.");
+    return toNumber(*v, field(key), out);
+  }
+  std::optional<Error> number(const char* key, std::optional<double>* out) const {
+    const Json* v = find(key);
+    if (!v) return std::nullopt;
+    double d = 0;
+    if (auto e = toNumber(*v, field(key), &d)) return e;
+    *out = d;
+    return std::nullopt;
+  }
+  std::optional<Error> integer(const char* key, std::optional<int>* out) const {
+    std::optional<double> d;
+    if (auto e = number(key, &d)) return e;
+    if (!d) return std::nullopt;
+    if (*d != std::floor(*d) || std::abs(*d) > 1e9)
+      return refuse(field(key), "must be a whole number.");
+    *out = static_cast<int>(*d);
+    return std::nullopt;
+  }
+  std::optional<Error> choice(const char* key, std::initializer_list<const char*> options,
+                              std::optional<std::string>* out) const {
+    const Json* v = find(key);
+    if (!v) return std::nullopt;
+    std::string list;
+    for (const char* o : options) list += (list.empty() ? "\"" : ", \"") + std::string(o) + "\"";
+    if (!v->is_string()) return refuse(field(key), "must be one of " + list + "; got " + typeName(*v) + ".");
+    const std::string s = v->get<std::string>();
+    if (std::none_of(options.begin(), options.end(), [&](const char* o) { return s == o; }))
+      return refuse(field(key), "must be one of " + list + "; got \"" + s + "\".");
+    *out = s;
+    return std::nullopt;
+  }
+
+  static std::optional<Error> toNumber(const Json& v, const std::string& field, double* out) {
+    if (!v.is_number()) return refuse(field, std::string("must be a number; got ") + typeName(v) + ".");
+    *out = v.get<double>();
+    if (!std::isfinite(*out)) return refuse(field, "must be a finite number.");
+    return std::nullopt;
+  }
+
+ private:
+  const Json& j_;
+  std::string path_;
+};
+
+#define HOBSHARP_TRY(expr) \
+  if (auto e_ = (expr)) return *e_
+
+std::optional<Error> readHob(const Node& h, HobInput* hob) {
+  HOBSHARP_TRY(h.onlyKnown({"normalModule", "normalPressureAngle", "outerDiameter", "pitchDiameter", "gashDepth",
+                            "length", "rakeOffset", "gash", "hand", "gashLead", "gashHelixAngle"}));
+  HOBSHARP_TRY(h.number("normalModule", &hob->normalModule));
+  HOBSHARP_TRY(h.number("normalPressureAngle", &hob->normalPressureAngle));
+  HOBSHARP_TRY(h.number("outerDiameter", &hob->outerDiameter));
+  HOBSHARP_TRY(h.number("pitchDiameter", &hob->pitchDiameter));
+  HOBSHARP_TRY(h.number("gashDepth", &hob->gashDepth));
+  HOBSHARP_TRY(h.number("length", &hob->length));
+  std::optional<double> rake;
+  HOBSHARP_TRY(h.number("rakeOffset", &rake));
+  hob->rakeOffset = rake.value_or(0.0);
+  std::optional<std::string> gash, hand;
+  HOBSHARP_TRY(h.choice("gash", {"helical", "straight"}, &gash));
+  HOBSHARP_TRY(h.choice("hand", {"right", "left"}, &hand));
+  hob->gash = gash.value_or("helical") == "straight" ? GashKind::Straight : GashKind::Helical;
+  hob->hand = hand.value_or("right") == "left" ? Hand::Left : Hand::Right;
+  HOBSHARP_TRY(h.number("gashLead", &hob->gashLead));
+  HOBSHARP_TRY(h.number("gashHelixAngle", &hob->gashHelixAngle));
+  return std::nullopt;
+}
+
+std::optional<Error> readAxes(const Node& a, AxisPolynomials* axes) {
+  HOBSHARP_TRY(a.onlyKnown({"X", "Y", "Z", "A", "B"}));
+  for (Axis axis : kAxes) {
+    const char* name = axisName(axis);
+    const Json* v = a.find(name);
+    if (!v) return refuse(a.field(name), "is missing.");
+    if (!v->is_array()) return refuse(a.field(name), std::string("must be a list of coefficients; got ") + typeName(*v) + ".");
+    Polynomial p;
+    for (std::size_t k = 0; k < v->size(); ++k) {
+      double c = 0;
+      HOBSHARP_TRY(Node::toNumber((*v)[k], a.field(name) + "[" + std::to_string(k) + "]", &c));
+      p.a.push_back(c);
+    }
+    if (p.a.empty()) return refuse(a.field(name), "must hold at least the coefficient a0.");
+    (*axes)[axis] = p;
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> readMeasured(const Json& m, Eigen::MatrixXd* out) {
+  if (!m.is_array()) return refuse("measured", std::string("must be a list of rows; got ") + typeName(m) + ".");
+  if (m.empty()) return refuse("measured", "is empty; it needs one row per radial grid line.");
+  const std::size_t cols = m[0].is_array() ? m[0].size() : 0;
+  out->resize(static_cast<Eigen::Index>(m.size()), static_cast<Eigen::Index>(cols));
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const std::string row = "measured[" + std::to_string(i) + "]";
+    if (!m[i].is_array()) return refuse(row, std::string("must be a list of values; got ") + typeName(m[i]) + ".");
+    if (m[i].size() != cols)
+      return refuse(row, "has " + std::to_string(m[i].size()) + " values; the first row has " + std::to_string(cols) + ".");
+    for (std::size_t j = 0; j < cols; ++j) {
+      double v = 0;
+      HOBSHARP_TRY(Node::toNumber(m[i][j], row + "[" + std::to_string(j) + "]", &v));
+      (*out)(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = v;
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<Error> readCorrection(const Node& c, CorrectionInput* out) {
+  HOBSHARP_TRY(c.onlyKnown({"truncation", "amplification", "lockedAxes", "locked"}));
+  HOBSHARP_TRY(c.number("truncation", &out->truncation));
+  HOBSHARP_TRY(c.number("amplification", &out->amplification));
+  auto axisOf = [](const std::string& s, Axis* a) {
+    for (Axis x : kAxes)
+      if (s == axisName(x)) return *a = x, true;
+    return false;
+  };
+  if (const Json* v = c.find("lockedAxes")) {
+    if (!v->is_array()) return refuse(c.field("lockedAxes"), "must be a list of axis names such as [\"X\", \"A\"].");
+    for (const Json& s : *v) {
+      Axis a;
+      if (!s.is_string() || !axisOf(s.get<std::string>(), &a))
+        return refuse(c.field("lockedAxes"), "holds something that is not one of \"X\", \"Y\", \"Z\", \"A\", \"B\".");
+      out->lockedAxes.push_back(a);
+    }
+  }
+  if (const Json* v = c.find("locked")) {
+    if (!v->is_array()) return refuse(c.field("locked"), "must be a list of coefficients such as [\"X a0\", \"B a2\"].");
+    for (const Json& s : *v) {
+      const std::string text = s.is_string() ? s.get<std::string>() : "";
+      Axis a;
+      if (text.size() != 4 || text.substr(1, 2) != " a" || !axisOf(text.substr(0, 1), &a) || text[3] < '0' ||
+          text[3] > '9')
+        return refuse(c.field("locked"), "holds \"" + text + "\"; write a coefficient as \"X a0\" .. \"B a6\".");
+      out->locked.push_back(Coefficient{a, text[3] - '0'});
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+Outcome<CaseInput> parseCase(const std::string& text) {
+  const Json doc = Json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (doc.is_discarded()) {
+    ErrorPosition where;
+    Json::sax_parse(text, &where);
+    return Error{"", "The case is not valid JSON (it stops making sense at character " +
+                         std::to_string(where.position) + ")."};
+  }
+  if (!doc.is_object()) return Error{"", std::string("The case must be a JSON object; got ") + typeName(doc) + "."};
+  const Node root(doc, "");
+  const Json* format = root.find("format");
+  if (!format) return refuse("format", std::string("is missing; it must be \"") + kCaseFormat + "\".");
+  if (!format->is_string() || format->get<std::string>() != kCaseFormat)
+    return refuse("format", std::string("unknown format ") + format->dump() + "; this calculator reads \"" +
+                                kCaseFormat + "\".");
+  HOBSHARP_TRY(root.onlyKnown({"format", "hob", "wheel", "setup", "machine", "degree", "grid", "axes", "measured",
+                               "correction"}));
+  CaseInput in;
+  auto hob = root.object("hob", true);
+  if (!hob) return hob.error();
+  HOBSHARP_TRY(readHob(*hob, &in.hob));
+
+  auto wheel = root.object("wheel", true);
+  if (!wheel) return wheel.error();
+  HOBSHARP_TRY(wheel->onlyKnown({"outerDiameter"}));
+  HOBSHARP_TRY(wheel->number("outerDiameter", &in.wheelOuterDiameter));
+
+  auto setup = root.object("setup", true);
+  if (!setup) return setup.error();
+  HOBSHARP_TRY(setup->onlyKnown({"tilt", "settingAngle", "centerDistance"}));
+  HOBSHARP_TRY(setup->number("tilt", &in.tilt));
+  HOBSHARP_TRY(setup->number("settingAngle", &in.settingAngle));
+  HOBSHARP_TRY(setup->number("centerDistance", &in.centerDistance));
+
+  auto machine = root.object("machine", true);
+  if (!machine) return machine.error();
+  HOBSHARP_TRY(machine->onlyKnown({"K1", "K2"}));
+  HOBSHARP_TRY(machine->number("K1", &in.machine.K1));
+  HOBSHARP_TRY(machine->number("K2", &in.machine.K2));
+
+  std::optional<int> degree;
+  HOBSHARP_TRY(root.integer("degree", &degree));
+  in.degree = degree.value_or(4);
+
+  auto grid = root.object("grid", false);
+  if (!grid) return grid.error();
+  HOBSHARP_TRY(grid->onlyKnown({"radial", "axial", "rMin", "rMax", "xMin", "xMax"}));
+  HOBSHARP_TRY(grid->integer("radial", &in.grid.radial));
+  HOBSHARP_TRY(grid->integer("axial", &in.grid.axial));
+  HOBSHARP_TRY(grid->number("rMin", &in.grid.rMin));
+  HOBSHARP_TRY(grid->number("rMax", &in.grid.rMax));
+  HOBSHARP_TRY(grid->number("xMin", &in.grid.xMin));
+  HOBSHARP_TRY(grid->number("xMax", &in.grid.xMax));
+
+  if (root.find("axes")) {
+    auto axes = root.object("axes", true);
+    if (!axes) return axes.error();
+    AxisPolynomials a;
+    HOBSHARP_TRY(readAxes(*axes, &a));
+    in.axes = a;
+  }
+  if (const Json* m = root.find("measured")) {
+    Eigen::MatrixXd measured;
+    HOBSHARP_TRY(readMeasured(*m, &measured));
+    in.measured = measured;
+  }
+  auto correction = root.object("correction", false);
+  if (!correction) return correction.error();
+  HOBSHARP_TRY(readCorrection(*correction, &in.correction));
+  return in;
+}
+
+}  // namespace hobsharp

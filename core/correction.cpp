@@ -1,0 +1,155 @@
+#include "correction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/SVD>
+
+namespace hobsharp {
+namespace {
+
+bool isLocked(const Coefficient& c, const CorrectionOptions& o) {
+  return std::find(o.lockedAxes.begin(), o.lockedAxes.end(), c.axis) != o.lockedAxes.end() ||
+         std::find(o.locked.begin(), o.locked.end(), c) != o.locked.end();
+}
+
+std::string unitOf(const Coefficient& c, bool helical) {
+  std::string u = isRotary(c.axis) ? "rad" : "mm";
+  if (c.degree == 0) return u;
+  const std::string per = helical ? "rad" : "mm";
+  return u + "/" + per + (c.degree > 1 ? "^" + std::to_string(c.degree) : "");
+}
+
+UnobservableCombination combination(const std::vector<Coefficient>& coefficients,
+                                    const Eigen::VectorXd& scaledDirection,
+                                    const Eigen::VectorXd& columnScale, bool helical) {
+  UnobservableCombination u;
+  const double largest = scaledDirection.cwiseAbs().maxCoeff();
+  int lead = -1;
+  for (int j = 0; j < scaledDirection.size(); ++j) {
+    if (std::abs(scaledDirection(j)) < 1e-3 * largest) continue;
+    if (lead < 0) lead = j;
+    u.coefficients.push_back(coefficients[j]);
+    u.amounts.push_back(scaledDirection(j) * columnScale(j));
+  }
+  // Express the amounts per unit of the first coefficient.
+  const double first = u.amounts.front();
+  std::ostringstream s;
+  s.precision(6);
+  for (size_t i = 0; i < u.amounts.size(); ++i) {
+    u.amounts[i] /= first;
+    if (i > 0) s << (u.amounts[i] < 0 ? " - " : " + ");
+    else if (u.amounts[i] < 0) s << "-";
+    s << std::abs(u.amounts[i]) << " " << unitOf(u.coefficients[i], helical) << " on "
+      << u.coefficients[i].name();
+  }
+  s << (u.amounts.size() == 1 ? ": no effect on the face" : ": these changes cancel on the face");
+  if (u.amounts.size() == 2 && u.coefficients[0].axis == Axis::X && u.coefficients[1].axis == Axis::A &&
+      u.coefficients[0].degree == u.coefficients[1].degree)
+    s << " (an axial shift of a helicoid equals a turn of it)";
+  u.description = s.str();
+  return u;
+}
+
+}  // namespace
+
+Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials& runAxes,
+                                   const Eigen::MatrixXd& measured, const CorrectionOptions& o) {
+  const FaceGrid& grid = run.grid;
+  if (measured.rows() != grid.rows() || measured.cols() != grid.cols())
+    return Error{"measured", "The measured topography has " + std::to_string(measured.rows()) + " x " +
+                                 std::to_string(measured.cols()) + " values; the grid is " +
+                                 std::to_string(grid.rows()) + " radial x " +
+                                 std::to_string(grid.cols()) + " axial."};
+  if (!measured.allFinite()) return Error{"measured", "The measured topography holds a value that is not a number."};
+
+  Correction c;
+  c.before = topographyFromNormal(run, measured);
+  for (const Coefficient& k : allCoefficients(runAxes.degree()))
+    if (!isLocked(k, o)) c.coefficients.push_back(k);
+  const SensitivityMatrix S = sensitivityMatrix(run, c.coefficients);
+  const int p = grid.size(), q = static_cast<int>(c.coefficients.size());
+  const bool helical = run.gash == GashKind::Helical;
+
+  // Eq. 16: p grid equations and the thickness at the mean point.
+  Eigen::MatrixXd A(p + 1, q);
+  A.topRows(p) = S.normal;
+  A.row(p) = S.thickness;
+  Eigen::VectorXd d(p + 1);
+  for (int i = 0; i < grid.rows(); ++i)
+    for (int j = 0; j < grid.cols(); ++j) d(i * grid.cols() + j) = measured(i, j);
+  d(p) = c.before.thickness;
+
+  // Scale by the motion range (a_k w^k with w in units of the range), then set aside the
+  // negligible columns, then scale every other column to unit norm.
+  Eigen::VectorXd scale(q);
+  for (int j = 0; j < q; ++j) scale(j) = std::pow(S.motionRange, c.coefficients[j].degree);
+  Eigen::MatrixXd As = A * scale.asDiagonal();
+  const double largest = q > 0 ? As.colwise().norm().maxCoeff() : 0.0;
+  std::vector<int> active;
+  for (int j = 0; j < q; ++j) {
+    const double n = As.col(j).norm();
+    if (n <= o.negligible * largest) {
+      Eigen::VectorXd e = Eigen::VectorXd::Unit(q, j);
+      c.unobservable.push_back(combination(c.coefficients, e, scale, helical));
+    } else {
+      scale(j) /= n;
+      active.push_back(j);
+    }
+  }
+  As = A * scale.asDiagonal();
+  Eigen::MatrixXd B(p + 1, static_cast<int>(active.size()));
+  for (size_t k = 0; k < active.size(); ++k) B.col(k) = As.col(active[k]);
+
+  c.change = Eigen::VectorXd::Zero(q);
+  if (!active.empty()) {
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(B, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    c.singularValues = svd.singularValues();
+    const double cut = o.truncation * c.singularValues(0);
+    // With unit columns, no single coefficient needs more than |d| to make the data; a direction
+    // that needs more than amplification * |d| is a shape the axes barely produce (MODEL.md).
+    const double limit = o.amplification * d.norm();
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(B.cols());
+    for (int i = 0; i < c.singularValues.size(); ++i) {
+      if (c.singularValues(i) > cut) {
+        const double alpha = svd.matrixU().col(i).dot(-d) / c.singularValues(i);
+        if (std::abs(alpha) <= limit) {
+          y += svd.matrixV().col(i) * alpha;
+          ++c.rank;
+        } else {
+          ++c.amplifyingDropped;
+        }
+      } else {
+        Eigen::VectorXd v = Eigen::VectorXd::Zero(q);
+        for (size_t k = 0; k < active.size(); ++k) v(active[k]) = svd.matrixV()(k, i);
+        c.unobservable.push_back(combination(c.coefficients, v, scale, helical));
+      }
+    }
+    for (size_t k = 0; k < active.size(); ++k) c.change(active[k]) = y(k) * scale(active[k]);
+  }
+
+  c.axes = runAxes;
+  for (int j = 0; j < q; ++j) c.axes[c.coefficients[j].axis].a[c.coefficients[j].degree] += c.change(j);
+  const Eigen::VectorXd after = d + A * c.change;
+  Eigen::MatrixXd residual(grid.rows(), grid.cols());
+  for (int i = 0; i < grid.rows(); ++i)
+    for (int j = 0; j < grid.cols(); ++j) residual(i, j) = after(i * grid.cols() + j);
+  c.after = topographyFromNormal(run, residual);
+  c.after.thickness = after(p);
+  c.uncorrectableShare = c.before.sse > 0 ? c.after.sse / c.before.sse : 0.0;
+  std::ostringstream v;
+  v.precision(3);
+  if (c.uncorrectableShare <= 1e-3) {
+    v << "Correctable: the axes can cancel the measured deviation (predicted sum of squares "
+      << c.after.sse << " µm², from " << c.before.sse << " µm²).";
+  } else {
+    v << "Partly uncorrectable: " << 100 * c.uncorrectableShare
+      << " % of the sum of squares is a shape no axis polynomial produces (such as a second-degree "
+         "shape along the radius); it stays in the residual. Correct the wheel profile to remove it.";
+  }
+  c.verdict = v.str();
+  return c;
+}
+
+}  // namespace hobsharp

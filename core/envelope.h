@@ -1,0 +1,45 @@
+// One point of the ground face: the envelope of the wheel moved by the axis polynomials
+// (Eqs. 7, 10, 11), found on the normal line through a grid point of the nominal face.
+//
+// Unknowns: t (mm, along the outward normal from the nominal point), the motion parameter phi,
+// and the wheel point given by the face coordinates (u, w) of the contact line it was dressed from.
+// Equations, with q = the hob point P + t n in the wheel frame S_t:
+//   Eq. 5   f_t(u, w) = 0                     (the wheel point lies on the wheel's contact line)
+//   Eq. 6   |q_xy| = R(u, w), q_z = Z(u, w)    (q lies on the wheel surface of revolution)
+//   Eq. 11  n_wheel . dq/dphi = 0             (meshing: envelope of the moving wheel)
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "axis_polynomials.h"
+#include "face_grid.h"
+#include "outcome.h"
+#include "sharpening_setup.h"
+
+namespace hobsharp {
+
+struct EnvelopeGuess {
+  double t = 0, phi = 0, u = 0, w = 0;
+};
+
+struct EnvelopePoint {
+  double t = 0;    // normal deviation, mm (plus = excess material)
+  double phi = 0;  // motion parameter at which the wheel grinds this point: rad, or mm (straight)
+  double u = 0, w = 0;
+  int iterations = 0;
+  // Implicit function theorem: dt / d(axis value) and dt / d(axis rate) at phi, X Y Z A B order.
+  std::array<double, kAxisCount> dtdValue{};
+  std::array<double, kAxisCount> dtdRate{};
+
+  // dt / d(a_k) for the coefficient of phi^k of `axis` (Eqs. 13-15).
+  double sensitivity(Axis axis, int k) const;
+};
+
+Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
+                                          const GridPoint& point, const EnvelopeGuess& guess);
+
+// The guess from the nominal screw motion: the wheel touches (u, w) when w + phi = w*(u).
+EnvelopeGuess nominalGuess(const GridPoint& point, double contactW);
+
+}  // namespace hobsharp

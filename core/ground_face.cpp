@@ -1,0 +1,46 @@
+#include "ground_face.h"
+
+#include "wheel_profile.h"
+
+namespace hobsharp {
+namespace {
+
+// w*(u) of the wheel's contact line at radius r: where the nominal screw motion grinds that radius.
+Outcome<double> contactAt(const SharpeningSetup& s, double r) {
+  return contactCoordinate(s.face, s.universal, s.normalSign, s.face.uAtRadius(r));
+}
+
+}  // namespace
+
+Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisPolynomials& axes,
+                                       const FaceGrid& grid) {
+  GroundFace f;
+  f.gash = setup.face.gash;
+  f.grid = grid;
+  f.points.reserve(grid.size());
+  f.envelope.reserve(grid.size());
+  for (int i = 0; i < grid.rows(); ++i) {
+    auto contactW = contactAt(setup, grid.r[i]);
+    if (!contactW) return contactW.error();
+    double lastT = 0;  // each solve starts from the nominal motion and its neighbour's deviation
+    for (int j = 0; j < grid.cols(); ++j) {
+      const GridPoint g = gridPoint(setup, grid.r[i], grid.x[j]);
+      EnvelopeGuess guess = nominalGuess(g, *contactW);
+      guess.t = lastT;
+      auto e = solveEnvelopePoint(setup, axes, g, guess);
+      if (!e) return e.error();
+      lastT = e->t;
+      f.points.push_back(g);
+      f.envelope.push_back(*e);
+    }
+  }
+  auto contactW = contactAt(setup, grid.rMean());
+  if (!contactW) return contactW.error();
+  f.meanPoint = gridPoint(setup, grid.rMean(), grid.xMean());
+  auto e = solveEnvelopePoint(setup, axes, f.meanPoint, nominalGuess(f.meanPoint, *contactW));
+  if (!e) return e.error();
+  f.meanEnvelope = *e;
+  return f;
+}
+
+}  // namespace hobsharp

@@ -1,0 +1,37 @@
+// Errors as values: a computation returns its value or an Error that names the field
+// (or grid point) and the reason. Failure is explicit; nothing throws across the core.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <variant>
+
+namespace hobsharp {
+
+struct Error {
+  std::string field;    // the input field, e.g. "hob.pitchDiameter", or "grid" for a grid point
+  std::string message;  // a whole sentence for the engineer, naming the field and the reason
+};
+
+template <class T>
+class Outcome {
+ public:
+  Outcome(T value) : state_(std::move(value)) {}        // NOLINT: implicit on purpose
+  Outcome(Error error) : state_(std::move(error)) {}    // NOLINT: implicit on purpose
+
+  bool ok() const { return std::holds_alternative<T>(state_); }
+  explicit operator bool() const { return ok(); }
+
+  const T& value() const& { return std::get<T>(state_); }
+  T& value() & { return std::get<T>(state_); }
+  T&& value() && { return std::get<T>(std::move(state_)); }
+  const T* operator->() const { return &std::get<T>(state_); }
+  const T& operator*() const { return std::get<T>(state_); }
+
+  const Error& error() const { return std::get<Error>(state_); }
+
+ private:
+  std::variant<T, Error> state_;
+};
+
+}  // namespace hobsharp

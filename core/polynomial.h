@@ -1,0 +1,25 @@
+// A Maclaurin polynomial a0 + a1 w + ... + an w^n of the motion parameter w (Eq. 12).
+#pragma once
+
+#include <vector>
+
+namespace hobsharp {
+
+struct PolynomialValue {
+  double value = 0;  // f(w)
+  double d1 = 0;     // f'(w)
+  double d2 = 0;     // f''(w)
+};
+
+struct Polynomial {
+  std::vector<double> a;  // a[k] multiplies w^k
+
+  static Polynomial constant(double c) { return Polynomial{{c}}; }
+  int degree() const { return static_cast<int>(a.size()) - 1; }
+  double coefficient(int k) const { return k < static_cast<int>(a.size()) ? a[k] : 0.0; }
+  PolynomialValue at(double w) const;
+  // The same polynomial padded with zeros (or truncated) to `degree`.
+  Polynomial resized(int degree) const;
+};
+
+}  // namespace hobsharp

@@ -1,0 +1,219 @@
+#include "sharpening_job.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "universal_settings.h"
+#include "wheel_contact.h"
+#include "wheel_profile.h"
+
+namespace hobsharp {
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+Error refuse(const std::string& field, const std::string& reason) {
+  return Error{field, field + ": " + reason};
+}
+
+std::optional<Error> positive(const std::string& field, double v, const char* unit) {
+  if (!std::isfinite(v)) return refuse(field, "must be a finite number.");
+  if (v <= 0) return refuse(field, "must be positive; got " + num(v) + " " + unit + ".");
+  return std::nullopt;
+}
+
+std::optional<Error> finite(const std::string& field, double v) {
+  if (!std::isfinite(v)) return refuse(field, "must be a finite number.");
+  return std::nullopt;
+}
+
+std::optional<Error> checkHob(const HobInput& h) {
+  for (auto [field, v, unit] : {std::tuple{"hob.normalModule", h.normalModule, "mm"},
+                                std::tuple{"hob.outerDiameter", h.outerDiameter, "mm"},
+                                std::tuple{"hob.pitchDiameter", h.pitchDiameter, "mm"},
+                                std::tuple{"hob.gashDepth", h.gashDepth, "mm"},
+                                std::tuple{"hob.length", h.length, "mm"}})
+    if (auto e = positive(field, v, unit)) return e;
+  if (auto e = finite("hob.rakeOffset", h.rakeOffset)) return e;
+  if (!(h.normalPressureAngle > 0 && h.normalPressureAngle < 45))
+    return refuse("hob.normalPressureAngle", "must lie between 0 and 45 deg; got " + num(h.normalPressureAngle) + " deg.");
+  if (h.pitchDiameter >= h.outerDiameter)
+    return refuse("hob.pitchDiameter", "must be smaller than hob.outerDiameter (" + num(h.outerDiameter) +
+                                           " mm); got " + num(h.pitchDiameter) + " mm.");
+  const double ra = h.outerDiameter / 2, rp = h.pitchDiameter / 2;
+  if (h.gashDepth >= ra)
+    return refuse("hob.gashDepth", "must be less than the hob radius (" + num(ra) + " mm); got " +
+                                       num(h.gashDepth) + " mm.");
+  if (ra - h.gashDepth >= rp)
+    return refuse("hob.gashDepth", "the gash must reach below the pitch diameter: the root radius " +
+                                       num(ra - h.gashDepth) + " mm is not below the pitch radius " +
+                                       num(rp) + " mm.");
+  if (std::abs(h.rakeOffset) >= rp)
+    return refuse("hob.rakeOffset", "|e| must be less than the pitch radius (" + num(rp) + " mm); got " +
+                                        num(h.rakeOffset) + " mm.");
+  if (std::abs(h.rakeOffset) >= ra - h.gashDepth)
+    return refuse("hob.rakeOffset", "|e| must be less than the gash root radius (" +
+                                        num(ra - h.gashDepth) + " mm); got " + num(h.rakeOffset) + " mm.");
+  if (h.gash == GashKind::Helical) {
+    if (!h.gashLead && !h.gashHelixAngle)
+      return refuse("hob.gashLead", "a helical gash needs hob.gashLead or hob.gashHelixAngle.");
+    if (h.gashLead)
+      if (auto e = positive("hob.gashLead", *h.gashLead, "mm")) return e;
+    if (h.gashHelixAngle && !(*h.gashHelixAngle > 0 && *h.gashHelixAngle < 90))
+      return refuse("hob.gashHelixAngle", "must lie between 0 and 90 deg; got " + num(*h.gashHelixAngle) + " deg.");
+    if (h.gashLead && h.gashHelixAngle) {
+      const double fromLead = helixAngleFromLead(*h.gashLead, rp) / kDeg;
+      if (std::abs(fromLead - *h.gashHelixAngle) > 0.01)
+        return refuse("hob.gashHelixAngle", num(*h.gashHelixAngle) + " deg disagrees with hob.gashLead " +
+                                                num(*h.gashLead) + " mm, which gives " + num(fromLead) +
+                                                " deg at the pitch diameter. Give one of the two.");
+    }
+  }
+  return std::nullopt;
+}
+
+ToothFace toothFace(const HobInput& h) {
+  ToothFace f;
+  f.gash = h.gash;
+  f.pitchRadius = h.pitchDiameter / 2;
+  f.rakeOffset = h.rakeOffset;
+  if (h.gash == GashKind::Helical) {
+    const double lead = h.gashLead ? *h.gashLead : leadFromHelixAngle(*h.gashHelixAngle * kDeg, f.pitchRadius);
+    f.screwParameter = screwParameterFromLead(lead) * (h.hand == Hand::Left ? -1.0 : 1.0);
+  }
+  return f;
+}
+
+std::optional<Error> checkGrid(const GridInput& g, const SharpeningJob& job, double xCentre, FaceGrid* out) {
+  const int radial = g.radial.value_or(5), axial = g.axial.value_or(9);
+  for (auto [field, n] : {std::pair{"grid.radial", radial}, std::pair{"grid.axial", axial}})
+    if (n < 2 || n > kMaxGridLines)
+      return refuse(field, "must be a whole number from 2 to " + std::to_string(kMaxGridLines) + "; got " +
+                               std::to_string(n) + ".");
+  const double half = job.input.hob.length / 2;
+  const double rMin = g.rMin.value_or(job.rootRadius), rMax = g.rMax.value_or(job.outerRadius);
+  const double xMin = g.xMin.value_or(xCentre - half), xMax = g.xMax.value_or(xCentre + half);
+  for (auto [field, v] : {std::pair{"grid.rMin", rMin}, std::pair{"grid.rMax", rMax},
+                          std::pair{"grid.xMin", xMin}, std::pair{"grid.xMax", xMax}})
+    if (auto e = finite(field, v)) return e;
+  if (rMin < job.rootRadius - kGridTolerance)
+    return refuse("grid.rMin", num(rMin) + " mm lies below the gash root (radius " + num(job.rootRadius) + " mm).");
+  if (rMax > job.outerRadius + kGridTolerance)
+    return refuse("grid.rMax", num(rMax) + " mm lies beyond the hob's outer radius (" + num(job.outerRadius) + " mm).");
+  if (rMin >= rMax) return refuse("grid.rMax", "must be greater than grid.rMin (" + num(rMin) + " mm).");
+  if (xMin >= xMax) return refuse("grid.xMax", "must be greater than grid.xMin (" + num(xMin) + " mm).");
+  // The face spans the hob length, centred on the contact line at phi_1 = 0.
+  const double tol = kGridTolerance * (1 + job.input.hob.length);
+  if (xMin < xCentre - half - tol || xMax > xCentre + half + tol)
+    return refuse(xMin < xCentre - half - tol ? "grid.xMin" : "grid.xMax",
+                  "the grid reaches past the hob's ends: the face spans x = " + num(xCentre - half) +
+                      " to " + num(xCentre + half) + " mm.");
+  *out = FaceGrid::even(radial, axial, rMin, rMax, xMin, xMax);
+  return std::nullopt;
+}
+
+}  // namespace
+
+Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
+  if (auto e = checkHob(in.hob)) return *e;
+  if (auto e = positive("wheel.outerDiameter", in.wheelOuterDiameter, "mm")) return *e;
+  if (!(std::abs(in.tilt) < 90)) return refuse("setup.tilt", "must lie between -90 and 90 deg; got " + num(in.tilt) + " deg.");
+  if (in.settingAngle && !(std::abs(*in.settingAngle) < 90))
+    return refuse("setup.settingAngle", "must lie between -90 and 90 deg; got " + num(*in.settingAngle) + " deg.");
+  if (in.centerDistance)
+    if (auto e = positive("setup.centerDistance", *in.centerDistance, "mm")) return *e;
+  if (auto e = finite("machine.K1", in.machine.K1)) return *e;
+  if (auto e = finite("machine.K2", in.machine.K2)) return *e;
+  if (in.degree < 1 || in.degree > kMaxDegree)
+    return refuse("degree", "must be a whole number from 1 to " + std::to_string(kMaxDegree) + "; got " +
+                                std::to_string(in.degree) + ".");
+
+  SharpeningJob job;
+  job.input = in;
+  job.outerRadius = in.hob.outerDiameter / 2;
+  job.rootRadius = job.outerRadius - in.hob.gashDepth;
+  job.wheelRadius = in.wheelOuterDiameter / 2;
+  const ToothFace face = toothFace(in.hob);
+
+  job.settingAngleDerived = !in.settingAngle;
+  const double gamma = in.settingAngle ? *in.settingAngle * kDeg : defaultSettingAngle(face);
+  UniversalSettings universal = constantUniversalSettings(face, in.tilt * kDeg, gamma, 0.0);
+  const double sign = outwardNormalSign(face, universal);
+  job.centerDistanceDerived = !in.centerDistance;
+  if (in.centerDistance) {
+    universal.centerDistance = Polynomial::constant(*in.centerDistance);
+  } else {
+    auto E = centerDistanceFromWheelRim(face, universal, sign, job.rootRadius, job.wheelRadius);
+    if (!E) return E.error();
+    universal.centerDistance = Polynomial::constant(*E);
+  }
+  job.setup = SharpeningSetup::make(face, universal, in.machine);
+
+  // The wheel must reach the gash root and keep its axis clear of the tooth tip.
+  auto ends = wheelProfile(face, universal, job.setup.normalSign, {job.rootRadius, job.outerRadius});
+  if (!ends) return ends.error();
+  if (ends->R[0] > job.wheelRadius + kGridTolerance)
+    return refuse("wheel.outerDiameter",
+                  "the wheel is too small to reach the gash root: at the root radius " + num(job.rootRadius) +
+                      " mm the wheel needs a radius of " + num(ends->R[0]) + " mm, but it has " +
+                      num(job.wheelRadius) + " mm. Use a larger wheel or a smaller setup.centerDistance.");
+
+  FaceGrid grid;
+  auto pitch = contactCoordinate(face, universal, job.setup.normalSign, 0.0);
+  if (!pitch) return pitch.error();
+  if (auto e = checkGrid(in.grid, job, face.axialAt(*pitch), &grid)) return *e;
+  job.grid = grid;
+
+  job.nominalAxes = cncAxisPolynomials(universal, in.machine, in.degree);
+  job.runAxes = job.nominalAxes;
+  if (in.axes) {
+    for (Axis a : kAxes) {
+      const std::string field = std::string("axes.") + axisName(a);
+      const Polynomial& p = (*in.axes)[a];
+      if (p.degree() != in.degree)
+        return refuse(field, "needs " + std::to_string(in.degree + 1) + " coefficients a0..a" +
+                                 std::to_string(in.degree) + " (degree " + std::to_string(in.degree) +
+                                 "); got " + std::to_string(p.a.size()) + ".");
+      for (size_t k = 0; k < p.a.size(); ++k)
+        if (!std::isfinite(p.a[k])) return refuse(field + "[" + std::to_string(k) + "]", "must be a finite number.");
+    }
+    job.runAxes = *in.axes;
+  }
+  if (in.measured) {
+    const Eigen::MatrixXd& m = *in.measured;
+    if (m.rows() != grid.rows() || m.cols() != grid.cols())
+      return refuse("measured", "needs grid.radial = " + std::to_string(grid.rows()) + " rows of grid.axial = " +
+                                    std::to_string(grid.cols()) + " values; got " + std::to_string(m.rows()) +
+                                    " x " + std::to_string(m.cols()) + ".");
+    for (int i = 0; i < m.rows(); ++i)
+      for (int j = 0; j < m.cols(); ++j)
+        if (!std::isfinite(m(i, j)))
+          return refuse("measured[" + std::to_string(i) + "][" + std::to_string(j) + "]", "must be a finite number.");
+  }
+  if (in.correction.truncation) {
+    if (!(*in.correction.truncation > 0 && *in.correction.truncation < 1))
+      return refuse("correction.truncation", "must lie between 0 and 1; got " + num(*in.correction.truncation) + ".");
+    job.correction.truncation = *in.correction.truncation;
+  }
+  if (in.correction.amplification) {
+    if (!(*in.correction.amplification >= 1 && std::isfinite(*in.correction.amplification)))
+      return refuse("correction.amplification", "must be a finite number of at least 1; got " +
+                                                    num(*in.correction.amplification) + ".");
+    job.correction.amplification = *in.correction.amplification;
+  }
+  for (const Coefficient& c : in.correction.locked)
+    if (c.degree < 0 || c.degree > in.degree)
+      return refuse("correction.locked", c.name() + " is beyond the polynomial degree " + std::to_string(in.degree) + ".");
+  job.correction.locked = in.correction.locked;
+  job.correction.lockedAxes = in.correction.lockedAxes;
+  return job;
+}
+
+}  // namespace hobsharp

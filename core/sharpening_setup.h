@@ -1,0 +1,25 @@
+// Everything fixed during one sharpening job: the tooth face, the universal settings the wheel
+// was derived from, the machine constants, and the outward orientation of the face normal.
+#pragma once
+
+#include "axis_polynomials.h"
+#include "tooth_face.h"
+#include "universal_settings.h"
+#include "wheel_contact.h"
+
+namespace hobsharp {
+
+struct SharpeningSetup {
+  ToothFace face;
+  UniversalSettings universal;
+  MachineConstants machine;
+  double normalSign = 1.0;  // see outwardNormalSign()
+
+  static SharpeningSetup make(const ToothFace& face, const UniversalSettings& universal,
+                              const MachineConstants& machine) {
+    return SharpeningSetup{face, universal, machine, outwardNormalSign(face, universal)};
+  }
+  double psiC() const { return universal.tilt; }
+};
+
+}  // namespace hobsharp

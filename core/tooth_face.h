@@ -1,0 +1,69 @@
+// The tooth (rake) face of the hob gash, Eqs. 1-2, and the straight gash of MODEL.md.
+//
+// Helical gash: the screw surface of the straight line of Eq. 1,
+//   r1(u, beta) = (p beta, y0 cos beta - e sin beta, y0 sin beta + e cos beta),
+//   y0 = r_p cos(gamma_c) + u, p = L_c / 2 pi (negative for a left hand).
+// Straight gash: the plane r1(u, x) = (x, y0, e), parallel to the hob axis.
+// The second face coordinate w is beta (rad) for a helical gash and x (mm) for a straight one.
+#pragma once
+
+#include <cmath>
+
+#include "rotations.h"
+
+namespace hobsharp {
+
+enum class GashKind { Helical, Straight };
+enum class Hand { Right, Left };
+
+struct ToothFace {
+  GashKind gash = GashKind::Helical;
+  double pitchRadius = 0;     // r_p, mm
+  double rakeOffset = 0;      // e, mm
+  double screwParameter = 0;  // p = L_c / 2 pi, mm/rad, signed by hand (0 for a straight gash)
+
+  // Eq. 1: the line coordinate u at the pitch point is 0.
+  double y0Pitch() const { return std::sqrt(pitchRadius * pitchRadius - rakeOffset * rakeOffset); }
+  double rakeAngle() const { return std::asin(rakeOffset / pitchRadius); }
+  bool helical() const { return gash == GashKind::Helical; }
+  Hand hand() const { return screwParameter < 0 ? Hand::Left : Hand::Right; }
+
+  // The line coordinate u of the point at `radius` from the hob axis.
+  double uAtRadius(double radius) const {
+    return std::sqrt(radius * radius - rakeOffset * rakeOffset) - y0Pitch();
+  }
+  // The face coordinate w of the point at axial position x.
+  double wAtAxial(double x) const { return helical() ? x / screwParameter : x; }
+  double axialAt(double w) const { return helical() ? screwParameter * w : w; }
+
+  // Eq. 2.
+  template <class T>
+  Vec3<T> point(const T& u, const T& w) const {
+    const T y0 = u + y0Pitch();
+    if (!helical()) return Vec3<T>(w, y0, T(rakeOffset));
+    using std::cos;
+    using std::sin;
+    const T c = cos(w), s = sin(w);
+    return Vec3<T>(screwParameter * w, y0 * c - rakeOffset * s, y0 * s + rakeOffset * c);
+  }
+
+  // r_u x r_w, not normalised: (y0, p sin beta, -p cos beta), or (0, 0, -1) for a straight gash.
+  template <class T>
+  Vec3<T> normal(const T& u, const T& w) const {
+    if (!helical()) return Vec3<T>(T(0), T(0), T(-1));
+    using std::cos;
+    using std::sin;
+    return Vec3<T>(u + y0Pitch(), screwParameter * sin(w), -screwParameter * cos(w));
+  }
+};
+
+// Lead <-> gash helix angle at the pitch radius: tan(helix) = r_p / p.
+inline double screwParameterFromLead(double lead) { return lead / (2 * M_PI); }
+inline double helixAngleFromLead(double lead, double pitchRadius) {
+  return std::atan(pitchRadius / screwParameterFromLead(lead));
+}
+inline double leadFromHelixAngle(double helixAngle, double pitchRadius) {
+  return 2 * M_PI * pitchRadius / std::tan(helixAngle);
+}
+
+}  // namespace hobsharp

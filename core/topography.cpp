@@ -1,0 +1,51 @@
+#include "topography.h"
+
+#include <cmath>
+
+namespace hobsharp {
+namespace {
+
+constexpr double kMicrometresPerMm = 1000.0;
+
+// Bilinear interpolation of an evenly spaced grid at its centre.
+double atCentre(const Eigen::MatrixXd& m) {
+  const double fi = 0.5 * (m.rows() - 1), fj = 0.5 * (m.cols() - 1);
+  const int i0 = static_cast<int>(std::floor(fi)), j0 = static_cast<int>(std::floor(fj));
+  const int i1 = std::min<int>(i0 + 1, m.rows() - 1), j1 = std::min<int>(j0 + 1, m.cols() - 1);
+  const double a = fi - i0, b = fj - j0;
+  return (1 - a) * ((1 - b) * m(i0, j0) + b * m(i0, j1)) + a * ((1 - b) * m(i1, j0) + b * m(i1, j1));
+}
+
+}  // namespace
+
+double circularFactor(const GroundFace& face, int i, int j) {
+  const GridPoint& g = face.points[i * face.grid.cols() + j];
+  return face.grid.rMean() / (g.r * g.cosCircle);
+}
+
+double thicknessFactor(const GroundFace& face) { return 1.0 / face.meanPoint.cosCircle; }
+
+Topography topographyFromNormal(const GroundFace& face, const Eigen::MatrixXd& normal) {
+  Topography t;
+  t.grid = face.grid;
+  t.normal = normal;
+  t.circular.resize(normal.rows(), normal.cols());
+  for (int i = 0; i < normal.rows(); ++i)
+    for (int j = 0; j < normal.cols(); ++j) t.circular(i, j) = normal(i, j) * circularFactor(face, i, j);
+  t.thickness = atCentre(normal) * thicknessFactor(face);
+  t.sse = normal.squaredNorm();
+  t.max = normal.cwiseAbs().maxCoeff();
+  return t;
+}
+
+Topography topographyOf(const GroundFace& face) {
+  Eigen::MatrixXd normal(face.grid.rows(), face.grid.cols());
+  for (int i = 0; i < face.grid.rows(); ++i)
+    for (int j = 0; j < face.grid.cols(); ++j)
+      normal(i, j) = kMicrometresPerMm * face.envelope[i * face.grid.cols() + j].t;
+  Topography t = topographyFromNormal(face, normal);
+  t.thickness = kMicrometresPerMm * face.meanEnvelope.t * thicknessFactor(face);
+  return t;
+}
+
+}  // namespace hobsharp

@@ -1,0 +1,115 @@
+#include "wheel_profile.h"
+
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+#include "autodiff.h"
+#include "wheel_contact.h"
+
+namespace hobsharp {
+namespace {
+
+constexpr int kMaxIterations = 50;
+
+std::string mm(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v << " mm";
+  return s.str();
+}
+
+}  // namespace
+
+Outcome<double> contactCoordinate(const ToothFace& face, const UniversalSettings& s,
+                                  double normalSign, double u, double wGuess) {
+  const double E = s.centerDistance.coefficient(0);
+  double w = wGuess;
+  for (int i = 0; i < kMaxIterations; ++i) {
+    const WheelContact<Dual<1>> c = wheelContact(face, s, normalSign, E, Dual<1>(u), variable<1>(w, 0));
+    const double f = c.meshing.value(), df = c.meshing.derivatives()(0);
+    if (!std::isfinite(f) || !std::isfinite(df) || df == 0.0) break;
+    double step = f / df;
+    const double limit = face.helical() ? 0.2 : 10.0;  // keep to the branch near the guess
+    if (std::abs(step) > limit) step = std::copysign(limit, step);
+    w -= step;
+    if (std::abs(step) < 1e-15 * (1.0 + std::abs(w))) return w;
+  }
+  const double radius = std::hypot(u + face.y0Pitch(), face.rakeOffset);
+  return Error{"hob", "No contact between the wheel and the tooth face at radius r = " + mm(radius) +
+                          ": the equation of meshing (Eq. 5) has no solution there. Check the "
+                          "setting angle, tilt and centre distance."};
+}
+
+std::vector<double> evenRadii(double rootRadius, double outerRadius, int points) {
+  std::vector<double> radii(points);
+  for (int k = 0; k < points; ++k)
+    radii[k] = rootRadius + (outerRadius - rootRadius) * k / (points - 1);
+  return radii;
+}
+
+Outcome<WheelProfile> wheelProfile(const ToothFace& face, const UniversalSettings& s,
+                                   double normalSign, const std::vector<double>& radii) {
+  WheelProfile p;
+  const double E = s.centerDistance.coefficient(0);
+  const int points = static_cast<int>(radii.size());
+  // Start at the pitch radius, where the contact coordinate is near zero, and continue outwards.
+  auto pitchStart = contactCoordinate(face, s, normalSign, 0.0);
+  if (!pitchStart) return pitchStart.error();
+  p.r = radii;
+  p.w.assign(points, 0.0);
+  p.R.assign(points, 0.0);
+  p.Z.assign(points, 0.0);
+  int start = 0;
+  while (start + 1 < points && radii[start + 1] <= face.pitchRadius) ++start;
+  for (int dir : {+1, -1}) {
+    double guess = *pitchStart;
+    for (int k = dir > 0 ? start : start - 1; k >= 0 && k < points; k += dir) {
+      const double u = face.uAtRadius(radii[k]);
+      auto w = contactCoordinate(face, s, normalSign, u, guess);
+      if (!w) return w.error();
+      const WheelContact<double> c = wheelContact(face, s, normalSign, E, u, *w);
+      if (!(c.R() > 0.0))
+        return Error{"wheel.outerDiameter",
+                     "The wheel axis passes through the tooth face at radius r = " + mm(radii[k]) +
+                         ": the wheel is too small for this gash depth."};
+      p.w[k] = *w;
+      p.R[k] = c.R();
+      p.Z[k] = c.Z();
+      guess = *w;
+    }
+  }
+  return p;
+}
+
+Outcome<double> centerDistanceFromWheelRim(const ToothFace& face, const UniversalSettings& s,
+                                           double normalSign, double rootRadius,
+                                           double wheelRadius) {
+  const double u = face.uAtRadius(rootRadius);
+  // Start from the wheel radius plus the root radius: the exact answer for eta = gamma_m = 0.
+  Eigen::Vector2d x(0.0, wheelRadius + rootRadius);
+  for (int i = 0; i < kMaxIterations; ++i) {
+    const Dual<2> w = variable<2>(x(0), 0), E = variable<2>(x(1), 1);
+    const WheelContact<Dual<2>> c = wheelContact(face, s, normalSign, E, Dual<2>(u), w);
+    const Dual<2> rim = c.R() - wheelRadius;
+    Eigen::Matrix2d J;
+    J.row(0) = c.meshing.derivatives().transpose();
+    J.row(1) = rim.derivatives().transpose();
+    const Eigen::Vector2d F(c.meshing.value(), rim.value());
+    if (!F.allFinite() || !J.allFinite()) break;
+    const Eigen::Vector2d step = J.fullPivLu().solve(F);
+    if (!step.allFinite()) break;
+    x -= step;
+    if (step.norm() < 1e-13 * (1.0 + x.norm())) {
+      if (x(1) > 0.0) return x(1);
+      break;
+    }
+  }
+  return Error{"wheel.outerDiameter",
+               "The wheel rim (radius " + mm(wheelRadius) + ") cannot be brought to touch the gash root "
+               "(radius " + mm(rootRadius) + "): no centre distance solves the boundary equation. "
+               "Give setup.centerDistance or change the wheel."};
+}
+
+}  // namespace hobsharp

@@ -1,0 +1,46 @@
+// Shared helpers of the native tests: the paper's example and its pieces.
+#pragma once
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "case_json.h"
+#include "evaluation.h"
+#include "sharpening_job.h"
+
+namespace hobsharp::test {
+
+inline std::string readFile(const std::string& name) {
+  std::ifstream f(std::string(HOBSHARP_TEST_DATA) + "/" + name);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+// The case of Tab. 1 as printed (E_t = 69.446, gamma_m = 12.626 deg), read from its file.
+inline CaseInput paperCase() {
+  auto c = parseCase(readFile("tab1.json"));
+  EXPECT_TRUE(c.ok()) << (c.ok() ? "" : c.error().message);
+  return c.value();
+}
+
+inline SharpeningJob jobOf(const CaseInput& c) {
+  auto j = resolveJob(c);
+  EXPECT_TRUE(j.ok()) << (j.ok() ? "" : j.error().message);
+  return j.value();
+}
+
+inline GroundFace groundFaceOf(const SharpeningJob& job, const AxisPolynomials& axes) {
+  auto f = simulateGroundFace(job.setup, axes, job.grid);
+  EXPECT_TRUE(f.ok()) << (f.ok() ? "" : f.error().message);
+  return f.value();
+}
+
+inline Topography topographyFor(const SharpeningJob& job, const AxisPolynomials& axes) {
+  return topographyOf(groundFaceOf(job, axes));
+}
+
+}  // namespace hobsharp::test
