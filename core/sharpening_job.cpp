@@ -109,12 +109,14 @@ std::optional<Error> checkGrid(const GridInput& g, const SharpeningJob& job, dou
     return refuse("grid.rMax", num(rMax) + " mm lies beyond the hob's outer radius (" + num(job.outerRadius) + " mm).");
   if (rMin >= rMax) return refuse("grid.rMax", "must be greater than grid.rMin (" + num(rMin) + " mm).");
   if (xMin >= xMax) return refuse("grid.xMax", "must be greater than grid.xMin (" + num(xMin) + " mm).");
-  // The face spans the hob length, centred on the contact line at phi_1 = 0.
+  // The face spans the hob length: centred on the hob (x = 0) or, as the default grid is, on the
+  // contact line at phi_1 = 0 (x = xCentre); either is accepted.
   const double tol = kGridTolerance * (1 + job.input.hob.length);
-  if (xMin < xCentre - half - tol || xMax > xCentre + half + tol)
-    return refuse(xMin < xCentre - half - tol ? "grid.xMin" : "grid.xMax",
-                  "the grid reaches past the hob's ends: the face spans x = " + num(xCentre - half) +
-                      " to " + num(xCentre + half) + " mm.");
+  const double reach = half + std::abs(xCentre) + tol;
+  if (xMax - xMin > 2 * half + tol || xMin < -reach || xMax > reach)
+    return refuse(xMin < -reach ? "grid.xMin" : "grid.xMax",
+                  "the grid (x = " + num(xMin) + " to " + num(xMax) + " mm) reaches past the hob's ends: the face is " +
+                      num(2 * half) + " mm long, centred at x = 0 or on the contact line at x = " + num(xCentre) + " mm.");
   *out = FaceGrid::even(radial, axial, rMin, rMax, xMin, xMax);
   return std::nullopt;
 }

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# HobSharp's one entry point. On a fresh Debian 12 machine:
+#   ./hobsharp.sh serve   install what is missing, build, and serve the calculator on localhost
+#   ./hobsharp.sh test    install what is missing, build everything, and run every test
+#   ./hobsharp.sh bench   build and run the benchmarks
+set -euo pipefail
+cd "$(dirname "$0")"
+ROOT=$PWD
+BUILD=$ROOT/build/native
+JOBS=$(nproc)
+
+APT_PACKAGES=(cmake g++ make libeigen3-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev python3)
+
+as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
+
+install_missing() {
+  local missing=()
+  for p in "${APT_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -gt 0 ]; then
+    echo "== installing: ${missing[*]}"
+    as_root apt-get update -qq
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
+  fi
+}
+
+build_native() {
+  cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$BUILD" -j"$JOBS"
+}
+
+case "${1:-}" in
+  serve)
+    install_missing
+    build_native
+    PORT=${PORT:-8080}
+    echo "== HobSharp at http://localhost:$PORT/ (Ctrl-C stops it)"
+    exec python3 -m http.server "$PORT" --bind 127.0.0.1 --directory "$ROOT/web"
+    ;;
+  test)
+    install_missing
+    build_native
+    (cd "$BUILD" && ctest --output-on-failure -j"$JOBS")
+    ;;
+  bench)
+    install_missing
+    build_native
+    "$BUILD/tests/hobsharp_bench" --benchmark_counters_tabular=true
+    ;;
+  *)
+    echo "usage: $0 serve|test|bench" >&2
+    exit 2
+    ;;
+esac
