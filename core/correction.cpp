@@ -81,10 +81,10 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
     for (int j = 0; j < grid.cols(); ++j) d(i * grid.cols() + j) = measured(i, j);
   d(p) = c.before.thickness;
 
-  // Scale by the motion range (a_k w^k with w in units of the range), then set aside the
-  // negligible columns, then scale every other column to unit norm.
+  // Scale by the motion range (a_k w^k = b_k (w / range)^k, so a_k = b_k / range^k), then set
+  // aside the negligible columns, then scale every other column to unit norm.
   Eigen::VectorXd scale(q);
-  for (int j = 0; j < q; ++j) scale(j) = std::pow(S.motionRange, c.coefficients[j].degree);
+  for (int j = 0; j < q; ++j) scale(j) = std::pow(S.motionRange, -c.coefficients[j].degree);
   Eigen::MatrixXd As = A * scale.asDiagonal();
   const double largest = q > 0 ? As.colwise().norm().maxCoeff() : 0.0;
   std::vector<int> active;
@@ -107,8 +107,7 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(B, Eigen::ComputeThinU | Eigen::ComputeThinV);
     c.singularValues = svd.singularValues();
     const double cut = o.truncation * c.singularValues(0);
-    // With unit columns, no single coefficient needs more than |d| to make the data; a direction
-    // that needs more than amplification * |d| is a shape the axes barely produce (MODEL.md).
+    // See CorrectionOptions::amplification.
     const double limit = o.amplification * d.norm();
     Eigen::VectorXd y = Eigen::VectorXd::Zero(B.cols());
     for (int i = 0; i < c.singularValues.size(); ++i) {

@@ -20,9 +20,10 @@ struct CorrectionOptions {
   // Singular values below truncation * (largest) are dropped; the combinations they belong to
   // are reported as unobservable.
   double truncation = 1e-6;
-  // A direction whose step would exceed amplification * |data| (in unit-column scale) is left
-  // out: the data there is a shape the axes can make only with wild coefficients.
-  double amplification = 10;
+  // With unit columns, one coefficient of size |data| makes a topography of size |data|. A singular
+  // direction whose step would exceed amplification * |data| is left out: the data there is a shape
+  // the axes make only with wild coefficients (a second-degree radial shape, say).
+  double amplification = 1;
   // Before scaling, a column whose norm is below negligible * (largest) is unobservable on its own
   // (moving along a straight gash, say), so that scaling does not blow noise up to unit norm.
   double negligible = 1e-9;

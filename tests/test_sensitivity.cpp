@@ -8,7 +8,7 @@
 namespace hobsharp::test {
 namespace {
 
-// Compared in units of the motion range (a_k w^k with |w| <= range), column by column, to 1e-6
+// Compared per change at the ends of the motion range (a_k = b_k / range^k), column by column, to 1e-6
 // of the column's largest entry. A column that is zero by geometry (a straight gash moved along
 // its plane) is held to 1e-8 of the largest column instead: there only rounding and the
 // difference quotient's O(h^2) error remain.
@@ -17,14 +17,14 @@ void expectMatchesCentralDifferences(const SharpeningJob& job, const AxisPolynom
   const std::vector<Coefficient> coefficients = allCoefficients(at.degree());
   const SensitivityMatrix S = sensitivityMatrix(face, coefficients);
   ASSERT_EQ(S.normal.cols(), static_cast<int>(coefficients.size()));
-  auto rangeScale = [&](const Coefficient& c) { return std::pow(S.motionRange, c.degree); };
+  auto rangeScale = [&](const Coefficient& c) { return std::pow(S.motionRange, -c.degree); };
   double largest = 0;
   for (size_t j = 0; j < coefficients.size(); ++j)
     largest = std::max(largest, S.normal.col(j).cwiseAbs().maxCoeff() * rangeScale(coefficients[j]));
   ASSERT_GT(largest, 100.0);
   for (size_t j = 0; j < coefficients.size(); ++j) {
     const Coefficient& c = coefficients[j];
-    const double h = 1e-5 / rangeScale(c);  // 1e-5 mm or rad at the ends of the motion range
+    const double h = 1e-5 * rangeScale(c);  // 1e-5 mm or rad at the ends of the motion range
     AxisPolynomials plus = at, minus = at;
     plus[c.axis].a[c.degree] += h;
     minus[c.axis].a[c.degree] -= h;

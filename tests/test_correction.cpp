@@ -1,0 +1,180 @@
+// Eq. 17: one correction step by truncated SVD, then re-simulation.
+#include <cmath>
+
+#include "correction.h"
+#include "test_support.h"
+
+namespace hobsharp::test {
+namespace {
+
+// A machine error in the span of the coefficients, of the paper's size.
+AxisPolynomials machineError(const AxisPolynomials& nominal) {
+  AxisPolynomials e = nominal;
+  e[Axis::Y].a[0] += 0.01;
+  e[Axis::Z].a[0] -= 0.01;
+  e[Axis::Z].a[1] += 0.003;
+  e[Axis::A].a[0] += 0.0002;
+  e[Axis::B].a[0] += 0.0005;
+  e[Axis::B].a[2] += 0.001;
+  return e;
+}
+
+// The machine adds its error to whatever is commanded.
+AxisPolynomials withError(AxisPolynomials commanded, const AxisPolynomials& nominal, const AxisPolynomials& err) {
+  for (Axis a : kAxes)
+    for (size_t k = 0; k < commanded[a].a.size(); ++k) commanded[a].a[k] += err[a].a[k] - nominal[a].a[k];
+  return commanded;
+}
+
+TEST(Correction, OneStepCancelsAnErrorInTheSpanOfTheCoefficients) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials& nominal = job.nominalAxes;
+  const AxisPolynomials error = machineError(nominal);
+  const Topography measured = topographyFor(job, error);
+  EXPECT_GT(measured.sse, 3e3);  // around 10^4 µm^2 on the 9 x 5 grid
+  EXPECT_LT(measured.sse, 3e4);
+
+  auto c = correctionStep(groundFaceOf(job, nominal), nominal, measured.normal, CorrectionOptions{});
+  ASSERT_TRUE(c.ok()) << c.error().message;
+  EXPECT_NEAR(c->before.sse, measured.sse, 1e-9);
+  EXPECT_LT(c->after.sse, 1e-3);  // predicted, linear
+  EXPECT_LT(std::abs(c->after.thickness), 0.05);
+  EXPECT_EQ(c->rank, 20);
+  EXPECT_NE(c->verdict.find("Correctable"), std::string::npos);
+
+  // Re-simulate what the machine grinds with the corrected program.
+  const Topography after = topographyFor(job, withError(c->axes, nominal, error));
+  EXPECT_LT(after.sse, 0.01) << "from " << measured.sse;
+  EXPECT_LT(std::abs(after.thickness), 0.05);
+}
+
+TEST(Correction, ReportsXAgainstAAsUnobservable) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials& nominal = job.nominalAxes;
+  auto c = correctionStep(groundFaceOf(job, nominal), nominal,
+                          topographyFor(job, machineError(nominal)).normal, CorrectionOptions{});
+  ASSERT_TRUE(c.ok());
+  ASSERT_EQ(c->singularValues.size(), 25);
+  EXPECT_LT(c->singularValues(20), 1e-12 * c->singularValues(0));  // exactly rank 20 (MODEL.md)
+  EXPECT_GT(c->singularValues(19), 1e-5 * c->singularValues(0));
+  ASSERT_EQ(c->unobservable.size(), 5u);
+  const double p = job.setup.face.screwParameter;
+  std::vector<int> degrees;
+  for (const UnobservableCombination& u : c->unobservable) {
+    ASSERT_EQ(u.coefficients.size(), 2u) << u.description;
+    EXPECT_EQ(u.coefficients[0].axis, Axis::X);
+    EXPECT_EQ(u.coefficients[1].axis, Axis::A);
+    EXPECT_EQ(u.coefficients[0].degree, u.coefficients[1].degree);
+    EXPECT_NEAR(u.amounts[1] / u.amounts[0], 1 / p, 1e-9);  // 1 mm on X = 1/p rad on A
+    EXPECT_NE(u.description.find("cancel"), std::string::npos);
+    degrees.push_back(u.coefficients[0].degree);
+  }
+  std::sort(degrees.begin(), degrees.end());
+  EXPECT_EQ(degrees, (std::vector<int>{0, 1, 2, 3, 4}));
+  // The correction stays out of the unobservable combinations: no X - A fight.
+  for (int k = 0; k <= 4; ++k) EXPECT_LT(std::abs(c->change(k)), 0.05) << "X a" << k;
+}
+
+TEST(Correction, RadialSecondDegreeShapeStaysInTheResidual) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials& nominal = job.nominalAxes;
+  const FaceGrid& g = job.grid;
+  Eigen::MatrixXd shape(g.rows(), g.cols());
+  for (int i = 0; i < g.rows(); ++i) {
+    const double z = (g.r[i] - g.rMean()) / (0.5 * (g.r.back() - g.r.front()));
+    shape.row(i).setConstant(10.0 * z * z);  // µm
+  }
+  // The part of it that no constant or linear radial shape can take: (z^2 - 1/2) * 10 µm.
+  double orthogonal = 0;
+  for (int i = 0; i < g.rows(); ++i) orthogonal += g.cols() * std::pow(shape(i, 0) - 5.0, 2);
+  auto c = correctionStep(groundFaceOf(job, nominal), nominal, shape, CorrectionOptions{});
+  ASSERT_TRUE(c.ok());
+  EXPECT_GT(c->after.sse, 0.8 * orthogonal);
+  EXPECT_GT(c->uncorrectableShare, 0.3);
+  EXPECT_NE(c->verdict.find("uncorrectable"), std::string::npos) << c->verdict;
+  EXPECT_NE(c->verdict.find("wheel profile"), std::string::npos);
+  EXPECT_GT(c->amplifyingDropped, 0);
+  // Not smeared into wild coefficients: over the motion range (|phi| <= 0.5 rad at the grid's
+  // ends) no change moves its axis by more than 0.1 mm or 0.01 rad. With amplification = 2 the
+  // step takes one more direction, moves Y by 0.14 mm there, and takes nothing off the residual.
+  const double range = 0.5;
+  for (size_t j = 0; j < c->coefficients.size(); ++j) {
+    const Coefficient& k = c->coefficients[j];
+    const double bound = (isRotary(k.axis) ? 0.01 : 0.1) / std::pow(range, k.degree);
+    EXPECT_LT(std::abs(c->change(j)), bound) << k.name();
+  }
+  CorrectionOptions loose;
+  loose.amplification = 2;
+  auto smeared = correctionStep(groundFaceOf(job, nominal), nominal, shape, loose);
+  ASSERT_TRUE(smeared.ok());
+  EXPECT_GT(smeared->change.cwiseAbs().maxCoeff(), 1.0);  // this test can tell the two apart
+  EXPECT_GT(smeared->after.sse, c->after.sse - 1.0);
+}
+
+TEST(Correction, LockedAxesAndCoefficientsStayPut) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials& nominal = job.nominalAxes;
+  AxisPolynomials error = nominal;  // an error X can take over from A
+  error[Axis::A].a[0] += 0.0002;
+  error[Axis::Z].a[1] += 0.003;
+  const Topography measured = topographyFor(job, error);
+  CorrectionOptions o;
+  o.lockedAxes = {Axis::A};
+  o.locked = {Coefficient{Axis::B, 2}};
+  auto c = correctionStep(groundFaceOf(job, nominal), nominal, measured.normal, o);
+  ASSERT_TRUE(c.ok());
+  EXPECT_EQ(c->coefficients.size(), 25u - 5u - 1u);
+  for (int k = 0; k <= 4; ++k) EXPECT_EQ(c->axes[Axis::A].a[k], nominal[Axis::A].a[k]);
+  EXPECT_EQ(c->axes[Axis::B].a[2], nominal[Axis::B].a[2]);
+  EXPECT_TRUE(c->unobservable.empty());  // with A locked, X alone is observable
+  EXPECT_NEAR(c->axes[Axis::X].a[0] - nominal[Axis::X].a[0], +0.0002 * job.setup.face.screwParameter, 1e-4);  // X takes over A's share
+  EXPECT_LT(topographyFor(job, withError(c->axes, nominal, error)).sse, 0.01);
+}
+
+TEST(Correction, StraightGash) {
+  CaseInput in = paperCase();
+  in.hob.gash = GashKind::Straight;
+  in.settingAngle.reset();
+  in.centerDistance.reset();
+  const SharpeningJob job = jobOf(in);
+  const AxisPolynomials& nominal = job.nominalAxes;
+  AxisPolynomials error = nominal;
+  error[Axis::Z].a[0] -= 0.006;
+  error[Axis::Z].a[2] += 1e-6;   // mm/mm^2
+  error[Axis::A].a[1] += 2e-6;   // rad/mm
+  const Topography measured = topographyFor(job, error);
+  EXPECT_GT(measured.sse, 1e3);
+  auto c = correctionStep(groundFaceOf(job, nominal), nominal, measured.normal, CorrectionOptions{});
+  ASSERT_TRUE(c.ok());
+  // X (along the gash) and Y (radial, in the face plane) cannot be seen; they are set aside, not blown up.
+  int alone = 0;
+  for (const UnobservableCombination& u : c->unobservable)
+    if (u.coefficients.size() == 1 && (u.coefficients[0].axis == Axis::X || u.coefficients[0].axis == Axis::Y)) ++alone;
+  EXPECT_EQ(alone, 10);
+  for (int k = 0; k <= 9; ++k) EXPECT_EQ(c->change(k), 0.0) << c->coefficients[k].name();
+  EXPECT_LT(topographyFor(job, withError(c->axes, nominal, error)).sse, 0.01);
+}
+
+TEST(Correction, MeasuredOfTheWrongShapeIsRefused) {
+  const SharpeningJob job = jobOf(paperCase());
+  auto c = correctionStep(groundFaceOf(job, job.nominalAxes), job.nominalAxes, Eigen::MatrixXd::Zero(4, 9),
+                          CorrectionOptions{});
+  ASSERT_FALSE(c.ok());
+  EXPECT_EQ(c.error().field, "measured");
+}
+
+TEST(Correction, EvaluationWithMeasuredGivesTheCorrection) {
+  CaseInput in = paperCase();
+  const SharpeningJob nominalJob = jobOf(in);
+  in.measured = topographyFor(nominalJob, machineError(nominalJob.nominalAxes)).normal;
+  auto e = evaluate(jobOf(in));
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  ASSERT_TRUE(e->correction.has_value());
+  EXPECT_LT(e->correction->after.sse, 1e-3);
+  EXPECT_GT(e->correction->before.sse, 3e3);
+  // Without measured data there is no correction.
+  EXPECT_FALSE(evaluate(nominalJob)->correction.has_value());
+}
+
+}  // namespace
+}  // namespace hobsharp::test
