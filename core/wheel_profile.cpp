@@ -37,9 +37,9 @@ Outcome<double> contactCoordinate(const ToothFace& face, const UniversalSettings
     if (std::abs(step) < 1e-15 * (1.0 + std::abs(w))) return w;
   }
   const double radius = std::hypot(u + face.y0Pitch(), face.rakeOffset);
-  return Error{"hob", "No contact between the wheel and the tooth face at radius r = " + mm(radius) +
-                          ": the equation of meshing (Eq. 5) has no solution there. Check the "
-                          "setting angle, tilt and centre distance."};
+  return Error{"setup", "setup: no contact between the wheel and the tooth face at radius r = " + mm(radius) +
+                           ": the equation of meshing (Eq. 5) has no solution there. Check the "
+                           "setting angle, tilt and centre distance."};
 }
 
 std::vector<double> evenRadii(double rootRadius, double outerRadius, int points) {
@@ -61,6 +61,8 @@ Outcome<WheelProfile> wheelProfile(const ToothFace& face, const UniversalSetting
   p.w.assign(points, 0.0);
   p.R.assign(points, 0.0);
   p.Z.assign(points, 0.0);
+  const WheelContact<double> pitch = wheelContact(face, s, normalSign, E, 0.0, *pitchStart);
+  const Eigen::Vector2d side(pitch.r.x(), pitch.r.y());
   int start = 0;
   while (start + 1 < points && radii[start + 1] <= face.pitchRadius) ++start;
   for (int dir : {+1, -1}) {
@@ -70,10 +72,11 @@ Outcome<WheelProfile> wheelProfile(const ToothFace& face, const UniversalSetting
       auto w = contactCoordinate(face, s, normalSign, u, guess);
       if (!w) return w.error();
       const WheelContact<double> c = wheelContact(face, s, normalSign, E, u, *w);
-      if (!(c.R() > 0.0))
+      // Every contact point lies on the same side of the wheel axis as the pitch point.
+      if (!(c.r.x() * side.x() + c.r.y() * side.y() > 0.0))
         return Error{"wheel.outerDiameter",
-                     "The wheel axis passes through the tooth face at radius r = " + mm(radii[k]) +
-                         ": the wheel is too small for this gash depth."};
+                     "wheel.outerDiameter: the wheel is too small for this gash depth: its axis would pass "
+                     "through the tooth face at radius r = " + mm(radii[k]) + "."};
       p.w[k] = *w;
       p.R[k] = c.R();
       p.Z[k] = c.Z();
@@ -107,7 +110,7 @@ Outcome<double> centerDistanceFromWheelRim(const ToothFace& face, const Universa
     }
   }
   return Error{"wheel.outerDiameter",
-               "The wheel rim (radius " + mm(wheelRadius) + ") cannot be brought to touch the gash root "
+               "wheel.outerDiameter: the wheel rim (radius " + mm(wheelRadius) + ") cannot be brought to touch the gash root "
                "(radius " + mm(rootRadius) + "): no centre distance solves the boundary equation. "
                "Give setup.centerDistance or change the wheel."};
 }

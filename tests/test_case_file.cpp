@@ -1,0 +1,210 @@
+// Every bad-input rule of shared/case-format.md: refused with a message that names the field and
+// the reason, and nothing crashes.
+#include <functional>
+#include <limits>
+#include <random>
+
+#include <nlohmann/json.hpp>
+
+#include "test_support.h"
+
+namespace hobsharp::test {
+namespace {
+
+using Json = nlohmann::json;
+
+Json paperJson() { return Json::parse(readFile("tab1.json")); }
+
+// Runs the whole pipeline; returns the first error, or an empty Error when all went through.
+Error firstError(const std::string& text) {
+  auto in = parseCase(text);
+  if (!in) return in.error();
+  auto job = resolveJob(*in);
+  if (!job) return job.error();
+  auto e = evaluate(*job);
+  if (!e) return e.error();
+  return Error{};
+}
+Error firstError(const Json& j) { return firstError(j.dump()); }
+
+struct Rule {
+  const char* name;
+  std::function<void(Json&)> change;
+  const char* field;    // Error::field
+  const char* message;  // a part of Error::message
+};
+
+class BadInput : public ::testing::TestWithParam<Rule> {};
+
+TEST_P(BadInput, IsRefusedWithItsMessage) {
+  const Rule& rule = GetParam();
+  Json j = paperJson();
+  rule.change(j);
+  const Error e = firstError(j);
+  EXPECT_EQ(e.field, rule.field) << e.message;
+  EXPECT_NE(e.message.find(rule.message), std::string::npos) << e.message;
+  if (std::string(rule.field).size() > 0) {
+    EXPECT_EQ(e.message.rfind(rule.field, 0), 0u) << e.message;  // the message starts with the field
+  }
+}
+
+Json measuredRows(int rows, int cols) {
+  Json m = Json::array();
+  for (int i = 0; i < rows; ++i) m.push_back(Json(std::vector<double>(cols, 0.5)));
+  return m;
+}
+
+const Rule kRules[] = {
+    // A missing required field, a wrong type, NaN or infinity, an unknown format.
+    {"MissingField", [](Json& j) { j["hob"].erase("pitchDiameter"); }, "hob.pitchDiameter", "is missing"},
+    {"MissingObject", [](Json& j) { j.erase("machine"); }, "machine", "is missing"},
+    {"MissingTilt", [](Json& j) { j["setup"].erase("tilt"); }, "setup.tilt", "is missing"},
+    {"WrongType", [](Json& j) { j["hob"]["outerDiameter"] = "80"; }, "hob.outerDiameter", "must be a number; got a string"},
+    {"WrongObjectType", [](Json& j) { j["wheel"] = 100; }, "wheel", "must be an object"},
+    {"NaNAsJsonNull", [](Json& j) { j["setup"]["tilt"] = nullptr; }, "setup.tilt", "must be a number; got null"},
+    {"Infinity", [](Json& j) { j["machine"]["K1"] = std::numeric_limits<double>::infinity(); }, "machine.K1", "must be a number"},
+    {"UnknownFormat", [](Json& j) { j["format"] = "hobsharp-case/2"; }, "format", "unknown format"},
+    {"MissingFormat", [](Json& j) { j.erase("format"); }, "format", "is missing"},
+    {"UnknownField", [](Json& j) { j["setup"]["centreDistance"] = 69.4; }, "setup.centreDistance", "unknown field"},
+    {"UnknownGash", [](Json& j) { j["hob"]["gash"] = "spiral"; }, "hob.gash", "must be one of"},
+    {"UnknownHand", [](Json& j) { j["hob"]["hand"] = "up"; }, "hob.hand", "must be one of"},
+    // Non-positive sizes, pitchDiameter >= outerDiameter, gash depth at or beyond the hob radius.
+    {"ZeroModule", [](Json& j) { j["hob"]["normalModule"] = 0; }, "hob.normalModule", "must be positive"},
+    {"NegativeLength", [](Json& j) { j["hob"]["length"] = -140; }, "hob.length", "must be positive"},
+    {"ZeroWheel", [](Json& j) { j["wheel"]["outerDiameter"] = 0; }, "wheel.outerDiameter", "must be positive"},
+    {"NegativeLead", [](Json& j) { j["hob"]["gashLead"] = -876.56; }, "hob.gashLead", "must be positive"},
+    {"NegativeCentreDistance", [](Json& j) { j["setup"]["centerDistance"] = -1; }, "setup.centerDistance", "must be positive"},
+    {"PitchBeyondOuter", [](Json& j) { j["hob"]["pitchDiameter"] = 80; }, "hob.pitchDiameter", "must be smaller than hob.outerDiameter"},
+    {"GashDepthAtRadius", [](Json& j) { j["hob"]["gashDepth"] = 40; }, "hob.gashDepth", "less than the hob radius"},
+    {"GashTooShallow", [](Json& j) { j["hob"]["gashDepth"] = 5; }, "hob.gashDepth", "below the pitch diameter"},
+    {"PressureAngle", [](Json& j) { j["hob"]["normalPressureAngle"] = 50; }, "hob.normalPressureAngle", "between 0 and 45"},
+    {"NoLeadNorAngle", [](Json& j) { j["hob"].erase("gashLead"); }, "hob.gashLead", "needs hob.gashLead or hob.gashHelixAngle"},
+    {"LeadAndAngleDisagree", [](Json& j) { j["hob"]["gashHelixAngle"] = 14.0; }, "hob.gashHelixAngle", "disagrees with hob.gashLead"},
+    {"TiltOutOfRange", [](Json& j) { j["setup"]["tilt"] = 95; }, "setup.tilt", "between -90 and 90"},
+    // |rakeOffset| >= r_p.
+    {"RakeOffsetAtPitch", [](Json& j) { j["hob"]["rakeOffset"] = 31.25; }, "hob.rakeOffset", "less than the pitch radius"},
+    {"RakeOffsetNegative", [](Json& j) { j["hob"]["rakeOffset"] = -35; }, "hob.rakeOffset", "less than the pitch radius"},
+    // A wheel too small to reach the gash root.
+    {"WheelShortOfRoot", [](Json& j) { j["setup"]["centerDistance"] = 75.0; }, "wheel.outerDiameter", "too small to reach the gash root"},
+    {"WheelSmallerThanGash", [](Json& j) { j["wheel"]["outerDiameter"] = 30; j["setup"].erase("centerDistance"); }, "wheel.outerDiameter", "too small for this gash depth"},
+    // A grid outside the face, or over the size limit.
+    {"GridBelowRoot", [](Json& j) { j["grid"]["rMin"] = 15; }, "grid.rMin", "below the gash root"},
+    {"GridBeyondTip", [](Json& j) { j["grid"]["rMax"] = 41; }, "grid.rMax", "beyond the hob's outer radius"},
+    {"GridPastHobEnd", [](Json& j) { j["grid"]["xMax"] = 80; }, "grid.xMax", "reaches past the hob's ends"},
+    {"GridReversed", [](Json& j) { j["grid"]["xMin"] = 10; j["grid"]["xMax"] = -10; }, "grid.xMax", "greater than grid.xMin"},
+    {"GridTooLarge", [](Json& j) { j["grid"]["radial"] = 500; }, "grid.radial", "from 2 to 201"},
+    {"GridOneLine", [](Json& j) { j["grid"]["axial"] = 1; }, "grid.axial", "from 2 to 201"},
+    {"GridFractional", [](Json& j) { j["grid"]["radial"] = 4.5; }, "grid.radial", "whole number"},
+    {"DegreeTooHigh", [](Json& j) { j["degree"] = 7; }, "degree", "from 1 to 6"},
+    // Axes lists of the wrong length.
+    {"AxesWrongLength", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5, 0}}, {"Y", {39.3, 0, 0, 0, 0}}, {"Z", {-116.4, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.22, 0, 0, 0, 0}}}; }, "axes.X", "needs 5 coefficients"},
+    {"AxesMissingAxis", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5, 0, 0, 0}}}; }, "axes.Y", "is missing"},
+    {"AxesNotNumbers", [](Json& j) { j["axes"] = {{"X", {22.4, "a", 0, 0, 0}}, {"Y", {39.3, 0, 0, 0, 0}}, {"Z", {-116.4, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.22, 0, 0, 0, 0}}}; }, "axes.X[1]", "must be a number"},
+    // A measured array whose shape does not match the grid.
+    {"MeasuredTooFewRows", [](Json& j) { j["measured"] = measuredRows(4, 9); }, "measured", "needs grid.radial = 5 rows of grid.axial = 9 values; got 4 x 9"},
+    {"MeasuredShortRow", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][2].erase(8); }, "measured[2]", "has 8 values"},
+    {"MeasuredNotANumber", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][3][4] = "x"; }, "measured[3][4]", "must be a number; got a string"},
+    {"MeasuredEmpty", [](Json& j) { j["measured"] = Json::array(); }, "measured", "is empty"},
+    {"MeasuredNotAList", [](Json& j) { j["measured"] = 3; }, "measured", "must be a list of rows"},
+    // A geometry for which a grid point cannot be solved: the message names r and x.
+    {"UnsolvableGridPoint", [](Json& j) { j["axes"] = {{"X", {222.4, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}}; }, "grid", "cannot be solved at the grid point r = 19 mm, x = -70 mm"},
+    // Correction options.
+    {"LockedUnknown", [](Json& j) { j["correction"] = {{"locked", {"Q a0"}}}; }, "correction.locked", "write a coefficient as"},
+    {"LockedBeyondDegree", [](Json& j) { j["correction"] = {{"locked", {"X a6"}}}; }, "correction.locked", "beyond the polynomial degree"},
+    {"TruncationOutOfRange", [](Json& j) { j["correction"] = {{"truncation", 2}}; }, "correction.truncation", "between 0 and 1"},
+};
+
+INSTANTIATE_TEST_SUITE_P(CaseFile, BadInput, ::testing::ValuesIn(kRules),
+                         [](const ::testing::TestParamInfo<Rule>& i) { return std::string(i.param.name); });
+
+TEST(CaseFile, ThePaperCaseIsAccepted) { EXPECT_EQ(firstError(paperJson()).message, ""); }
+
+TEST(CaseFile, NotJson) {
+  const Error e = firstError(std::string("{\"format\": \"hobsharp-case/1\", \"hob\": {"));
+  EXPECT_NE(e.message.find("not valid JSON"), std::string::npos) << e.message;
+  EXPECT_NE(firstError(std::string("[1, 2]")).message.find("must be a JSON object"), std::string::npos);
+  EXPECT_NE(firstError(std::string("")).message.find("not valid JSON"), std::string::npos);
+}
+
+// JSON has no infinity: a number too large for a double is refused where it stands.
+TEST(CaseFile, OverflowingNumberIsRefusedWhereItStands) {
+  std::string text = paperJson().dump();
+  const std::string from = "\"K1\":100.0";
+  ASSERT_NE(text.find(from), std::string::npos) << text;
+  const size_t at = text.find(from) + 5;
+  text.replace(text.find(from), from.size(), "\"K1\":1e999");
+  const Error e = firstError(text);
+  EXPECT_NE(e.message.find("not valid JSON"), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find("character " + std::to_string(at + 5)), std::string::npos) << e.message << " at " << at;
+}
+
+TEST(CaseFile, DefaultsFillTheOptionalFields) {
+  Json j = paperJson();
+  j["setup"].erase("settingAngle");
+  j["setup"].erase("centerDistance");
+  j.erase("grid");
+  j.erase("degree");
+  j["hob"].erase("rakeOffset");
+  j["hob"].erase("gash");
+  j["hob"].erase("hand");
+  auto in = parseCase(j.dump());
+  ASSERT_TRUE(in.ok()) << in.error().message;
+  auto job = resolveJob(*in);
+  ASSERT_TRUE(job.ok()) << job.error().message;
+  EXPECT_EQ(job->grid.rows(), 5);
+  EXPECT_EQ(job->grid.cols(), 9);
+  EXPECT_DOUBLE_EQ(job->grid.r.front(), 19.0);  // gash root
+  EXPECT_DOUBLE_EQ(job->grid.r.back(), 40.0);   // outer radius
+  EXPECT_NEAR(job->grid.x.back() - job->grid.x.front(), 140.0, 1e-12);
+  EXPECT_EQ(job->nominalAxes.degree(), 4);
+  EXPECT_TRUE(job->settingAngleDerived);
+  EXPECT_TRUE(job->centerDistanceDerived);
+}
+
+TEST(CaseFile, AxesAndMeasuredAreRead) {
+  Json j = paperJson();
+  j["axes"] = {{"X", {22.4003, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}},
+               {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}};
+  j["measured"] = measuredRows(5, 9);
+  j["correction"] = {{"lockedAxes", {"B"}}, {"locked", {"Z a4"}}, {"truncation", 1e-8}};
+  auto in = parseCase(j.dump());
+  ASSERT_TRUE(in.ok()) << in.error().message;
+  EXPECT_DOUBLE_EQ((*in->axes)[Axis::Y].a[0], 39.3076);
+  EXPECT_EQ(in->measured->rows(), 5);
+  EXPECT_EQ(in->measured->cols(), 9);
+  ASSERT_EQ(in->correction.lockedAxes.size(), 1u);
+  EXPECT_EQ(in->correction.lockedAxes[0], Axis::B);
+  ASSERT_EQ(in->correction.locked.size(), 1u);
+  EXPECT_EQ(in->correction.locked[0].name(), "Z a4");
+  auto e = evaluate(jobOf(*in));
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  ASSERT_TRUE(e->correction.has_value());
+  EXPECT_EQ(e->correction->coefficients.size(), 19u);
+}
+
+// Random damage to the paper's case: every variant is either accepted or refused with a message,
+// and none crashes.
+TEST(CaseFile, RandomDamageNeverCrashes) {
+  const std::string text = paperJson().dump();
+  std::mt19937 rng(2012);
+  const std::string junk = "{}[]\",:-0123456789.eE nultrfas";
+  int refused = 0;
+  for (int n = 0; n < 2000; ++n) {
+    std::string s = text;
+    const int edits = 1 + static_cast<int>(rng() % 3);
+    for (int k = 0; k < edits && !s.empty(); ++k) {
+      const size_t at = rng() % s.size();
+      switch (rng() % 3) {
+        case 0: s.erase(at, 1 + rng() % 4); break;
+        case 1: s.insert(at, 1, junk[rng() % junk.size()]); break;
+        default: s[at] = junk[rng() % junk.size()];
+      }
+    }
+    const Error e = firstError(s);
+    if (!e.message.empty()) ++refused;
+  }
+  EXPECT_GT(refused, 1000);
+}
+
+}  // namespace
+}  // namespace hobsharp::test
