@@ -37,12 +37,37 @@ Eigen::Matrix<T, 4, 1> residual(const SharpeningSetup& s, const GridPoint& g, co
 
 struct Linearisation {
   Eigen::Vector4d F;
-  Eigen::Matrix4d J;                                      // d F / d(t, phi, u, w)
-  Eigen::Matrix<double, 4, kAxisCount> dValue, dRate;     // d F / d(axis values), d(axis rates)
+  Eigen::Matrix4d J;  // d F / d(t, phi, u, w)
 };
 
+// For Newton's method: four directions, phi entering through the axis values and rates.
 Linearisation linearise(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
                         const EnvelopeGuess& v) {
+  using D4 = Dual<4>;
+  AxisState<D4> state;
+  for (int i = 0; i < kAxisCount; ++i) {
+    const PolynomialValue p = axes.axis[i].at(v.phi);
+    state.value[i] = seeded<4>(p.value, Eigen::Vector4d(0, p.d1, 0, 0));
+    state.rate[i] = seeded<4>(p.d1, Eigen::Vector4d(0, p.d2, 0, 0));
+  }
+  const Eigen::Matrix<D4, 4, 1> F =
+      residual<D4>(s, g, variable<4>(v.t, 0), variable<4>(v.u, 2), variable<4>(v.w, 3), state);
+  Linearisation L;
+  for (int r = 0; r < 4; ++r) {
+    L.F(r) = F(r).value();
+    L.J.row(r) = F(r).derivatives().transpose();
+  }
+  return L;
+}
+
+// At the solution, with respect to everything: (t, u, w), the axis values and the axis rates.
+struct FullLinearisation {
+  Eigen::Matrix4d J;                                   // d F / d(t, phi, u, w)
+  Eigen::Matrix<double, 4, kAxisCount> dValue, dRate;  // d F / d(axis values), d(axis rates)
+};
+
+FullLinearisation lineariseFully(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
+                                 const EnvelopeGuess& v) {
   AxisState<D> state;
   std::array<PolynomialValue, kAxisCount> p;
   for (int i = 0; i < kAxisCount; ++i) {
@@ -52,10 +77,9 @@ Linearisation linearise(const SharpeningSetup& s, const AxisPolynomials& axes, c
   }
   const Eigen::Matrix<D, 4, 1> F =
       residual<D>(s, g, variable<kVars>(v.t, 0), variable<kVars>(v.u, 1), variable<kVars>(v.w, 2), state);
-  Linearisation L;
+  FullLinearisation L;
   for (int r = 0; r < 4; ++r) {
     const auto& d = F(r).derivatives();
-    L.F(r) = F(r).value();
     L.J(r, 0) = d(0);
     L.J(r, 2) = d(1);
     L.J(r, 3) = d(2);
@@ -96,7 +120,8 @@ EnvelopeGuess nominalGuess(const GridPoint& point, double contactW) {
 }
 
 Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
-                                          const GridPoint& point, const EnvelopeGuess& guess) {
+                                          const GridPoint& point, const EnvelopeGuess& guess,
+                                          Sensitivities sensitivities) {
   EnvelopeGuess v = guess;
   const double angleLimit = setup.face.helical() ? 0.1 : 5.0;  // per-step limits, rad or mm
   for (int it = 1; it <= kMaxIterations; ++it) {
@@ -115,17 +140,17 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
     const double size = std::abs(step(0)) + std::abs(step(2)) +
                         (std::abs(step(1)) + std::abs(step(3))) * (setup.face.helical() ? 50.0 : 1.0);
     if (scale == 1.0 && size < 1e-11) {
-      // Converged: linearise once more at the solution for the sensitivities (Eqs. 13-15).
-      const Linearisation S = linearise(setup, axes, point, v);
-      const Eigen::Vector4d lambda =
-          S.J.transpose().partialPivLu().solve(Eigen::Vector4d::UnitX());
-      if (!lambda.allFinite()) break;
       EnvelopePoint e;
       e.t = v.t;
       e.phi = v.phi;
       e.u = v.u;
       e.w = v.w;
       e.iterations = it;
+      if (sensitivities == Sensitivities::Skip) return e;
+      // Converged: linearise once more at the solution for the sensitivities (Eqs. 13-15).
+      const FullLinearisation S = lineariseFully(setup, axes, point, v);
+      const Eigen::Vector4d lambda = S.J.transpose().partialPivLu().solve(Eigen::Vector4d::UnitX());
+      if (!lambda.allFinite()) break;
       for (int i = 0; i < kAxisCount; ++i) {
         e.dtdValue[i] = -lambda.dot(S.dValue.col(i));
         e.dtdRate[i] = -lambda.dot(S.dRate.col(i));

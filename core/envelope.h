@@ -19,6 +19,8 @@
 
 namespace hobsharp {
 
+enum class Sensitivities { Compute, Skip };
+
 struct EnvelopeGuess {
   double t = 0, phi = 0, u = 0, w = 0;
 };
@@ -37,7 +39,8 @@ struct EnvelopePoint {
 };
 
 Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
-                                          const GridPoint& point, const EnvelopeGuess& guess);
+                                          const GridPoint& point, const EnvelopeGuess& guess,
+                                          Sensitivities sensitivities = Sensitivities::Compute);
 
 // The guess from the nominal screw motion: the wheel touches (u, w) when w + phi = w*(u).
 EnvelopeGuess nominalGuess(const GridPoint& point, double contactW);

@@ -1,5 +1,7 @@
 #include "ground_face.h"
 
+#include <optional>
+
 #include "wheel_profile.h"
 
 namespace hobsharp {
@@ -13,7 +15,7 @@ Outcome<double> contactAt(const SharpeningSetup& s, double r) {
 }  // namespace
 
 Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisPolynomials& axes,
-                                       const FaceGrid& grid) {
+                                       const FaceGrid& grid, Sensitivities sensitivities) {
   GroundFace f;
   f.gash = setup.face.gash;
   f.grid = grid;
@@ -22,14 +24,18 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
   for (int i = 0; i < grid.rows(); ++i) {
     auto contactW = contactAt(setup, grid.r[i]);
     if (!contactW) return contactW.error();
-    double lastT = 0;  // each solve starts from the nominal motion and its neighbour's deviation
+    // Each solve starts from its neighbour's solution, moved along the nominal screw motion
+    // (phi + w = const), or from the nominal motion at the start of a row.
+    std::optional<EnvelopePoint> last;
     for (int j = 0; j < grid.cols(); ++j) {
       const GridPoint g = gridPoint(setup, grid.r[i], grid.x[j]);
       EnvelopeGuess guess = nominalGuess(g, *contactW);
-      guess.t = lastT;
-      auto e = solveEnvelopePoint(setup, axes, g, guess);
+      if (last) {
+        guess = EnvelopeGuess{last->t, last->phi - (g.w - f.points.back().w), last->u, last->w};
+      }
+      auto e = solveEnvelopePoint(setup, axes, g, guess, sensitivities);
       if (!e) return e.error();
-      lastT = e->t;
+      last = *e;
       f.points.push_back(g);
       f.envelope.push_back(*e);
     }
@@ -37,7 +43,7 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
   auto contactW = contactAt(setup, grid.rMean());
   if (!contactW) return contactW.error();
   f.meanPoint = gridPoint(setup, grid.rMean(), grid.xMean());
-  auto e = solveEnvelopePoint(setup, axes, f.meanPoint, nominalGuess(f.meanPoint, *contactW));
+  auto e = solveEnvelopePoint(setup, axes, f.meanPoint, nominalGuess(f.meanPoint, *contactW), sensitivities);
   if (!e) return e.error();
   f.meanEnvelope = *e;
   return f;

@@ -19,7 +19,8 @@ struct GroundFace {
   EnvelopePoint meanEnvelope;
 };
 
+// With Sensitivities::Skip the envelope points carry no derivatives (a plot-only topography).
 Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisPolynomials& axes,
-                                       const FaceGrid& grid);
+                                       const FaceGrid& grid, Sensitivities sensitivities = Sensitivities::Compute);
 
 }  // namespace hobsharp

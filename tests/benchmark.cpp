@@ -1,0 +1,123 @@
+// The benchmark command: the paper's correction cycle, the sensitivity matrix by the implicit
+// function theorem against the paper's central differences, and a dense topography.
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "case_json.h"
+#include "evaluation.h"
+#include "test_support_data.h"
+
+namespace hobsharp {
+namespace {
+
+SharpeningJob paperJob(int radial, int axial) {
+  CaseInput in = parseCase(bench::paperCaseText()).value();
+  in.grid.radial = radial;
+  in.grid.axial = axial;
+  SharpeningJob job = resolveJob(in).value();
+  return job;
+}
+
+// A machine error of the paper's size, measured on the grid.
+Eigen::MatrixXd measuredFor(const SharpeningJob& job) {
+  AxisPolynomials e = job.nominalAxes;
+  e[Axis::Y].a[0] += 0.01;
+  e[Axis::Z].a[0] -= 0.01;
+  e[Axis::Z].a[1] += 0.003;
+  e[Axis::A].a[0] += 0.0002;
+  e[Axis::B].a[2] += 0.001;
+  return topographyOf(simulateGroundFace(job.setup, e, job.grid).value()).normal;
+}
+
+// Profile + topography + sensitivity (25 coefficients) + SVD correction, for Tab. 1 on 9 x 5.
+void CorrectionCycle(benchmark::State& state) {
+  SharpeningJob job = paperJob(5, 9);
+  job.input.measured = measuredFor(job);
+  for (auto _ : state) {
+    auto e = evaluate(job);
+    if (!e) state.SkipWithError(e.error().message.c_str());
+    benchmark::DoNotOptimize(e);
+  }
+}
+
+void SensitivityAnalytic(benchmark::State& state) {
+  const SharpeningJob job = paperJob(5, 9);
+  const std::vector<Coefficient> all = allCoefficients(4);
+  for (auto _ : state) {
+    const GroundFace f = simulateGroundFace(job.setup, job.nominalAxes, job.grid).value();
+    benchmark::DoNotOptimize(sensitivityMatrix(f, all));
+  }
+}
+
+// The paper's method: 2 x 25 + 1 full topographies.
+void SensitivityCentralDifferences(benchmark::State& state) {
+  const SharpeningJob job = paperJob(5, 9);
+  const std::vector<Coefficient> all = allCoefficients(4);
+  for (auto _ : state) {
+    Eigen::MatrixXd S(job.grid.size(), static_cast<int>(all.size()));
+    const Topography base = topographyOf(simulateGroundFace(job.setup, job.nominalAxes, job.grid).value());
+    benchmark::DoNotOptimize(base);
+    for (size_t j = 0; j < all.size(); ++j) {
+      const double h = 1e-5;
+      AxisPolynomials plus = job.nominalAxes, minus = job.nominalAxes;
+      plus[all[j].axis].a[all[j].degree] += h;
+      minus[all[j].axis].a[all[j].degree] -= h;
+      const Eigen::MatrixXd d = topographyOf(simulateGroundFace(job.setup, plus, job.grid).value()).normal -
+                                topographyOf(simulateGroundFace(job.setup, minus, job.grid).value()).normal;
+      S.col(static_cast<int>(j)) = Eigen::Map<const Eigen::VectorXd>(d.data(), d.size()) / (2 * h);
+    }
+    benchmark::DoNotOptimize(S);
+  }
+}
+
+// A dense 101 x 101 topography of a ground face with a machine error.
+void DenseTopography101(benchmark::State& state) {
+  const SharpeningJob job = paperJob(101, 101);
+  AxisPolynomials e = job.nominalAxes;
+  e[Axis::Z].a[0] -= 0.01;
+  e[Axis::B].a[2] += 0.001;
+  for (auto _ : state) {
+    auto f = simulateGroundFace(job.setup, e, job.grid, Sensitivities::Skip);
+    if (!f) state.SkipWithError(f.error().message.c_str());
+    benchmark::DoNotOptimize(topographyOf(f.value()));
+  }
+}
+
+BENCHMARK(CorrectionCycle)->Unit(benchmark::kMicrosecond);
+BENCHMARK(SensitivityAnalytic)->Unit(benchmark::kMicrosecond);
+BENCHMARK(SensitivityCentralDifferences)->Unit(benchmark::kMicrosecond);
+BENCHMARK(DenseTopography101)->Unit(benchmark::kMillisecond);
+
+// Keeps each benchmark's time per iteration for the ratio printed at the end.
+class Recorder : public benchmark::ConsoleReporter {
+ public:
+  std::map<std::string, double> seconds;
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& r : runs)
+      if (r.run_type == Run::RT_Iteration && !r.error_occurred)
+        seconds[r.benchmark_name()] = r.GetAdjustedRealTime() / benchmark::GetTimeUnitMultiplier(r.time_unit);
+    ConsoleReporter::ReportRuns(runs);
+  }
+};
+
+}  // namespace
+}  // namespace hobsharp
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  hobsharp::Recorder recorder;
+  benchmark::RunSpecifiedBenchmarks(&recorder);
+  auto& s = recorder.seconds;
+  if (s.count("SensitivityAnalytic") && s.count("SensitivityCentralDifferences"))
+    std::printf("\nsensitivity matrix, central differences / analytic: %.1fx (target >= 20x)\n",
+                s["SensitivityCentralDifferences"] / s["SensitivityAnalytic"]);
+  if (s.count("CorrectionCycle"))
+    std::printf("correction cycle: %.3f ms (target < 1 ms)\n", 1e3 * s["CorrectionCycle"]);
+  if (s.count("DenseTopography101"))
+    std::printf("101 x 101 topography: %.2f ms (target < 15 ms)\n", 1e3 * s["DenseTopography101"]);
+  benchmark::Shutdown();
+  return 0;
+}
