@@ -9,7 +9,13 @@ ROOT=$PWD
 BUILD=$ROOT/build/native
 JOBS=$(nproc)
 
-APT_PACKAGES=(cmake g++ make libeigen3-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev python3)
+BUILD_WASM=$ROOT/build/wasm
+SITE=$BUILD_WASM/site
+
+APT_PACKAGES=(cmake g++ make libeigen3-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev python3
+              emscripten chromium)
+# Emscripten 3.1.6's optimizer loads acorn from Debian's node modules.
+export NODE_PATH=/usr/share/nodejs
 
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
 
@@ -18,11 +24,25 @@ install_missing() {
   for p in "${APT_PACKAGES[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
+  command -v node >/dev/null && command -v npm >/dev/null || missing+=(nodejs npm)
   if [ ${#missing[@]} -gt 0 ]; then
     echo "== installing: ${missing[*]}"
     as_root apt-get update -qq
     as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
   fi
+}
+
+install_npm() {
+  if [ ! -d node_modules/plotly.js-dist-min ] || [ ! -d node_modules/playwright-core ] ||
+     [ package-lock.json -nt node_modules/.package-lock.json ]; then
+    echo "== npm ci"
+    npm ci --no-audit --no-fund
+  fi
+}
+
+build_wasm() {
+  emcmake cmake -S "$ROOT" -B "$BUILD_WASM" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$BUILD_WASM" -j"$JOBS"
 }
 
 build_native() {
@@ -33,15 +53,21 @@ build_native() {
 case "${1:-}" in
   serve)
     install_missing
-    build_native
+    install_npm
+    build_wasm
     PORT=${PORT:-8080}
     echo "== HobSharp at http://localhost:$PORT/ (Ctrl-C stops it)"
-    exec python3 -m http.server "$PORT" --bind 127.0.0.1 --directory "$ROOT/web"
+    exec python3 -m http.server "$PORT" --bind 127.0.0.1 --directory "$SITE"
     ;;
   test)
     install_missing
+    install_npm
     build_native
+    build_wasm
+    echo "== native tests (GoogleTest via CTest)"
     (cd "$BUILD" && ctest --output-on-failure -j"$JOBS")
+    echo "== module and command-line tests (node --test)"
+    node --test tests/js/
     ;;
   bench)
     install_missing

@@ -1,0 +1,165 @@
+// The WebAssembly module through its JS API, against the native build, and its command line.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync, spawnSync } from 'node:child_process';
+import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { loadHobSharp } from '../../wasm/hobsharp.mjs';
+
+const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+const paperFile = path.join(root, 'tests', 'data', 'tab1.json');
+const paper = () => JSON.parse(readFileSync(paperFile, 'utf8'));
+const nativeEval = process.env.HOBSHARP_NATIVE_EVAL || path.join(root, 'build', 'native', 'tests', 'hobsharp_native_eval');
+const hobsharp = await loadHobSharp();
+
+function native(caseObject) {
+  const dir = mkdtempSync(path.join(tmpdir(), 'hobsharp-'));
+  const file = path.join(dir, 'case.json');
+  writeFileSync(file, JSON.stringify(caseObject));
+  return JSON.parse(execFileSync(nativeEval, [file], { encoding: 'utf8' }));
+}
+
+function assertClose(actual, expected, tol, what) {
+  if (Array.isArray(expected)) {
+    assert.equal(actual.length, expected.length, `${what}: length`);
+    expected.forEach((e, i) => assertClose(actual[i], e, tol, `${what}[${i}]`));
+  } else {
+    assert.ok(Number.isFinite(actual), `${what}: ${actual} is not a finite number`);
+    assert.ok(Math.abs(actual - expected) <= tol, `${what}: wasm ${actual} vs native ${expected}`);
+  }
+}
+
+// A machine error of the paper's size, as a measured topography.
+function measuredCase() {
+  const c = paper();
+  const nominal = hobsharp.evaluate(c).axes;
+  const run = structuredClone(nominal);
+  run.Y[0] += 0.01; run.Z[0] -= 0.01; run.Z[1] += 0.003; run.A[0] += 0.0002; run.B[2] += 0.001;
+  const measured = hobsharp.evaluate({ ...c, axes: run }).topography.normal;
+  return { ...c, measured };
+}
+
+test('the paper example through the wasm module matches the native figures to 1e-9 mm', () => {
+  const c = paper();
+  const w = hobsharp.evaluate(c), n = native(c);
+  for (const k of ['X', 'Y', 'Z', 'A', 'B']) assertClose(w.axes[k], n.axes[k], 1e-9, `axes.${k}`);
+  assertClose(w.setup.centerDistance, n.setup.centerDistance, 1e-9, 'centerDistance');
+  assertClose(w.wheelProfile.R, n.wheelProfile.R, 1e-9, 'wheelProfile.R');
+  assertClose(w.wheelProfile.Z, n.wheelProfile.Z, 1e-9, 'wheelProfile.Z');
+  assertClose(w.topography.normal, n.topography.normal, 1e-6, 'topography.normal (µm)');
+  assertClose(w.topography.circular, n.topography.circular, 1e-6, 'topography.circular (µm)');
+  assertClose(w.sensitivities.normal, n.sensitivities, 1e-6, 'sensitivities (µm per unit)');
+  // And the paper's own figures (Tab. 2 left, MODEL.md).
+  assertClose(w.axes.X.slice(0, 2), [22.400299, 139.508857], 1e-6, 'X');
+  assertClose(w.axes.Y[0], 39.307568, 1e-6, 'Y a0');
+  assertClose(w.axes.Z[0], -116.44596, 1e-6, 'Z a0');
+  assertClose(w.axes.B[0], 0.220365, 1e-6, 'B a0');
+  assert.ok(w.topography.max < 1e-6, 'nominal settings grind the nominal face');
+});
+
+test('the correction through the wasm module matches the native one', () => {
+  const c = measuredCase();
+  const w = hobsharp.evaluate(c), n = native(c);
+  assert.ok(w.correction, 'a measured topography gives a correction');
+  for (const k of ['X', 'Y', 'Z', 'A', 'B']) assertClose(w.correction.axes[k], n.correction.axes[k], 1e-9, `corrected ${k}`);
+  assertClose(w.correction.residual, n.correction.residual, 1e-6, 'residual (µm)');
+  assert.equal(w.correction.rank, n.correction.rank);
+  assert.ok(w.correction.sseBefore > 1e3 && w.correction.sseAfter < 1e-3);
+  assert.equal(w.correction.unobservable.length, 5);
+  assert.match(w.correction.unobservable[0], /X a\d .* A a\d/);
+});
+
+test('the result has the documented shape, with no NaN anywhere', () => {
+  const r = hobsharp.evaluate(measuredCase());
+  for (const key of ['setup', 'axes', 'wheelProfile', 'topography', 'correction']) assert.ok(r[key], key);
+  assert.deepEqual(Object.keys(r.axes), ['X', 'Y', 'Z', 'A', 'B']);
+  assert.equal(r.topography.normal.length, 5);
+  assert.equal(r.topography.normal[0].length, 9);
+  assert.equal(r.sensitivities.coefficients.length, 25);
+  assert.equal(r.sensitivities.coefficients[0], 'X a0');
+  const walk = (v, where) => {
+    if (typeof v === 'number') assert.ok(Number.isFinite(v), `${where} is ${v}`);
+    else if (v && typeof v === 'object') for (const [k, x] of Object.entries(v)) walk(x, `${where}.${k}`);
+  };
+  walk(r, 'result');
+});
+
+const bad = [
+  ['a missing field', (c) => { delete c.hob.pitchDiameter; }, 'hob.pitchDiameter', /is missing/],
+  ['a wrong type', (c) => { c.hob.outerDiameter = '80'; }, 'hob.outerDiameter', /must be a number; got a string/],
+  ['NaN (JSON null)', (c) => { c.setup.tilt = NaN; }, 'setup.tilt', /must be a number; got null/],
+  ['infinity (JSON null)', (c) => { c.machine.K1 = Infinity; }, 'machine.K1', /must be a number/],
+  ['an unknown format', (c) => { c.format = 'hobsharp-case/9'; }, 'format', /unknown format/],
+  ['an unknown field', (c) => { c.setup.centreDistance = 69; }, 'setup.centreDistance', /unknown field/],
+  ['a non-positive size', (c) => { c.hob.length = 0; }, 'hob.length', /must be positive/],
+  ['pitchDiameter >= outerDiameter', (c) => { c.hob.pitchDiameter = 85; }, 'hob.pitchDiameter', /smaller than hob.outerDiameter/],
+  ['gash depth beyond the hob radius', (c) => { c.hob.gashDepth = 41; }, 'hob.gashDepth', /less than the hob radius/],
+  ['|rakeOffset| >= r_p', (c) => { c.hob.rakeOffset = -31.25; }, 'hob.rakeOffset', /less than the pitch radius/],
+  ['a wheel too small to reach the gash root', (c) => { c.setup.centerDistance = 75; }, 'wheel.outerDiameter', /too small to reach the gash root/],
+  ['a grid outside the face', (c) => { c.grid.rMin = 10; }, 'grid.rMin', /below the gash root/],
+  ['a grid over the size limit', (c) => { c.grid.axial = 1000; }, 'grid.axial', /from 2 to 201/],
+  ['axes of the wrong length', (c) => { c.axes = { X: [22.4, 139.5], Y: [39.3, 0, 0, 0, 0], Z: [-116.4, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.22, 0, 0, 0, 0] }; }, 'axes.X', /needs 5 coefficients/],
+  ['measured of the wrong shape', (c) => { c.measured = [[1, 2, 3]]; }, 'measured', /needs grid.radial = 5 rows of grid.axial = 9 values; got 1 x 3/],
+  ['a non-numeric measured cell', (c) => { c.measured = Array.from({ length: 5 }, () => Array(9).fill(0)); c.measured[1][2] = 'n/a'; }, 'measured[1][2]', /must be a number/],
+  ['an unsolvable grid point', (c) => { c.axes = { X: [222.4, 139.5089, 0, 0, 0], Y: [39.3076, 0, 0, 0, 0], Z: [-116.446, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.220365, 0, 0, 0, 0] }; }, 'grid', /r = 19 mm, x = -70 mm/],
+];
+
+for (const [name, change, field, message] of bad) {
+  test(`bad input is refused: ${name}`, () => {
+    const c = paper();
+    change(c);
+    assert.throws(() => hobsharp.evaluate(c), (e) => {
+      assert.ok(e instanceof Error, 'a real Error, not a number');
+      assert.equal(e.field, field);
+      assert.match(e.message, message);
+      assert.ok(e.message.startsWith(field), `the message names the field: ${e.message}`);
+      return true;
+    });
+  });
+}
+
+test('not an object is a TypeError', () => {
+  assert.throws(() => hobsharp.evaluate('tab1.json'), TypeError);
+  assert.throws(() => hobsharp.evaluate(null), TypeError);
+});
+
+test('the module still works after errors', () => {
+  const first = hobsharp.evaluate(paper());
+  for (let i = 0; i < 50; i++) {
+    const c = paper();
+    c.hob.gashDepth = 50 + i;
+    assert.throws(() => hobsharp.evaluate(c), /hob.gashDepth/);
+  }
+  const again = hobsharp.evaluate(paper());
+  assert.deepEqual(again.axes, first.axes);
+  assert.deepEqual(again.topography.normal, first.topography.normal);
+});
+
+test('the CLI prints the result as JSON', () => {
+  const out = execFileSync(process.execPath, [path.join(root, 'wasm', 'cli.mjs'), paperFile], { encoding: 'utf8' });
+  const r = JSON.parse(out);
+  assert.ok(Math.abs(r.axes.X[0] - 22.400299) < 1e-6);
+  assert.ok(Math.abs(r.setup.screwParameter - 139.508857) < 1e-6);
+  assert.equal(r.topography.normal.length, 5);
+});
+
+test('the CLI refuses bad input with the message on stderr and a non-zero exit', () => {
+  const dir = mkdtempSync(path.join(tmpdir(), 'hobsharp-'));
+  const file = path.join(dir, 'bad.json');
+  const c = paper();
+  c.hob.rakeOffset = 40;
+  writeFileSync(file, JSON.stringify(c));
+  const run = spawnSync(process.execPath, [path.join(root, 'wasm', 'cli.mjs'), file], { encoding: 'utf8' });
+  assert.equal(run.status, 1);
+  assert.equal(run.stdout, '');
+  assert.match(run.stderr, /hob.rakeOffset: \|e\| must be less than the pitch radius/);
+  const missing = spawnSync(process.execPath, [path.join(root, 'wasm', 'cli.mjs'), path.join(dir, 'none.json')], { encoding: 'utf8' });
+  assert.equal(missing.status, 1);
+  assert.match(missing.stderr, /no such file/);
+  writeFileSync(file, '{"format": ');
+  const broken = spawnSync(process.execPath, [path.join(root, 'wasm', 'cli.mjs'), file], { encoding: 'utf8' });
+  assert.equal(broken.status, 1);
+  assert.match(broken.stderr, /not valid JSON/);
+});
