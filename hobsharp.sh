@@ -14,8 +14,7 @@ SITE=$BUILD_WASM/site
 
 APT_PACKAGES=(cmake g++ make libeigen3-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev python3
               emscripten chromium)
-# Emscripten 3.1.6's optimizer loads acorn from Debian's node modules.
-export NODE_PATH=/usr/share/nodejs
+
 
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
 
@@ -68,6 +67,8 @@ case "${1:-}" in
     (cd "$BUILD" && ctest --output-on-failure -j"$JOBS")
     echo "== module and command-line tests (node --test)"
     node --test tests/js/
+    echo "== browser tests (playwright-core, Debian's Chromium; screenshots in test-output/browser/)"
+    node --test tests/browser/
     ;;
   bench)
     install_missing

@@ -1,0 +1,269 @@
+// The page in Debian's Chromium, driven by playwright-core, served on localhost by python3.
+// Screenshots of each main view go to test-output/browser/.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawn } from 'node:child_process';
+import { mkdirSync, readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import net from 'node:net';
+import path from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+import { chromium } from 'playwright-core';
+
+const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+const site = process.env.HOBSHARP_SITE || path.join(root, 'build', 'wasm', 'site');
+const shots = path.join(root, 'test-output', 'browser');
+mkdirSync(shots, { recursive: true });
+
+let server, browser, base;
+
+function freePort() {
+  return new Promise((resolve) => {
+    const s = net.createServer().listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => resolve(port)); });
+  });
+}
+
+async function waitForServer(url) {
+  for (let i = 0; i < 100; i++) {
+    try { if ((await fetch(url)).ok) return; } catch { /* not yet */ }
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  throw new Error(`the test server at ${url} did not start`);
+}
+
+before(async () => {
+  const port = await freePort();
+  server = spawn('/usr/bin/python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', site],
+                 { stdio: 'ignore' });
+  base = `http://127.0.0.1:${port}/`;
+  await waitForServer(base);
+  browser = await chromium.launch({
+    executablePath: '/usr/bin/chromium',
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update'],
+  });
+});
+
+after(async () => {
+  if (browser) await browser.close();
+  if (server) server.kill();
+});
+
+async function openPage(url = base) {
+  const context = await browser.newContext({ viewport: { width: 1500, height: 1100 }, acceptDownloads: true });
+  const page = await context.newPage();
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(e.message));
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+  page.problems = problems;
+  await page.goto(url);
+  await page.waitForFunction(() => window.hobsharpTimings && window.hobsharpTimings.results > 0, null, { timeout: 20000 });
+  return page;
+}
+
+const count = (page, what) => page.evaluate((w) => window.hobsharpTimings[w], what);
+
+// Waits for the next result (or refusal) after `action`.
+async function after_(page, what, action) {
+  const n = await count(page, what);
+  await action();
+  await page.waitForFunction(([w, k]) => window.hobsharpTimings[w] > k, [what, n], { timeout: 20000 });
+}
+const afterResult = (page, action) => after_(page, 'results', action);
+const afterError = (page, action) => after_(page, 'errors', action);
+
+async function plotted(page) {
+  await page.waitForFunction(() => window.hobsharpTimings.draws > 0, null, { timeout: 30000 });
+  await page.waitForTimeout(300);
+}
+
+// How many distinct colours a rendered element shows: a plot that draws nothing has a handful.
+async function colours(page, selector) {
+  const png = await page.locator(selector).screenshot();
+  return page.evaluate(async (b64) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${b64}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width; c.height = img.height;
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    const seen = new Set();
+    for (let i = 0; i < d.length; i += 4) seen.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
+    return seen.size;
+  }, png.toString('base64'));
+}
+
+async function tab2(page, set) {
+  const out = {};
+  for (const a of ['X', 'Y', 'Z', 'A', 'B']) out[a] = (await page.textContent(`#tab2 td[data-set="${set}"][data-axis="${a}"]`)).trim();
+  return out;
+}
+
+test('the page opens with the paper example and shows Tab. 2 (left) within 1 s', async () => {
+  // Three cold opens (a new browser context each); the best is the page's opening time here.
+  const times = [];
+  let page;
+  for (let i = 0; i < 3; i++) {
+    if (page) await page.context().close();
+    page = await openPage();
+    times.push(await page.evaluate(() => window.hobsharpTimings.firstResult));
+  }
+  console.log(`first result after opening: ${times.map((t) => t.toFixed(0)).join(', ')} ms`);
+  assert.ok(Math.min(...times) < 1000, `first result at ${times.join(', ')} ms`);
+
+  const t = await tab2(page, 'nominal');
+  assert.equal(t.X, '22.4003 + 139.5089 φ₁');
+  assert.equal(t.Y, '39.30757');
+  assert.equal(t.Z, '−116.446');
+  assert.equal(t.A, '1 φ₁');
+  assert.equal(t.B, '0.2203653');
+  assert.equal(await page.inputValue('[data-field="setup.tilt"]'), '15');
+  assert.match(await page.textContent('[data-derived="gashHelixAngle"]'), /12\.6258°/);
+  assert.match(await page.textContent('#figures-before'), /thickness error [+-]?0\.000 µm/);
+
+  await plotted(page);
+  for (const id of ['#plot-axes', '#plot-wheel', '#plot-before-3d', '#plot-before-2d', '#sens-0', '#sens-24']) {
+    assert.ok(await colours(page, id) > 30, `${id} draws something`);
+  }
+  await page.locator('#axes-section').screenshot({ path: path.join(shots, 'axes.png') });
+  await page.locator('#wheel-section').screenshot({ path: path.join(shots, 'wheel-profile.png') });
+  await page.screenshot({ path: path.join(shots, 'page.png'), fullPage: true });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('changing the tilt changes the numbers', async () => {
+  const page = await openPage();
+  const before = await tab2(page, 'nominal');
+  await afterResult(page, () => page.fill('[data-field="setup.tilt"]', '16'));
+  const now = await tab2(page, 'nominal');
+  assert.notEqual(now.Y, before.Y);
+  assert.notEqual(now.Z, before.Z);
+  assert.equal(now.X, before.X);  // X = L_t + K1 tan(gamma_m) does not depend on the tilt
+  const rad = Math.PI / 180;
+  const z = -(100 / Math.cos(12.626 * rad) + 10) / Math.cos(16 * rad);  // Eq. 9
+  assert.equal(now.Z, `−${Math.abs(z).toFixed(3)}`);
+  await page.context().close();
+});
+
+test('a generated machine error is corrected, the sum of squares dropping at least 1000x', async () => {
+  const page = await openPage();
+  await plotted(page);
+  const nominalColours = await colours(page, '#plot-before-2d');
+  const offsets = { 'Y 0': '0.01', 'Z 0': '-0.01', 'Z 1': '0.003', 'A 0': '0.0002', 'B 2': '0.001' };
+  for (const [k, v] of Object.entries(offsets)) {
+    await page.fill(`[data-offset="${k}"]`, v);
+    await page.dispatchEvent(`[data-offset="${k}"]`, 'change');
+  }
+  await after_(page, 'draws', async () => {
+    await page.click('#generate-error');
+    await page.waitForFunction(() => document.querySelector('#verdict').dataset.sseAfter !== undefined, null, { timeout: 20000 });
+  });
+  const before = Number(await page.getAttribute('#verdict', 'data-sse-before'));
+  const afterSse = Number(await page.getAttribute('#verdict', 'data-sse-after'));
+  assert.ok(before > 1000, `sum of squares before ${before}`);
+  assert.ok(before / Math.max(afterSse, 1e-12) >= 1000, `${before} -> ${afterSse}`);
+  assert.match(await page.textContent('#verdict'), /Correctable/);
+  const corrected = await tab2(page, 'corrected');
+  assert.notEqual(corrected.Z, '—');
+  assert.match(await page.textContent('#unobservable'), /X a0 .* A a0/);
+
+  await page.waitForTimeout(300);
+  for (const id of ['#plot-before-3d', '#plot-before-2d', '#plot-after-3d', '#plot-after-2d', '#plot-singular']) {
+    assert.ok(await colours(page, id) > 30, `${id} draws something`);
+  }
+  assert.ok(await colours(page, '#plot-before-2d') > nominalColours, 'the measured map shows the error');
+  await page.locator('#topography-section').screenshot({ path: path.join(shots, 'topography-normal.png') });
+  await after_(page, 'draws', () => page.check('input[name="view"][value="circular"]'));
+  await page.waitForTimeout(300);
+  await page.locator('#topography-section').screenshot({ path: path.join(shots, 'topography-circular.png') });
+  await page.locator('#measured-section').screenshot({ path: path.join(shots, 'measured.png') });
+  await page.locator('#sensitivity-section').screenshot({ path: path.join(shots, 'sensitivities.png') });
+
+  // Locking A: X takes over its share, and the correction still works.
+  await afterResult(page, () => page.check('[data-lock-axis="A"]'));
+  const locked = await tab2(page, 'corrected');
+  assert.equal(locked.A, '1 φ₁');
+  assert.ok(Number(await page.getAttribute('#verdict', 'data-sse-after')) < before / 1000);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('a bad CSV is refused with a message and the old results stay', async () => {
+  const page = await openPage();
+  const shown = await tab2(page, 'nominal');
+  const dir = mkdtempSync(path.join(tmpdir(), 'hobsharp-'));
+  const files = {
+    'wrong-shape.csv': ['1,2,3', '4,5,6'].join('\n'),
+    'not-numbers.csv': Array.from({ length: 5 }, (_, i) => (i === 2 ? '1,2,x,4,5,6,7,8,9' : '1,2,3,4,5,6,7,8,9')).join('\n'),
+    'empty.csv': '',
+    'huge.csv': '0.5,'.repeat(2_700_000),
+  };
+  const messages = {
+    'wrong-shape.csv': /5 radial lines .* 2 rows/,
+    'not-numbers.csv': /Row 3, column 3: "x" is not a number/,
+    'empty.csv': /empty/,
+    'huge.csv': /is 10\.\d MB/,
+  };
+  for (const [name, text] of Object.entries(files)) {
+    const file = path.join(dir, name);
+    writeFileSync(file, text);
+    await afterError(page, () => page.setInputFiles('#measured-file', file));
+    assert.match(await page.textContent('#measured-error'), messages[name], name);
+    assert.equal(await page.isVisible('#measured-error'), true);
+    assert.deepEqual(await tab2(page, 'nominal'), shown, 'the old results stay');
+    assert.match(await page.textContent('#status'), /last good input/);
+  }
+  await page.locator('#measured-section').screenshot({ path: path.join(shots, 'bad-csv.png') });
+
+  // A bad field: the message at the field, the results kept.
+  await afterError(page, () => page.fill('[data-field="hob.pitchDiameter"]', '90'));
+  assert.match(await page.textContent('label:has([data-field="hob.pitchDiameter"]) .field-message'),
+               /hob.pitchDiameter: must be smaller than hob.outerDiameter/);
+  assert.deepEqual(await tab2(page, 'nominal'), shown);
+  await page.locator('form').screenshot({ path: path.join(shots, 'bad-field.png') });
+  await afterResult(page, () => page.fill('[data-field="hob.pitchDiameter"]', '62.5'));
+  assert.equal(await page.locator('.field-message').count(), 0);
+  await page.context().close();
+});
+
+test('a saved case loads back', async () => {
+  const page = await openPage();
+  await afterResult(page, () => page.fill('[data-field="machine.K1"]', '120'));
+  const saved = await tab2(page, 'nominal');
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-case')]);
+  const file = await download.path();
+  const c = JSON.parse(readFileSync(file, 'utf8'));
+  assert.equal(c.format, 'hobsharp-case/1');
+  assert.equal(c.machine.K1, 120);
+  await afterResult(page, () => page.click('#preset-paper'));
+  assert.notDeepEqual(await tab2(page, 'nominal'), saved);
+  await afterResult(page, () => page.setInputFiles('#load-case', file));
+  assert.equal(await page.inputValue('[data-field="machine.K1"]'), '120');
+  assert.deepEqual(await tab2(page, 'nominal'), saved);
+  await page.context().close();
+});
+
+test('a shared link reopens the same job', async () => {
+  const page = await openPage();
+  await afterResult(page, () => page.fill('[data-field="machine.K2"]', '12'));
+  await afterResult(page, () => page.fill('[data-field="grid.axial"]', '11'));
+  const url = page.url();
+  assert.match(url, /#case=/);
+  const shown = await tab2(page, 'nominal');
+  const again = await openPage(url);
+  assert.equal(await again.inputValue('[data-field="machine.K2"]'), '12');
+  assert.equal(await again.inputValue('[data-field="grid.axial"]'), '11');
+  assert.deepEqual(await tab2(again, 'nominal'), shown);
+  assert.match(await again.textContent('#grid-shape'), /5 rows × 11 values/);
+  await again.context().close();
+  await page.context().close();
+});
+
+test('the page also works opened from disk', async () => {
+  const page = await openPage(pathToFileURL(path.join(site, 'index.html')).href);
+  assert.equal((await tab2(page, 'nominal')).X, '22.4003 + 139.5089 φ₁');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
