@@ -72,8 +72,11 @@ case "${1:-}" in
     ;;
   bench)
     install_missing
+    install_npm
     build_native
-    "$BUILD/tests/hobsharp_bench" --benchmark_counters_tabular=true
+    build_wasm
+    "$BUILD/tests/hobsharp_bench" --benchmark_out="$BUILD/bench-native.json" --benchmark_out_format=json
+    node tests/benchmark-wasm.mjs "$BUILD/bench-native.json"
     ;;
   *)
     echo "usage: $0 serve|test|bench" >&2

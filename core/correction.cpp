@@ -128,6 +128,12 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
     for (size_t k = 0; k < active.size(); ++k) c.change(active[k]) = y(k) * scale(active[k]);
   }
 
+  // Listed by degree, then axis, so that X a0 against A a0 comes first.
+  std::stable_sort(c.unobservable.begin(), c.unobservable.end(),
+                   [](const UnobservableCombination& a, const UnobservableCombination& b) {
+                     const Coefficient &x = a.coefficients.front(), &y = b.coefficients.front();
+                     return x.degree != y.degree ? x.degree < y.degree : x.axis < y.axis;
+                   });
   c.axes = runAxes;
   for (int j = 0; j < q; ++j) c.axes[c.coefficients[j].axis].a[c.coefficients[j].degree] += c.change(j);
   const Eigen::VectorXd after = d + A * c.change;

@@ -163,3 +163,9 @@ test('the CLI refuses bad input with the message on stderr and a non-zero exit',
   assert.equal(broken.status, 1);
   assert.match(broken.stderr, /not valid JSON/);
 });
+
+test("the page's paper preset is the paper's case file", () => {
+  const text = readFileSync(path.join(root, 'web', 'paper-case.js'), 'utf8');
+  const preset = JSON.parse(text.slice(text.indexOf('=') + 1).trim().replace(/;$/, ''));
+  assert.deepEqual(preset, paper());
+});

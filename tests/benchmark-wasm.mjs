@@ -1,0 +1,54 @@
+// The WebAssembly half of ./hobsharp.sh bench: the same correction cycle and dense topography as
+// tests/benchmark.cpp, run in the module under Node, printed beside the native figures that the
+// native benchmark wrote to the JSON file given as the first argument.
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { loadHobSharp } from '../wasm/hobsharp.mjs';
+
+const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..');
+const nativeFile = process.argv[2];
+const native = {};
+for (const b of JSON.parse(readFileSync(nativeFile, 'utf8')).benchmarks) {
+  const perMs = { ns: 1e-6, us: 1e-3, ms: 1, s: 1e3 }[b.time_unit];
+  native[b.name] = b.real_time * perMs;
+}
+
+const hobsharp = await loadHobSharp();
+const paper = JSON.parse(readFileSync(path.join(root, 'tests', 'data', 'tab1.json'), 'utf8'));
+const withError = (c, changes) => {
+  const axes = hobsharp.evaluate(c).axes;
+  for (const [axis, k, d] of changes) axes[axis][k] += d;
+  return axes;
+};
+
+// The cycle: Tab. 1 on 9 x 5 with the benchmark's machine error as the measured topography.
+const cycleError = [['Y', 0, 0.01], ['Z', 0, -0.01], ['Z', 1, 0.003], ['A', 0, 0.0002], ['B', 2, 0.001]];
+const measured = hobsharp.evaluate({ ...paper, axes: withError(paper, cycleError) }).topography.normal;
+const cycleCase = { ...paper, measured };
+// The dense topography: 101 x 101 with its machine error.
+const dense = { ...paper, grid: { ...paper.grid, radial: 101, axial: 101 } };
+const denseCase = { ...dense, axes: withError(dense, [['Z', 0, -0.01], ['B', 2, 0.001]]) };
+
+const best = (f, runs, repeats = 5) => Math.min(...Array.from({ length: repeats }, () => f(runs)));
+const wasm = {
+  CorrectionCycle: best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(cycleCase), n), 200),
+  DenseTopography101: best((n) => hobsharp.timeTopography(JSON.stringify(denseCase), n), 10),
+};
+// End to end from JS, with the case in and the plain-JS result out (what the page's worker pays).
+const t0 = performance.now();
+for (let i = 0; i < 100; i++) hobsharp.evaluate(cycleCase);
+const endToEnd = (performance.now() - t0) / 100;
+
+const rows = [
+  ['correction cycle (Tab. 1, 9 x 5, 25 coefficients)', 'CorrectionCycle', 1],
+  ['dense 101 x 101 topography', 'DenseTopography101', 15],
+];
+console.log('\nnative versus WebAssembly (Node ' + process.version + '), ms per run:');
+console.log('benchmark'.padEnd(52) + 'native'.padStart(10) + 'wasm'.padStart(10) + 'wasm/native'.padStart(13));
+for (const [label, key] of rows) {
+  const n = native[key], w = wasm[key];
+  console.log(label.padEnd(52) + n.toFixed(3).padStart(10) + w.toFixed(3).padStart(10) + (w / n).toFixed(2).padStart(12) + 'x');
+}
+console.log(`evaluate(case) end to end in JS, with the result as plain JS data: ${endToEnd.toFixed(3)} ms`);
+console.log('target: wasm within 1.5x native');
