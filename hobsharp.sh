@@ -56,6 +56,10 @@ case "${1:-}" in
     build_wasm
     PORT=${PORT:-8080}
     echo "== HobSharp at http://localhost:$PORT/ (Ctrl-C stops it)"
+    # With a desktop, open it in Chromium (installed above) once the server answers.
+    if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && command -v chromium >/dev/null; then
+      (sleep 1; chromium "http://localhost:$PORT/" >/dev/null 2>&1 &)
+    fi
     exec python3 -m http.server "$PORT" --bind 127.0.0.1 --directory "$SITE"
     ;;
   test)

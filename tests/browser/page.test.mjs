@@ -180,6 +180,9 @@ test('a generated machine error is corrected, the sum of squares dropping at lea
   await page.locator('#topography-section').screenshot({ path: path.join(shots, 'topography-circular.png') });
   await page.locator('#measured-section').screenshot({ path: path.join(shots, 'measured.png') });
   await page.locator('#sensitivity-section').screenshot({ path: path.join(shots, 'sensitivities.png') });
+  await page.check('input[name="view"][value="normal"]');
+  await page.waitForTimeout(1000);
+  await page.screenshot({ path: path.join(shots, 'page-corrected.png'), fullPage: true });
 
   // Locking A: X takes over its share, and the correction still works.
   await afterResult(page, () => page.check('[data-lock-axis="A"]'));
@@ -217,6 +220,15 @@ test('a bad CSV is refused with a message and the old results stay', async () =>
   }
   await page.locator('#measured-section').screenshot({ path: path.join(shots, 'bad-csv.png') });
 
+  // A pasted grid of the right shape is used: a uniform 1 µm of excess material is corrected.
+  await page.fill('#measured-csv', Array.from({ length: 5 }, () => Array(9).fill('1.0').join(', ')).join('\n'));
+  await afterResult(page, () => page.click('#use-measured'));
+  assert.equal(await page.isVisible('#measured-error'), false);
+  assert.equal(Number(await page.getAttribute('#verdict', 'data-sse-before')), 45);
+  assert.ok(Number(await page.getAttribute('#verdict', 'data-sse-after')) < 1e-6);
+  await afterResult(page, () => page.click('#clear-measured'));
+  assert.equal(await page.getAttribute('#verdict', 'data-sse-after'), null);
+
   // A bad field: the message at the field, the results kept.
   await afterError(page, () => page.fill('[data-field="hob.pitchDiameter"]', '90'));
   assert.match(await page.textContent('label:has([data-field="hob.pitchDiameter"]) .field-message'),
@@ -232,6 +244,13 @@ test('a saved case loads back', async () => {
   const page = await openPage();
   await afterResult(page, () => page.fill('[data-field="machine.K1"]', '120'));
   const saved = await tab2(page, 'nominal');
+  const [profile] = await Promise.all([page.waitForEvent('download'), page.click('#download-profile')]);
+  const csv = readFileSync(await profile.path(), 'utf8').trim().split('\n');
+  assert.equal(csv[1], 'r_mm,R_mm,Z_mm');
+  assert.equal(csv.length, 2 + 41);
+  assert.ok(Math.abs(Number(csv[2].split(',')[1]) - 49.999828) < 1e-5, csv[2]);  // rim at the root (MODEL.md)
+  const [results] = await Promise.all([page.waitForEvent('download'), page.click('#download-results')]);
+  assert.match(readFileSync(await results.path(), 'utf8'), /^X a1,mm\/rad,139\.508856916/m);
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-case')]);
   const file = await download.path();
   const c = JSON.parse(readFileSync(file, 'utf8'));
