@@ -8,13 +8,21 @@
 
 #include "case_json.h"
 #include "evaluation.h"
-#include "test_support_data.h"
+#include <fstream>
+#include <sstream>
 
 namespace hobsharp {
 namespace {
 
+std::string paperCaseText() {
+  std::ifstream f(std::string(HOBSHARP_TEST_DATA) + "/tab1.json");
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
 SharpeningJob paperJob(int radial, int axial) {
-  CaseInput in = parseCase(bench::paperCaseText()).value();
+  CaseInput in = parseCase(paperCaseText()).value();
   in.grid.radial = radial;
   in.grid.axial = axial;
   SharpeningJob job = resolveJob(in).value();

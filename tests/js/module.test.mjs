@@ -165,7 +165,7 @@ test('the CLI refuses bad input with the message on stderr and a non-zero exit',
 });
 
 test("the page's paper preset is the paper's case file", () => {
-  const text = readFileSync(path.join(root, 'web', 'paper-case.js'), 'utf8');
+  const text = readFileSync(path.join(root, 'build', 'wasm', 'site', 'paper-case.js'), 'utf8');
   const preset = JSON.parse(text.slice(text.indexOf('=') + 1).trim().replace(/;$/, ''));
   assert.deepEqual(preset, paper());
 });
