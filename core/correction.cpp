@@ -26,10 +26,8 @@ UnobservableCombination combination(const std::vector<Coefficient>& coefficients
                                     const Eigen::VectorXd& columnScale, bool helical) {
   UnobservableCombination u;
   const double largest = scaledDirection.cwiseAbs().maxCoeff();
-  int lead = -1;
   for (int j = 0; j < scaledDirection.size(); ++j) {
     if (std::abs(scaledDirection(j)) < 1e-3 * largest) continue;
-    if (lead < 0) lead = j;
     u.coefficients.push_back(coefficients[j]);
     u.amounts.push_back(scaledDirection(j) * columnScale(j));
   }
@@ -58,11 +56,11 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
                                    const Eigen::MatrixXd& measured, const CorrectionOptions& o) {
   const FaceGrid& grid = run.grid;
   if (measured.rows() != grid.rows() || measured.cols() != grid.cols())
-    return Error{"measured", "The measured topography has " + std::to_string(measured.rows()) + " x " +
+    return Error{"measured", "measured: the topography has " + std::to_string(measured.rows()) + " x " +
                                  std::to_string(measured.cols()) + " values; the grid is " +
                                  std::to_string(grid.rows()) + " radial x " +
                                  std::to_string(grid.cols()) + " axial."};
-  if (!measured.allFinite()) return Error{"measured", "The measured topography holds a value that is not a number."};
+  if (!measured.allFinite()) return Error{"measured", "measured: holds a value that is not a finite number."};
 
   Correction c;
   c.before = topographyFromNormal(run, measured);
