@@ -81,6 +81,7 @@ case "${1:-}" in
     build_wasm
     "$BUILD/tests/hobsharp_bench" --benchmark_out="$BUILD/bench-native.json" --benchmark_out_format=json
     node tests/benchmark-wasm.mjs "$BUILD/bench-native.json"
+    node tests/benchmark-page.mjs
     ;;
   *)
     echo "usage: $0 serve|test|bench" >&2

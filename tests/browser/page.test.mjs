@@ -100,18 +100,10 @@ async function tab2(page, set) {
   return out;
 }
 
-test('the page opens with the paper example and shows Tab. 2 (left) within 1 s', async () => {
-  // Three cold opens (a new browser context each); the best is the page's opening time here.
-  const times = [];
-  let page;
-  for (let i = 0; i < 3; i++) {
-    if (page) await page.context().close();
-    page = await openPage();
-    times.push(await page.evaluate(() => window.hobsharpTimings.firstResult));
-  }
-  console.log(`first result after opening: ${times.map((t) => t.toFixed(0)).join(', ')} ms`);
-  assert.ok(Math.min(...times) < 1000, `first result at ${times.join(', ')} ms`);
-
+// How fast it opens is measured by ./hobsharp.sh bench (tests/benchmark-page.mjs), not asserted here.
+test('the page opens with the paper example and shows Tab. 2 (left)', async () => {
+  const page = await openPage();
+  console.log(`first result ${(await page.evaluate(() => window.hobsharpTimings.firstResult)).toFixed(0)} ms after opening`);
   const t = await tab2(page, 'nominal');
   assert.equal(t.X, '22.4003 + 139.5089 φ₁');
   assert.equal(t.Y, '39.30757');
