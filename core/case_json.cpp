@@ -11,10 +11,6 @@ namespace {
 
 using Json = nlohmann::json;
 
-Error refuse(const std::string& field, const std::string& reason) {
-  return Error{field, field + ": " + reason};
-}
-
 const char* typeName(const Json& j) {
   if (j.is_null()) return "null";
   if (j.is_boolean()) return "a boolean";

@@ -56,11 +56,11 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
                                    const Eigen::MatrixXd& measured, const CorrectionOptions& o) {
   const FaceGrid& grid = run.grid;
   if (measured.rows() != grid.rows() || measured.cols() != grid.cols())
-    return Error{"measured", "measured: the topography has " + std::to_string(measured.rows()) + " x " +
+    return refuse("measured", "the topography has " + std::to_string(measured.rows()) + " x " +
                                  std::to_string(measured.cols()) + " values; the grid is " +
                                  std::to_string(grid.rows()) + " radial x " +
-                                 std::to_string(grid.cols()) + " axial."};
-  if (!measured.allFinite()) return Error{"measured", "measured: holds a value that is not a finite number."};
+                                 std::to_string(grid.cols()) + " axial.");
+  if (!measured.allFinite()) return refuse("measured", "holds a value that is not a finite number.");
 
   Correction c;
   c.before = topographyFromNormal(run, measured);

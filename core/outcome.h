@@ -13,6 +13,11 @@ struct Error {
   std::string message;  // a whole sentence for the engineer, naming the field and the reason
 };
 
+// The usual refusal: the message begins with the field's name ("hob.gashDepth: must be ...").
+inline Error refuse(const std::string& field, const std::string& reason) {
+  return Error{field, field + ": " + reason};
+}
+
 template <class T>
 class Outcome {
  public:

@@ -19,10 +19,6 @@ std::string num(double v) {
   return s.str();
 }
 
-Error refuse(const std::string& field, const std::string& reason) {
-  return Error{field, field + ": " + reason};
-}
-
 std::optional<Error> positive(const std::string& field, double v, const char* unit) {
   if (!std::isfinite(v)) return refuse(field, "must be a finite number.");
   if (v <= 0) return refuse(field, "must be positive; got " + num(v) + " " + unit + ".");

@@ -37,9 +37,9 @@ Outcome<double> contactCoordinate(const ToothFace& face, const UniversalSettings
     if (std::abs(step) < 1e-15 * (1.0 + std::abs(w))) return w;
   }
   const double radius = std::hypot(u + face.y0Pitch(), face.rakeOffset);
-  return Error{"setup", "setup: no contact between the wheel and the tooth face at radius r = " + mm(radius) +
+  return refuse("setup", "no contact between the wheel and the tooth face at radius r = " + mm(radius) +
                            ": the equation of meshing (Eq. 5) has no solution there. Check the "
-                           "setting angle, tilt and centre distance."};
+                           "setting angle, tilt and centre distance.");
 }
 
 std::vector<double> evenRadii(double rootRadius, double outerRadius, int points) {
@@ -74,9 +74,9 @@ Outcome<WheelProfile> wheelProfile(const ToothFace& face, const UniversalSetting
       const WheelContact<double> c = wheelContact(face, s, normalSign, E, u, *w);
       // Every contact point lies on the same side of the wheel axis as the pitch point.
       if (!(c.r.x() * side.x() + c.r.y() * side.y() > 0.0))
-        return Error{"wheel.outerDiameter",
-                     "wheel.outerDiameter: the wheel is too small for this gash depth: its axis would pass "
-                     "through the tooth face at radius r = " + mm(radii[k]) + "."};
+        return refuse("wheel.outerDiameter",
+                      "the wheel is too small for this gash depth: its axis would pass "
+                      "through the tooth face at radius r = " + mm(radii[k]) + ".");
       p.w[k] = *w;
       p.R[k] = c.R();
       p.Z[k] = c.Z();
@@ -109,10 +109,10 @@ Outcome<double> centerDistanceFromWheelRim(const ToothFace& face, const Universa
       break;
     }
   }
-  return Error{"wheel.outerDiameter",
-               "wheel.outerDiameter: the wheel rim (radius " + mm(wheelRadius) + ") cannot be brought to touch the gash root "
+  return refuse("wheel.outerDiameter",
+                "the wheel rim (radius " + mm(wheelRadius) + ") cannot be brought to touch the gash root "
                "(radius " + mm(rootRadius) + "): no centre distance solves the boundary equation. "
-               "Give setup.centerDistance or change the wheel."};
+               "Give setup.centerDistance or change the wheel.");
 }
 
 }  // namespace hobsharp
