@@ -57,13 +57,14 @@ Module['evaluate'] = function (caseObject) {
   };
   if (r.correction) {
     const c = r.correction;
+    const predicted = hobsharpTopography(c.predicted);
     out.correction = {
       axes: hobsharpAxes(c.axes),
       coefficients: c.coefficients,
       change: Array.from(c.change),
-      residual: hobsharpTopography(c.predicted).normal,
-      residualCircular: hobsharpTopography(c.predicted).circular,
-      measuredCircular: hobsharpTopography(c.measured).circular,
+      residual: predicted.normal,
+      residualCircular: predicted.circular,
+      measuredCircular: hobsharpRows(c.measured.circular, c.measured.rows, c.measured.cols),
       sseBefore: c.sseBefore, sseAfter: c.sseAfter,
       maxBefore: c.measured.max, maxAfter: c.predicted.max,
       thicknessBefore: c.thicknessBefore, thicknessAfter: c.thicknessAfter,

@@ -275,13 +275,9 @@ function schedulePlots() {
     plotsScheduled = false;
     if (!state.result) return;
     const r = state.result;
-    const T = window.hobsharpTimings;
-    T.plotlyReady = T.plotlyReady || performance.now();
     renderAxisPlot(r);
     renderWheel(r);
-    T.linesDrawn = T.linesDrawn || performance.now();
     renderTopography(r);
-    T.topographyDrawn = T.topographyDrawn || performance.now();
     renderSensitivities(r);
     window.hobsharpTimings.plotted = window.hobsharpTimings.plotted || performance.now();
   };
