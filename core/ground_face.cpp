@@ -29,10 +29,9 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
     std::optional<EnvelopePoint> last;
     for (int j = 0; j < grid.cols(); ++j) {
       const GridPoint g = gridPoint(setup, grid.r[i], grid.x[j]);
-      EnvelopeGuess guess = nominalGuess(g, *contactW);
-      if (last) {
-        guess = EnvelopeGuess{last->t, last->phi - (g.w - f.points.back().w), last->u, last->w};
-      }
+      const EnvelopeGuess guess =
+          last ? EnvelopeGuess{last->t, last->phi - (g.w - f.points.back().w), last->u, last->w}
+               : nominalGuess(g, *contactW);
       auto e = solveEnvelopePoint(setup, axes, g, guess, sensitivities);
       if (!e) return e.error();
       last = *e;

@@ -121,10 +121,10 @@ val resultOf(const Evaluation& e) {
   s.set("coefficients", names(e.sensitivities.coefficients));
   s.set("rows", e.sensitivities.rows);
   s.set("cols", e.sensitivities.cols);
-  // Coefficient by coefficient, each a row-major rows x cols topography, µm per unit.
-  Eigen::MatrixXd all(e.sensitivities.rows * e.sensitivities.cols, e.sensitivities.normal.cols());
-  for (int j = 0; j < all.cols(); ++j) all.col(j) = e.sensitivities.normal.col(j);
-  s.set("normal", f64(all.data(), static_cast<size_t>(all.size())));
+  // Coefficient by coefficient (the matrix is column-major), each a row-major rows x cols
+  // topography, µm per unit.
+  const Eigen::MatrixXd& normal = e.sensitivities.normal;
+  s.set("normal", f64(normal.data(), static_cast<size_t>(normal.size())));
   s.set("thickness", f64(Eigen::VectorXd(e.sensitivities.thickness.transpose())));
   o.set("sensitivities", s);
   if (e.correction) o.set("correction", correctionOf(*e.correction));
