@@ -5,7 +5,6 @@
 #include "axis_polynomials.h"
 #include "tooth_face.h"
 #include "universal_settings.h"
-#include "wheel_contact.h"
 
 namespace hobsharp {
 
@@ -13,12 +12,11 @@ struct SharpeningSetup {
   ToothFace face;
   UniversalSettings universal;
   MachineConstants machine;
-  double normalSign = 1.0;  // see outwardNormalSign()
+  double normalSign = 1.0;  // see outwardNormalSign() in wheel_contact.h
 
+  // The setup with its normal sign, which the wheel contact of Eq. 3 fixes at the pitch point.
   static SharpeningSetup make(const ToothFace& face, const UniversalSettings& universal,
-                              const MachineConstants& machine) {
-    return SharpeningSetup{face, universal, machine, outwardNormalSign(face, universal)};
-  }
+                              const MachineConstants& machine);
   double psiC() const { return universal.tilt; }
 };
 

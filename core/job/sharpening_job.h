@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "case_input.h"
+#include "correction.h"
 #include "face_grid.h"
 #include "outcome.h"
 #include "sharpening_setup.h"

@@ -7,13 +7,6 @@
 
 namespace hobsharp {
 
-std::vector<Coefficient> allCoefficients(int degree) {
-  std::vector<Coefficient> c;
-  for (Axis a : kAxes)
-    for (int k = 0; k <= degree; ++k) c.push_back(Coefficient{a, k});
-  return c;
-}
-
 Eigen::MatrixXd SensitivityMatrix::topography(int j) const {
   Eigen::MatrixXd t(rows, cols);
   for (int i = 0; i < rows; ++i)

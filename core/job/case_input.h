@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 
 #include "axis_polynomials.h"
-#include "correction.h"
+#include "coefficient.h"
 #include "tooth_face.h"
 
 namespace hobsharp {

@@ -4,26 +4,15 @@
 // the paper's finite differences.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "axis_polynomials.h"
+#include "coefficient.h"
 #include "ground_face.h"
 
 namespace hobsharp {
-
-// The coefficient a_k of `axis` (Eq. 12), in mm or rad per (rad or mm)^k.
-struct Coefficient {
-  Axis axis = Axis::X;
-  int degree = 0;
-  std::string name() const { return std::string(axisName(axis)) + " a" + std::to_string(degree); }
-  bool operator==(const Coefficient& o) const { return axis == o.axis && degree == o.degree; }
-};
-
-// Every coefficient of degree 0..degree, axis by axis: X a0..an, Y a0..an, ... B a0..an.
-std::vector<Coefficient> allCoefficients(int degree);
 
 struct SensitivityMatrix {
   std::vector<Coefficient> coefficients;

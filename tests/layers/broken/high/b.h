@@ -1,0 +1,2 @@
+// Fixture: a header of the high layer.
+#pragma once

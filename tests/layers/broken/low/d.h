@@ -1,0 +1,3 @@
+// Fixture: d.h and e.h include each other.
+#pragma once
+#include "e.h"
