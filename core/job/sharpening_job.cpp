@@ -3,14 +3,13 @@
 #include <cmath>
 #include <sstream>
 
+#include "units.h"
 #include "universal_settings.h"
 #include "wheel_contact.h"
 #include "wheel_profile.h"
 
 namespace hobsharp {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 std::string num(double v) {
   std::ostringstream s;
@@ -65,7 +64,7 @@ std::optional<Error> checkHob(const HobInput& h) {
     if (h.gashHelixAngle && !(*h.gashHelixAngle > 0 && *h.gashHelixAngle < 90))
       return refuse("hob.gashHelixAngle", "must lie between 0 and 90 deg; got " + num(*h.gashHelixAngle) + " deg.");
     if (h.gashLead && h.gashHelixAngle) {
-      const double fromLead = helixAngleFromLead(*h.gashLead, rp) / kDeg;
+      const double fromLead = helixAngleFromLead(*h.gashLead, rp) * kDegPerRad;
       if (std::abs(fromLead - *h.gashHelixAngle) > 0.01)
         return refuse("hob.gashHelixAngle", num(*h.gashHelixAngle) + " deg disagrees with hob.gashLead " +
                                                 num(*h.gashLead) + " mm, which gives " + num(fromLead) +
@@ -81,7 +80,7 @@ ToothFace toothFace(const HobInput& h) {
   f.pitchRadius = h.pitchDiameter / 2;
   f.rakeOffset = h.rakeOffset;
   if (h.gash == GashKind::Helical) {
-    const double lead = h.gashLead ? *h.gashLead : leadFromHelixAngle(*h.gashHelixAngle * kDeg, f.pitchRadius);
+    const double lead = h.gashLead ? *h.gashLead : leadFromHelixAngle(*h.gashHelixAngle * kRadPerDeg, f.pitchRadius);
     f.screwParameter = screwParameterFromLead(lead) * (h.hand == Hand::Left ? -1.0 : 1.0);
   }
   return f;
@@ -141,8 +140,8 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   const ToothFace face = toothFace(in.hob);
 
   job.settingAngleDerived = !in.settingAngle;
-  const double gamma = in.settingAngle ? *in.settingAngle * kDeg : defaultSettingAngle(face);
-  UniversalSettings universal = constantUniversalSettings(face, in.tilt * kDeg, gamma, 0.0);
+  const double gamma = in.settingAngle ? *in.settingAngle * kRadPerDeg : defaultSettingAngle(face);
+  UniversalSettings universal = constantUniversalSettings(face, in.tilt * kRadPerDeg, gamma, 0.0);
   const double sign = outwardNormalSign(face, universal);
   job.centerDistanceDerived = !in.centerDistance;
   if (in.centerDistance) {

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "rotations.h"
+#include "units.h"
 
 namespace hobsharp {
 
@@ -58,12 +59,12 @@ struct ToothFace {
 };
 
 // Lead <-> gash helix angle at the pitch radius: tan(helix) = r_p / p.
-inline double screwParameterFromLead(double lead) { return lead / (2 * M_PI); }
+inline double screwParameterFromLead(double lead) { return lead / (2 * kPi); }
 inline double helixAngleFromLead(double lead, double pitchRadius) {
   return std::atan(pitchRadius / screwParameterFromLead(lead));
 }
 inline double leadFromHelixAngle(double helixAngle, double pitchRadius) {
-  return 2 * M_PI * pitchRadius / std::tan(helixAngle);
+  return 2 * kPi * pitchRadius / std::tan(helixAngle);
 }
 
 }  // namespace hobsharp
