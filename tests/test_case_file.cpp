@@ -1,4 +1,4 @@
-// Every bad-input rule of shared/case-format.md: refused with a message that names the field and
+// Every bad-input rule of docs/case-format.md: refused with a message that names the field and
 // the reason, and nothing crashes.
 #include <functional>
 #include <limits>

@@ -55,7 +55,7 @@ TEST(Correction, ReportsXAgainstAAsUnobservable) {
                           topographyFor(job, machineError(nominal)).normal, CorrectionOptions{});
   ASSERT_TRUE(c.ok());
   ASSERT_EQ(c->singularValues.size(), 25);
-  EXPECT_LT(c->singularValues(20), 1e-12 * c->singularValues(0));  // exactly rank 20 (MODEL.md)
+  EXPECT_LT(c->singularValues(20), 1e-12 * c->singularValues(0));  // exactly rank 20 (docs/conventions.md §What the grid can see)
   EXPECT_GT(c->singularValues(19), 1e-5 * c->singularValues(0));
   ASSERT_EQ(c->unobservable.size(), 5u);
   const double p = job.setup.face.screwParameter;

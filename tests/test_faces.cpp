@@ -1,5 +1,5 @@
 // Hands, gashes and rake offsets: nominal settings reproduce every face, a left-hand hob is the
-// mirror of a right-hand one, and a straight gash behaves as MODEL.md says.
+// mirror of a right-hand one, and a straight gash behaves as docs/conventions.md §Straight gash says.
 #include <cmath>
 #include <random>
 
@@ -104,7 +104,7 @@ TEST(Faces, StraightGash) {
   const SharpeningJob job = jobOf(straightCase());
   EXPECT_FALSE(job.setup.face.helical());
   const AxisPolynomials& a = job.nominalAxes;
-  // MODEL.md: A stays constant, X = s + K1 tan(0), gamma_m = 0.
+  // docs/conventions.md §Straight gash: A stays constant, X = s + K1 tan(0), gamma_m = 0.
   EXPECT_EQ(a[Axis::A].a[0], 0.0);
   EXPECT_EQ(a[Axis::A].a[1], 0.0);
   EXPECT_EQ(a[Axis::X].a[0], 0.0);

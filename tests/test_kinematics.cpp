@@ -18,7 +18,7 @@ using Eigen::AngleAxisd;
 using Eigen::Translation3d;
 using Eigen::Vector3d;
 
-// The paper's matrices of Eq. 3 (with MODEL.md's errata), typed in independently.
+// The paper's matrices of Eq. 3 (with the fixes of docs/errata.md), typed in independently.
 Affine3d paperMt1(double eta, double gamma, double E, double L, double phi) {
   Affine3d Mtc = Affine3d::Identity(), Mcb = Affine3d::Identity(), Ma1 = Affine3d::Identity();
   Mtc.linear() << 1, 0, 0, 0, std::cos(eta), std::sin(eta), 0, -std::sin(eta), std::cos(eta);

@@ -1,4 +1,4 @@
-// The paper's numerical example (Tab. 1) against Tab. 2 (left) and the tables of MODEL.md.
+// The paper's numerical example (Tab. 1) against Tab. 2 (left) and the reference figures of docs/conventions.md.
 #include <cmath>
 
 #include "test_support.h"
@@ -35,7 +35,7 @@ TEST(PaperExample, CentreDistanceFromTheBoundaryEquation) {
   const double E = job.setup.universal.centerDistance.coefficient(0);
   EXPECT_NEAR(E, 69.446175, 5e-7);
   EXPECT_NEAR(E, 69.446, 0.0005);  // the paper's figure
-  // With it the rim touches the root exactly, and Y a0 follows (MODEL.md: 39.307743).
+  // With it the rim touches the root exactly, and Y a0 follows (docs/conventions.md §Tab. 2, left: 39.307743).
   auto rim = wheelProfile(job.setup.face, job.setup.universal, job.setup.normalSign, {19.0});
   ASSERT_TRUE(rim.ok());
   EXPECT_NEAR(rim->R[0], 50.0, 1e-9);
@@ -47,8 +47,8 @@ TEST(PaperExample, DefaultSettingAngleIsTheGashHelixAngle) {
   c.settingAngle.reset();
   const SharpeningJob job = jobOf(c);
   EXPECT_TRUE(job.settingAngleDerived);
-  // tan(gamma_m) = r_p / p gives 12.625843 deg; the paper prints 12.626. (MODEL.md's "12.6261"
-  // does not follow from its own formula; the formula is what is pinned here.)
+  // tan(gamma_m) = r_p / p gives 12.625843 deg; the paper prints 12.626. (An earlier "12.6261"
+  // does not follow from the formula, docs/errata.md; the formula is what is pinned here.)
   const double gamma = job.setup.universal.settingAngle.coefficient(0);
   EXPECT_NEAR(std::tan(gamma), 31.25 / (876.56 / (2 * M_PI)), 1e-15);
   EXPECT_NEAR(gamma * 180 / M_PI, 12.626, 5e-4);
@@ -95,7 +95,7 @@ TEST(PaperExample, NominalAxesGiveZeroDeviation) {
   EXPECT_LT(std::abs(t.thickness), 1e-6);
 }
 
-// MODEL.md, "What the sensitivities look like": the topography after one zero-degree change.
+// docs/conventions.md §Sensitivities: the topography after one zero-degree change.
 TEST(PaperExample, SensitivityTable) {
   const SharpeningJob job = jobOf(paperCase());
   struct Row {
@@ -118,7 +118,7 @@ TEST(PaperExample, SensitivityTable) {
   }
 }
 
-// MODEL.md: measured along the circle, X and A zero-degree changes are uniform over the face.
+// docs/conventions.md §What the grid can see: measured along the circle, X and A zero-degree changes are uniform over the face.
 TEST(PaperExample, CircularViewOfXAndAChangesIsUniform) {
   const SharpeningJob job = jobOf(paperCase());
   for (auto [axis, change] : {std::pair{Axis::X, 0.1}, std::pair{Axis::A, 0.01}}) {

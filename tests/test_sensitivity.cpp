@@ -60,7 +60,7 @@ TEST(Sensitivity, StraightGash) {
   c.centerDistance.reset();
   const SharpeningJob job = jobOf(c);
   expectMatchesCentralDifferences(job, job.nominalAxes);
-  // MODEL.md: X moves along the gash plane, so its columns vanish.
+  // docs/conventions.md §What the grid can see: X moves along the gash plane, so its columns vanish.
   const SensitivityMatrix S = sensitivityMatrix(groundFaceOf(job, job.nominalAxes), allCoefficients(4));
   for (int k = 0; k <= 4; ++k) EXPECT_LT(S.normal.col(k).cwiseAbs().maxCoeff(), 1e-9);
   EXPECT_GT(S.normal.col(10).cwiseAbs().maxCoeff(), 100.0);  // Z a0: about 1000 µm/mm

@@ -1,4 +1,4 @@
-// The measuring grid on the nominal tooth face (MODEL.md "Grid"): rows run radially from root to
+// The measuring grid on the nominal tooth face (docs/conventions.md §Grid): rows run radially from root to
 // tip, columns axially from xMin to xMax, both evenly spaced with the ends included.
 #pragma once
 

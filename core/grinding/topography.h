@@ -1,4 +1,4 @@
-// The deviation topography of the ground face (MODEL.md "Sign" and "Thickness"), in µm:
+// The deviation topography of the ground face (docs/conventions.md §Sign, §Thickness), in µm:
 //   normal   - signed distance from the nominal face along its outward normal, plus = excess material;
 //   circular - the same deviation measured along the circle about the hob axis, as an angle
 //              expressed in µm of arc at the mean radius (so a rigid turn of the face is uniform);

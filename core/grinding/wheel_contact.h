@@ -1,6 +1,6 @@
 // The tooth face seen from the wheel at w = 0 (Eqs. 3-4) and the equation of meshing (Eq. 5).
-// The wheel is the surface of revolution about z_t swept by this contact line; MODEL.md Eq. 6
-// gives its axial profile (R, Z) = (sqrt(x_t^2 + y_t^2), z_t).
+// The wheel is the surface of revolution about z_t swept by this contact line; Eq. 6
+// (docs/errata.md) gives its axial profile (R, Z) = (sqrt(x_t^2 + y_t^2), z_t).
 #pragma once
 
 #include <cmath>
@@ -14,7 +14,7 @@ namespace hobsharp {
 template <class T>
 struct WheelContact {
   Vec3<T> r;  // r_t: the face point in S_t
-  Vec3<T> n;  // n_t: unit normal in S_t, outward from the tooth material (MODEL.md "Sign")
+  Vec3<T> n;  // n_t: unit normal in S_t, outward from the tooth material (docs/conventions.md §Sign)
   T meshing;  // f_t = n_t . (z_t x r_t), Eq. 5; zero on the contact line
   T R() const {
     using std::sqrt;

@@ -1,4 +1,4 @@
-// The wheel's axial profile (MODEL.md Eq. 6): for every radius of the tooth face from the gash
+// The wheel's axial profile (Eq. 6, docs/errata.md): for every radius of the tooth face from the gash
 // root to the tip, the contact point of Eq. 5 at w = 0 and its wheel radius R and axial position Z.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Reads a `hobsharp-case/1` document (shared/case-format.md) into typed values. Text in, typed
+// Reads a `hobsharp-case/1` document (docs/case-format.md) into typed values. Text in, typed
 // CaseInput or an Error naming the field out; nothing throws. Value rules are checked later by
 // resolveJob(); here only presence, type, finiteness, shape and unknown names.
 #pragma once

@@ -1,4 +1,4 @@
-// A sharpening job as the case file `hobsharp-case/1` states it (shared/case-format.md), in the
+// A sharpening job as the case file `hobsharp-case/1` states it (docs/case-format.md), in the
 // file's units: lengths in mm, angles in degrees, coefficients in SI with the motion parameter,
 // deviations in µm. Optional fields are empty when the file leaves them out.
 #pragma once

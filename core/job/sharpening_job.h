@@ -1,4 +1,4 @@
-// A validated job: the case input checked against every rule of case-format.md, with every
+// A validated job: the case input checked against every rule of docs/case-format.md, with every
 // missing setting derived (setting angle, centre distance, grid, axes).
 #pragma once
 

@@ -1,6 +1,6 @@
 // The five-axis machine of Eq. 7 read backwards: where a point fixed to the hob sits in the
 // wheel frame S_t, and how fast it moves there with the motion parameter.
-//   M_1t = M_1d(psi_a) M_de(C_x, C_y) M_ef(psi_b) M_fg(psi_c) M_gt(C_z), with (MODEL.md errata)
+//   M_1t = M_1d(psi_a) M_de(C_x, C_y) M_ef(psi_b) M_fg(psi_c) M_gt(C_z), with (docs/errata.md §Eq. 7)
 //   M_1d = Rx(-A), M_de = T(-X, Y, K1), M_ef = Ry(-B), M_fg = T(0, 0, K2) Rx(psi_c), M_gt = T(0, 0, Z).
 // Its inverse: q = T(0,0,-Z) Rx(-psi_c) T(0,0,-K2) Ry(B) [Rx(A) G + (X, -Y, -K1)].
 #pragma once

@@ -1,4 +1,4 @@
-// The tooth (rake) face of the hob gash, Eqs. 1-2, and the straight gash of MODEL.md.
+// The tooth (rake) face of the hob gash, Eqs. 1-2, and the straight gash (docs/conventions.md §Straight gash).
 //
 // Helical gash: the screw surface of the straight line of Eq. 1,
 //   r1(u, beta) = (p beta, y0 cos beta - e sin beta, y0 sin beta + e cos beta),
