@@ -23,11 +23,11 @@ std::string unitOf(const Coefficient& c, bool helical) {
 
 UnobservableCombination combination(const std::vector<Coefficient>& coefficients,
                                     const Eigen::VectorXd& scaledDirection,
-                                    const Eigen::VectorXd& columnScale, bool helical) {
+                                    const Eigen::VectorXd& columnScale, bool helical, double listedShare) {
   UnobservableCombination u;
   const double largest = scaledDirection.cwiseAbs().maxCoeff();
   for (int j = 0; j < scaledDirection.size(); ++j) {
-    if (std::abs(scaledDirection(j)) < 1e-3 * largest) continue;
+    if (std::abs(scaledDirection(j)) < listedShare * largest) continue;
     u.coefficients.push_back(coefficients[j]);
     u.amounts.push_back(scaledDirection(j) * columnScale(j));
   }
@@ -90,7 +90,7 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
     const double n = As.col(j).norm();
     if (n <= o.negligible * largest) {
       Eigen::VectorXd e = Eigen::VectorXd::Unit(q, j);
-      c.unobservable.push_back(combination(c.coefficients, e, scale, helical));
+      c.unobservable.push_back(combination(c.coefficients, e, scale, helical, o.listedShare));
     } else {
       scale(j) /= n;
       active.push_back(j);
@@ -120,7 +120,7 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
       } else {
         Eigen::VectorXd v = Eigen::VectorXd::Zero(q);
         for (size_t k = 0; k < active.size(); ++k) v(active[k]) = svd.matrixV()(k, i);
-        c.unobservable.push_back(combination(c.coefficients, v, scale, helical));
+        c.unobservable.push_back(combination(c.coefficients, v, scale, helical, o.listedShare));
       }
     }
     for (size_t k = 0; k < active.size(); ++k) c.change(active[k]) = y(k) * scale(active[k]);
@@ -143,7 +143,7 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
   c.uncorrectableShare = c.before.sse > 0 ? c.after.sse / c.before.sse : 0.0;
   std::ostringstream v;
   v.precision(3);
-  if (c.uncorrectableShare <= 1e-3) {
+  if (c.uncorrectableShare <= o.correctableShare) {
     v << "Correctable: the axes can cancel the measured deviation (predicted sum of squares "
       << c.after.sse << " µm², from " << c.before.sse << " µm²).";
   } else {

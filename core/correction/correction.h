@@ -16,6 +16,7 @@
 
 namespace hobsharp {
 
+// How the correction step treats the sensitivity matrix. The ratios are dimensionless.
 struct CorrectionOptions {
   // Singular values below truncation * (largest) are dropped; the combinations they belong to
   // are reported as unobservable.
@@ -27,6 +28,12 @@ struct CorrectionOptions {
   // Before scaling, a column whose norm is below negligible * (largest) is unobservable on its own
   // (moving along a straight gash, say), so that scaling does not blow noise up to unit norm.
   double negligible = 1e-9;
+  // An unobservable combination is described by the coefficients whose share of its (scaled)
+  // direction is at least listedShare * (the largest share); the others are left out of the words.
+  double listedShare = 1e-3;
+  // The verdict is "correctable" when the predicted sum of squares is at most
+  // correctableShare * (the measured one).
+  double correctableShare = 1e-3;
   // Coefficients left as they are. A locked axis is all of its coefficients.
   std::vector<Coefficient> locked;
   std::vector<Axis> lockedAxes;

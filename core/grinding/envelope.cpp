@@ -13,7 +13,6 @@
 namespace hobsharp {
 namespace {
 
-constexpr int kMaxIterations = 40;
 // Independent variables of the full derivative: t, u, w, five axis values, five axis rates.
 constexpr int kVars = 3 + 2 * kAxisCount;
 using D = Dual<kVars>;
@@ -121,25 +120,27 @@ EnvelopeGuess nominalGuess(const GridPoint& point, double contactW) {
 
 Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
                                           const GridPoint& point, const EnvelopeGuess& guess,
-                                          Sensitivities sensitivities) {
+                                          Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
   EnvelopeGuess v = guess;
-  const double angleLimit = setup.face.helical() ? 0.1 : 5.0;  // per-step limits, rad or mm
-  for (int it = 1; it <= kMaxIterations; ++it) {
+  const bool helical = setup.face.helical();
+  const double motionLimit = helical ? o.helicalMotionStepLimit : o.straightMotionStepLimit;
+  const double motionWeight = helical ? o.helicalMotionWeight : o.straightMotionWeight;
+  for (int it = 1; it <= o.maxIterations; ++it) {
     const Linearisation L = linearise(setup, axes, point, v);
     if (!L.F.allFinite() || !L.J.allFinite()) break;
     const Eigen::PartialPivLU<Eigen::Matrix4d> lu(L.J);
     Eigen::Vector4d step = lu.solve(L.F);
     if (!step.allFinite()) break;
-    const double scale = std::max({std::abs(step(0)) / 1.0, std::abs(step(1)) / angleLimit,
-                                   std::abs(step(2)) / 5.0, std::abs(step(3)) / angleLimit, 1.0});
+    const double scale = std::max({std::abs(step(0)) / o.offsetStepLimit, std::abs(step(1)) / motionLimit,
+                                   std::abs(step(2)) / o.lineStepLimit, std::abs(step(3)) / motionLimit, 1.0});
     step /= scale;
     v.t -= step(0);
     v.phi -= step(1);
     v.u -= step(2);
     v.w -= step(3);
-    const double size = std::abs(step(0)) + std::abs(step(2)) +
-                        (std::abs(step(1)) + std::abs(step(3))) * (setup.face.helical() ? 50.0 : 1.0);
-    if (scale == 1.0 && size < 1e-11) {
+    const double size =
+        std::abs(step(0)) + std::abs(step(2)) + (std::abs(step(1)) + std::abs(step(3))) * motionWeight;
+    if (scale == 1.0 && size < o.stepTolerance) {
       EnvelopePoint e;
       e.t = v.t;
       e.phi = v.phi;

@@ -38,9 +38,28 @@ struct EnvelopePoint {
   double sensitivity(Axis axis, int k) const;
 };
 
+// How Newton's method solves the four equations above for (t, phi, u, w) at one grid point.
+// "Motion" means phi and w: angles in rad for a helical gash, travels in mm for a straight one.
+struct EnvelopeSolverOptions {
+  // Newton steps tried before the grid point is reported as not solvable.
+  int maxIterations = 40;
+  // Step limits: a Newton step that exceeds any of them is shortened, all four unknowns together,
+  // until none is exceeded; a shortened step never ends the solve.
+  double offsetStepLimit = 1.0;           // mm, on t
+  double lineStepLimit = 5.0;             // mm, on u
+  double helicalMotionStepLimit = 0.1;    // rad, on phi and on w (helical gash)
+  double straightMotionStepLimit = 5.0;   // mm, on phi and on w (straight gash)
+  // The solve ends when a full step is small: |dt| + |du| + weight * (|dphi| + |dw|) below
+  // stepTolerance, in mm. The weight turns the motion steps into mm.
+  double helicalMotionWeight = 50.0;      // mm/rad (helical gash)
+  double straightMotionWeight = 1.0;      // mm/mm (straight gash)
+  double stepTolerance = 1e-11;           // mm
+};
+
 Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
                                           const GridPoint& point, const EnvelopeGuess& guess,
-                                          Sensitivities sensitivities = Sensitivities::Compute);
+                                          Sensitivities sensitivities = Sensitivities::Compute,
+                                          const EnvelopeSolverOptions& options = {});
 
 // The guess from the nominal screw motion: the wheel touches (u, w) when w + phi = w*(u).
 EnvelopeGuess nominalGuess(const GridPoint& point, double contactW);

@@ -15,7 +15,8 @@ Outcome<double> contactAt(const SharpeningSetup& s, double r) {
 }  // namespace
 
 Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisPolynomials& axes,
-                                       const FaceGrid& grid, Sensitivities sensitivities) {
+                                       const FaceGrid& grid, Sensitivities sensitivities,
+                                       const EnvelopeSolverOptions& options) {
   GroundFace f;
   f.gash = setup.face.gash;
   f.grid = grid;
@@ -32,7 +33,7 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
       const EnvelopeGuess guess =
           last ? EnvelopeGuess{last->t, last->phi - (g.w - f.points.back().w), last->u, last->w}
                : nominalGuess(g, *contactW);
-      auto e = solveEnvelopePoint(setup, axes, g, guess, sensitivities);
+      auto e = solveEnvelopePoint(setup, axes, g, guess, sensitivities, options);
       if (!e) return e.error();
       last = *e;
       f.points.push_back(g);
@@ -42,7 +43,8 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
   auto contactW = contactAt(setup, grid.rMean());
   if (!contactW) return contactW.error();
   f.meanPoint = gridPoint(setup, grid.rMean(), grid.xMean());
-  auto e = solveEnvelopePoint(setup, axes, f.meanPoint, nominalGuess(f.meanPoint, *contactW), sensitivities);
+  auto e = solveEnvelopePoint(setup, axes, f.meanPoint, nominalGuess(f.meanPoint, *contactW), sensitivities,
+                              options);
   if (!e) return e.error();
   f.meanEnvelope = *e;
   return f;

@@ -21,6 +21,7 @@ struct GroundFace {
 
 // With Sensitivities::Skip the envelope points carry no derivatives (a plot-only topography).
 Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisPolynomials& axes,
-                                       const FaceGrid& grid, Sensitivities sensitivities = Sensitivities::Compute);
+                                       const FaceGrid& grid, Sensitivities sensitivities = Sensitivities::Compute,
+                                       const EnvelopeSolverOptions& options = {});
 
 }  // namespace hobsharp

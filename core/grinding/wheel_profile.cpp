@@ -11,8 +11,6 @@
 namespace hobsharp {
 namespace {
 
-constexpr int kMaxIterations = 50;
-
 std::string mm(double v) {
   std::ostringstream s;
   s.precision(6);
@@ -23,18 +21,19 @@ std::string mm(double v) {
 }  // namespace
 
 Outcome<double> contactCoordinate(const ToothFace& face, const UniversalSettings& s,
-                                  double normalSign, double u, double wGuess) {
+                                  double normalSign, double u, double wGuess,
+                                  const ContactSolverOptions& options) {
   const double E = s.centerDistance.coefficient(0);
   double w = wGuess;
-  for (int i = 0; i < kMaxIterations; ++i) {
+  for (int i = 0; i < options.maxIterations; ++i) {
     const WheelContact<Dual<1>> c = wheelContact(face, s, normalSign, E, Dual<1>(u), variable<1>(w, 0));
     const double f = c.meshing.value(), df = c.meshing.derivatives()(0);
     if (!std::isfinite(f) || !std::isfinite(df) || df == 0.0) break;
     double step = f / df;
-    const double limit = face.helical() ? 0.2 : 10.0;  // keep to the branch near the guess
+    const double limit = face.helical() ? options.helicalStepLimit : options.straightStepLimit;
     if (std::abs(step) > limit) step = std::copysign(limit, step);
     w -= step;
-    if (std::abs(step) < 1e-15 * (1.0 + std::abs(w))) return w;
+    if (std::abs(step) < options.relativeStepTolerance * (1.0 + std::abs(w))) return w;
   }
   const double radius = std::hypot(u + face.y0Pitch(), face.rakeOffset);
   return refuse("setup", "no contact between the wheel and the tooth face at radius r = " + mm(radius) +
@@ -50,12 +49,13 @@ std::vector<double> evenRadii(double rootRadius, double outerRadius, int points)
 }
 
 Outcome<WheelProfile> wheelProfile(const ToothFace& face, const UniversalSettings& s,
-                                   double normalSign, const std::vector<double>& radii) {
+                                   double normalSign, const std::vector<double>& radii,
+                                   const ContactSolverOptions& options) {
   WheelProfile p;
   const double E = s.centerDistance.coefficient(0);
   const int points = static_cast<int>(radii.size());
   // Start at the pitch radius, where the contact coordinate is near zero, and continue outwards.
-  auto pitchStart = contactCoordinate(face, s, normalSign, 0.0);
+  auto pitchStart = contactCoordinate(face, s, normalSign, 0.0, 0.0, options);
   if (!pitchStart) return pitchStart.error();
   p.r = radii;
   p.w.assign(points, 0.0);
@@ -69,7 +69,7 @@ Outcome<WheelProfile> wheelProfile(const ToothFace& face, const UniversalSetting
     double guess = *pitchStart;
     for (int k = dir > 0 ? start : start - 1; k >= 0 && k < points; k += dir) {
       const double u = face.uAtRadius(radii[k]);
-      auto w = contactCoordinate(face, s, normalSign, u, guess);
+      auto w = contactCoordinate(face, s, normalSign, u, guess, options);
       if (!w) return w.error();
       const WheelContact<double> c = wheelContact(face, s, normalSign, E, u, *w);
       // Every contact point lies on the same side of the wheel axis as the pitch point.
@@ -88,11 +88,11 @@ Outcome<WheelProfile> wheelProfile(const ToothFace& face, const UniversalSetting
 
 Outcome<double> centerDistanceFromWheelRim(const ToothFace& face, const UniversalSettings& s,
                                            double normalSign, double rootRadius,
-                                           double wheelRadius) {
+                                           double wheelRadius, const RimSolverOptions& options) {
   const double u = face.uAtRadius(rootRadius);
   // Start from the wheel radius plus the root radius: the exact answer for eta = gamma_m = 0.
   Eigen::Vector2d x(0.0, wheelRadius + rootRadius);
-  for (int i = 0; i < kMaxIterations; ++i) {
+  for (int i = 0; i < options.maxIterations; ++i) {
     const Dual<2> w = variable<2>(x(0), 0), E = variable<2>(x(1), 1);
     const WheelContact<Dual<2>> c = wheelContact(face, s, normalSign, E, Dual<2>(u), w);
     const Dual<2> rim = c.R() - wheelRadius;
@@ -104,7 +104,7 @@ Outcome<double> centerDistanceFromWheelRim(const ToothFace& face, const Universa
     const Eigen::Vector2d step = J.fullPivLu().solve(F);
     if (!step.allFinite()) break;
     x -= step;
-    if (step.norm() < 1e-13 * (1.0 + x.norm())) {
+    if (step.norm() < options.relativeStepTolerance * (1.0 + x.norm())) {
       if (x(1) > 0.0) return x(1);
       break;
     }

@@ -59,5 +59,8 @@ struct CaseInput {
 constexpr int kMaxGridLines = 201;
 // How far a grid may reach past the face (root, tip, hob ends), mm.
 constexpr double kGridTolerance = 1e-3;
+// How far the helix angle given by hob.gashLead may differ from hob.gashHelixAngle when the case
+// gives both, deg.
+constexpr double kHelixAngleAgreement = 0.01;
 
 }  // namespace hobsharp

@@ -65,7 +65,7 @@ std::optional<Error> checkHob(const HobInput& h) {
       return refuse("hob.gashHelixAngle", "must lie between 0 and 90 deg; got " + num(*h.gashHelixAngle) + " deg.");
     if (h.gashLead && h.gashHelixAngle) {
       const double fromLead = helixAngleFromLead(*h.gashLead, rp) * kDegPerRad;
-      if (std::abs(fromLead - *h.gashHelixAngle) > 0.01)
+      if (std::abs(fromLead - *h.gashHelixAngle) > kHelixAngleAgreement)
         return refuse("hob.gashHelixAngle", num(*h.gashHelixAngle) + " deg disagrees with hob.gashLead " +
                                                 num(*h.gashLead) + " mm, which gives " + num(fromLead) +
                                                 " deg at the pitch diameter. Give one of the two.");

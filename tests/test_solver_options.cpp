@@ -1,0 +1,132 @@
+// The solvers' options structs: their defaults are the figures the results were pinned with, and
+// each member that the tests can reach changes what the solver does.
+#include <cmath>
+
+#include "correction.h"
+#include "test_support.h"
+#include "wheel_profile.h"
+
+namespace hobsharp::test {
+namespace {
+
+// A run with an error of the paper's size, so that every grid point takes several Newton steps.
+AxisPolynomials runWithError(const AxisPolynomials& nominal) {
+  AxisPolynomials a = nominal;
+  a[Axis::Y].a[0] += 0.01;
+  a[Axis::Z].a[1] += 0.003;
+  a[Axis::A].a[0] += 0.0002;
+  a[Axis::B].a[2] += 0.001;
+  return a;
+}
+
+int totalIterations(const GroundFace& f) {
+  int n = 0;
+  for (const EnvelopePoint& e : f.envelope) n += e.iterations;
+  return n;
+}
+
+TEST(SolverOptions, DefaultEnvelopeOptionsAreTheDefaultSolve) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials run = runWithError(job.nominalAxes);
+  auto implicit = simulateGroundFace(job.setup, run, job.grid);
+  auto explicitDefaults =
+      simulateGroundFace(job.setup, run, job.grid, Sensitivities::Compute, EnvelopeSolverOptions{});
+  ASSERT_TRUE(implicit.ok() && explicitDefaults.ok());
+  for (size_t k = 0; k < implicit->envelope.size(); ++k) {
+    EXPECT_EQ(implicit->envelope[k].t, explicitDefaults->envelope[k].t);
+    EXPECT_EQ(implicit->envelope[k].iterations, explicitDefaults->envelope[k].iterations);
+  }
+  EXPECT_GT(totalIterations(*implicit), 2 * static_cast<int>(implicit->envelope.size()));
+}
+
+TEST(SolverOptions, EnvelopeIterationLimitAndStepLimitsAreHonoured) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials run = runWithError(job.nominalAxes);
+  EnvelopeSolverOptions once;
+  once.maxIterations = 1;
+  auto f = simulateGroundFace(job.setup, run, job.grid, Sensitivities::Skip, once);
+  ASSERT_FALSE(f.ok());
+  EXPECT_EQ(f.error().field, "grid");
+
+  // Steps cut to 1e-9 mm in t cannot reach a deviation of some µm within the default 40 steps.
+  EnvelopeSolverOptions crawling;
+  crawling.offsetStepLimit = 1e-9;
+  auto g = simulateGroundFace(job.setup, run, job.grid, Sensitivities::Skip, crawling);
+  ASSERT_FALSE(g.ok());
+  EXPECT_EQ(g.error().field, "grid");
+}
+
+TEST(SolverOptions, ALooserEnvelopeToleranceStopsSoonerNearTheSameFace) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials run = runWithError(job.nominalAxes);
+  EnvelopeSolverOptions loose;
+  loose.stepTolerance = 1e-4;  // mm
+  auto tight = simulateGroundFace(job.setup, run, job.grid, Sensitivities::Skip);
+  auto rough = simulateGroundFace(job.setup, run, job.grid, Sensitivities::Skip, loose);
+  ASSERT_TRUE(tight.ok() && rough.ok());
+  EXPECT_LT(totalIterations(*rough), totalIterations(*tight));
+  for (size_t k = 0; k < tight->envelope.size(); ++k)
+    EXPECT_NEAR(rough->envelope[k].t, tight->envelope[k].t, 1e-4) << "grid point " << k;
+}
+
+TEST(SolverOptions, ContactAndRimIterationLimitsAreHonoured) {
+  const SharpeningJob job = jobOf(paperCase());
+  const SharpeningSetup& s = job.setup;
+  ContactSolverOptions once;
+  once.maxIterations = 1;
+  auto p = wheelProfile(s.face, s.universal, s.normalSign, {19.0, 40.0}, once);
+  ASSERT_FALSE(p.ok());
+  EXPECT_NE(p.error().message.find("no contact"), std::string::npos) << p.error().message;
+  ASSERT_TRUE(wheelProfile(s.face, s.universal, s.normalSign, {19.0, 40.0}).ok());
+
+  RimSolverOptions twice;
+  twice.maxIterations = 2;
+  auto E = centerDistanceFromWheelRim(s.face, s.universal, s.normalSign, 19.0, 50.0, twice);
+  ASSERT_FALSE(E.ok());
+  EXPECT_EQ(E.error().field, "wheel.outerDiameter");
+  auto exact = centerDistanceFromWheelRim(s.face, s.universal, s.normalSign, 19.0, 50.0);
+  ASSERT_TRUE(exact.ok());
+  EXPECT_NEAR(*exact, 69.446175, 5e-7);  // docs/conventions.md §Centre distance
+}
+
+TEST(SolverOptions, CorrectableShareDecidesTheVerdict) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials& nominal = job.nominalAxes;
+  const FaceGrid& g = job.grid;
+  Eigen::MatrixXd shape(g.rows(), g.cols());  // a second-degree radial shape: partly uncorrectable
+  for (int i = 0; i < g.rows(); ++i) {
+    const double z = (g.r[i] - g.rMean()) / (0.5 * (g.r.back() - g.r.front()));
+    shape.row(i).setConstant(10.0 * z * z);
+  }
+  const GroundFace face = groundFaceOf(job, nominal);
+  auto strict = correctionStep(face, nominal, shape, CorrectionOptions{});
+  CorrectionOptions lenient;
+  lenient.correctableShare = 0.99;
+  auto relaxed = correctionStep(face, nominal, shape, lenient);
+  ASSERT_TRUE(strict.ok() && relaxed.ok());
+  EXPECT_NE(strict->verdict.find("uncorrectable"), std::string::npos) << strict->verdict;
+  EXPECT_NE(relaxed->verdict.find("Correctable"), std::string::npos) << relaxed->verdict;
+  EXPECT_EQ(relaxed->uncorrectableShare, strict->uncorrectableShare);
+}
+
+TEST(SolverOptions, ListedShareDecidesWhichCoefficientsDescribeACombination) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials& nominal = job.nominalAxes;
+  const Eigen::MatrixXd measured = topographyFor(job, runWithError(nominal)).normal;
+  const GroundFace face = groundFaceOf(job, nominal);
+  auto usual = correctionStep(face, nominal, measured, CorrectionOptions{});
+  CorrectionOptions everything;
+  everything.listedShare = 0;  // every coefficient of the direction, however small its share
+  auto all = correctionStep(face, nominal, measured, everything);
+  ASSERT_TRUE(usual.ok() && all.ok());
+  ASSERT_EQ(usual->unobservable.size(), all->unobservable.size());
+  size_t usualCount = 0, allCount = 0;
+  for (size_t k = 0; k < usual->unobservable.size(); ++k) {
+    usualCount += usual->unobservable[k].coefficients.size();
+    allCount += all->unobservable[k].coefficients.size();
+  }
+  EXPECT_GT(allCount, usualCount);
+}
+
+}  // namespace
+}  // namespace hobsharp::test
