@@ -52,7 +52,7 @@ class Node {
     return it == j_.end() ? nullptr : &*it;
   }
 
-  std::optional<Error> onlyKnown(std::initializer_list<const char*> known) const {
+  Outcome<void> onlyKnown(std::initializer_list<const char*> known) const {
     for (auto it = j_.begin(); it != j_.end(); ++it) {
       if (std::none_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; })) {
         std::string list;
@@ -60,7 +60,7 @@ class Node {
         return refuse(field(it.key().c_str()), "unknown field (expected one of: " + list + ").");
       }
     }
-    return std::nullopt;
+    return success();
   }
 
   Outcome<Node> object(const char* key, bool required) const {
@@ -75,47 +75,43 @@ class Node {
   }
 
   // A required number, or an optional one (empty when absent).
-  std::optional<Error> number(const char* key, double* out) const {
+  Outcome<double> number(const char* key) const {
     const Json* v = find(key);
     if (!v) return refuse(field(key), "is missing.");
-    return toNumber(*v, field(key), out);
+    return toNumber(*v, field(key));
   }
-  std::optional<Error> number(const char* key, std::optional<double>* out) const {
+  Outcome<std::optional<double>> optionalNumber(const char* key) const {
     const Json* v = find(key);
-    if (!v) return std::nullopt;
-    double d = 0;
-    if (auto e = toNumber(*v, field(key), &d)) return e;
-    *out = d;
-    return std::nullopt;
+    if (!v) return std::optional<double>();
+    auto d = toNumber(*v, field(key));
+    if (!d) return d.error();
+    return std::optional<double>(*d);
   }
-  std::optional<Error> integer(const char* key, std::optional<int>* out) const {
-    std::optional<double> d;
-    if (auto e = number(key, &d)) return e;
-    if (!d) return std::nullopt;
-    if (*d != std::floor(*d) || std::abs(*d) > 1e9)
+  Outcome<std::optional<int>> optionalInteger(const char* key) const {
+    auto d = optionalNumber(key);
+    if (!d) return d.error();
+    if (!*d) return std::optional<int>();
+    if (**d != std::floor(**d) || std::abs(**d) > 1e9)
       return refuse(field(key), "must be a whole number.");
-    *out = static_cast<int>(*d);
-    return std::nullopt;
+    return std::optional<int>(static_cast<int>(**d));
   }
-  std::optional<Error> choice(const char* key, std::initializer_list<const char*> options,
-                              std::optional<std::string>* out) const {
+  Outcome<std::optional<std::string>> choice(const char* key, std::initializer_list<const char*> options) const {
     const Json* v = find(key);
-    if (!v) return std::nullopt;
+    if (!v) return std::optional<std::string>();
     std::string list;
     for (const char* o : options) list += (list.empty() ? "\"" : ", \"") + std::string(o) + "\"";
     if (!v->is_string()) return refuse(field(key), "must be one of " + list + "; got " + typeName(*v) + ".");
     const std::string s = v->get<std::string>();
     if (std::none_of(options.begin(), options.end(), [&](const char* o) { return s == o; }))
       return refuse(field(key), "must be one of " + list + "; got \"" + s + "\".");
-    *out = s;
-    return std::nullopt;
+    return std::optional<std::string>(s);
   }
 
-  static std::optional<Error> toNumber(const Json& v, const std::string& field, double* out) {
+  static Outcome<double> toNumber(const Json& v, const std::string& field) {
     if (!v.is_number()) return refuse(field, std::string("must be a number; got ") + typeName(v) + ".");
-    *out = v.get<double>();
-    if (!std::isfinite(*out)) return refuse(field, "must be a finite number.");
-    return std::nullopt;
+    const double d = v.get<double>();
+    if (!std::isfinite(d)) return refuse(field, "must be a finite number.");
+    return d;
   }
 
  private:
@@ -123,33 +119,43 @@ class Node {
   std::string path_;
 };
 
+// Returns the Error of an Outcome that failed.
 #define HOBSHARP_TRY(expr) \
-  if (auto e_ = (expr)) return *e_
+  if (auto o_ = (expr); !o_) return o_.error()
+// Assigns the value of an Outcome to `target`, or returns its Error.
+#define HOBSHARP_ASSIGN(target, expr) \
+  do {                                \
+    auto o_ = (expr);                 \
+    if (!o_) return o_.error();       \
+    target = std::move(o_).value();   \
+  } while (false)
 
-std::optional<Error> readHob(const Node& h, HobInput* hob) {
+Outcome<HobInput> readHob(const Node& h) {
   HOBSHARP_TRY(h.onlyKnown({"normalModule", "normalPressureAngle", "outerDiameter", "pitchDiameter", "gashDepth",
                             "length", "rakeOffset", "gash", "hand", "gashLead", "gashHelixAngle"}));
-  HOBSHARP_TRY(h.number("normalModule", &hob->normalModule));
-  HOBSHARP_TRY(h.number("normalPressureAngle", &hob->normalPressureAngle));
-  HOBSHARP_TRY(h.number("outerDiameter", &hob->outerDiameter));
-  HOBSHARP_TRY(h.number("pitchDiameter", &hob->pitchDiameter));
-  HOBSHARP_TRY(h.number("gashDepth", &hob->gashDepth));
-  HOBSHARP_TRY(h.number("length", &hob->length));
+  HobInput hob;
+  HOBSHARP_ASSIGN(hob.normalModule, h.number("normalModule"));
+  HOBSHARP_ASSIGN(hob.normalPressureAngle, h.number("normalPressureAngle"));
+  HOBSHARP_ASSIGN(hob.outerDiameter, h.number("outerDiameter"));
+  HOBSHARP_ASSIGN(hob.pitchDiameter, h.number("pitchDiameter"));
+  HOBSHARP_ASSIGN(hob.gashDepth, h.number("gashDepth"));
+  HOBSHARP_ASSIGN(hob.length, h.number("length"));
   std::optional<double> rake;
-  HOBSHARP_TRY(h.number("rakeOffset", &rake));
-  hob->rakeOffset = rake.value_or(0.0);
+  HOBSHARP_ASSIGN(rake, h.optionalNumber("rakeOffset"));
+  hob.rakeOffset = rake.value_or(0.0);
   std::optional<std::string> gash, hand;
-  HOBSHARP_TRY(h.choice("gash", {"helical", "straight"}, &gash));
-  HOBSHARP_TRY(h.choice("hand", {"right", "left"}, &hand));
-  hob->gash = gash.value_or("helical") == "straight" ? GashKind::Straight : GashKind::Helical;
-  hob->hand = hand.value_or("right") == "left" ? Hand::Left : Hand::Right;
-  HOBSHARP_TRY(h.number("gashLead", &hob->gashLead));
-  HOBSHARP_TRY(h.number("gashHelixAngle", &hob->gashHelixAngle));
-  return std::nullopt;
+  HOBSHARP_ASSIGN(gash, h.choice("gash", {"helical", "straight"}));
+  HOBSHARP_ASSIGN(hand, h.choice("hand", {"right", "left"}));
+  hob.gash = gash.value_or("helical") == "straight" ? GashKind::Straight : GashKind::Helical;
+  hob.hand = hand.value_or("right") == "left" ? Hand::Left : Hand::Right;
+  HOBSHARP_ASSIGN(hob.gashLead, h.optionalNumber("gashLead"));
+  HOBSHARP_ASSIGN(hob.gashHelixAngle, h.optionalNumber("gashHelixAngle"));
+  return hob;
 }
 
-std::optional<Error> readAxes(const Node& a, AxisPolynomials* axes) {
+Outcome<AxisPolynomials> readAxes(const Node& a) {
   HOBSHARP_TRY(a.onlyKnown({"X", "Y", "Z", "A", "B"}));
+  AxisPolynomials axes;
   for (Axis axis : kAxes) {
     const char* name = axisName(axis);
     const Json* v = a.find(name);
@@ -158,20 +164,20 @@ std::optional<Error> readAxes(const Node& a, AxisPolynomials* axes) {
     Polynomial p;
     for (std::size_t k = 0; k < v->size(); ++k) {
       double c = 0;
-      HOBSHARP_TRY(Node::toNumber((*v)[k], a.field(name) + "[" + std::to_string(k) + "]", &c));
+      HOBSHARP_ASSIGN(c, Node::toNumber((*v)[k], a.field(name) + "[" + std::to_string(k) + "]"));
       p.a.push_back(c);
     }
     if (p.a.empty()) return refuse(a.field(name), "must hold at least the coefficient a0.");
-    (*axes)[axis] = p;
+    axes[axis] = p;
   }
-  return std::nullopt;
+  return axes;
 }
 
-std::optional<Error> readMeasured(const Json& m, Eigen::MatrixXd* out) {
+Outcome<Eigen::MatrixXd> readMeasured(const Json& m) {
   if (!m.is_array()) return refuse("measured", std::string("must be a list of rows; got ") + typeName(m) + ".");
   if (m.empty()) return refuse("measured", "is empty; it needs one row per radial grid line.");
   const std::size_t cols = m[0].is_array() ? m[0].size() : 0;
-  out->resize(static_cast<Eigen::Index>(m.size()), static_cast<Eigen::Index>(cols));
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(m.size()), static_cast<Eigen::Index>(cols));
   for (std::size_t i = 0; i < m.size(); ++i) {
     const std::string row = "measured[" + std::to_string(i) + "]";
     if (!m[i].is_array()) return refuse(row, std::string("must be a list of values; got ") + typeName(m[i]) + ".");
@@ -179,17 +185,18 @@ std::optional<Error> readMeasured(const Json& m, Eigen::MatrixXd* out) {
       return refuse(row, "has " + std::to_string(m[i].size()) + " values; the first row has " + std::to_string(cols) + ".");
     for (std::size_t j = 0; j < cols; ++j) {
       double v = 0;
-      HOBSHARP_TRY(Node::toNumber(m[i][j], row + "[" + std::to_string(j) + "]", &v));
-      (*out)(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = v;
+      HOBSHARP_ASSIGN(v, Node::toNumber(m[i][j], row + "[" + std::to_string(j) + "]"));
+      out(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = v;
     }
   }
-  return std::nullopt;
+  return out;
 }
 
-std::optional<Error> readCorrection(const Node& c, CorrectionInput* out) {
+Outcome<CorrectionInput> readCorrection(const Node& c) {
   HOBSHARP_TRY(c.onlyKnown({"truncation", "amplification", "lockedAxes", "locked"}));
-  HOBSHARP_TRY(c.number("truncation", &out->truncation));
-  HOBSHARP_TRY(c.number("amplification", &out->amplification));
+  CorrectionInput out;
+  HOBSHARP_ASSIGN(out.truncation, c.optionalNumber("truncation"));
+  HOBSHARP_ASSIGN(out.amplification, c.optionalNumber("amplification"));
   auto axisOf = [](const std::string& s, Axis* a) {
     for (Axis x : kAxes)
       if (s == axisName(x)) return *a = x, true;
@@ -201,7 +208,7 @@ std::optional<Error> readCorrection(const Node& c, CorrectionInput* out) {
       Axis a;
       if (!s.is_string() || !axisOf(s.get<std::string>(), &a))
         return refuse(c.field("lockedAxes"), "holds something that is not one of \"X\", \"Y\", \"Z\", \"A\", \"B\".");
-      out->lockedAxes.push_back(a);
+      out.lockedAxes.push_back(a);
     }
   }
   if (const Json* v = c.find("locked")) {
@@ -212,10 +219,10 @@ std::optional<Error> readCorrection(const Node& c, CorrectionInput* out) {
       if (text.size() != 4 || text.substr(1, 2) != " a" || !axisOf(text.substr(0, 1), &a) || text[3] < '0' ||
           text[3] > '9')
         return refuse(c.field("locked"), "holds \"" + text + "\"; write a coefficient as \"X a0\" .. \"B a6\".");
-      out->locked.push_back(Coefficient{a, text[3] - '0'});
+      out.locked.push_back(Coefficient{a, text[3] - '0'});
     }
   }
-  return std::nullopt;
+  return out;
 }
 
 }  // namespace
@@ -240,55 +247,51 @@ Outcome<CaseInput> parseCase(const std::string& text) {
   CaseInput in;
   auto hob = root.object("hob", true);
   if (!hob) return hob.error();
-  HOBSHARP_TRY(readHob(*hob, &in.hob));
+  HOBSHARP_ASSIGN(in.hob, readHob(*hob));
 
   auto wheel = root.object("wheel", true);
   if (!wheel) return wheel.error();
   HOBSHARP_TRY(wheel->onlyKnown({"outerDiameter"}));
-  HOBSHARP_TRY(wheel->number("outerDiameter", &in.wheelOuterDiameter));
+  HOBSHARP_ASSIGN(in.wheelOuterDiameter, wheel->number("outerDiameter"));
 
   auto setup = root.object("setup", true);
   if (!setup) return setup.error();
   HOBSHARP_TRY(setup->onlyKnown({"tilt", "settingAngle", "centerDistance"}));
-  HOBSHARP_TRY(setup->number("tilt", &in.tilt));
-  HOBSHARP_TRY(setup->number("settingAngle", &in.settingAngle));
-  HOBSHARP_TRY(setup->number("centerDistance", &in.centerDistance));
+  HOBSHARP_ASSIGN(in.tilt, setup->number("tilt"));
+  HOBSHARP_ASSIGN(in.settingAngle, setup->optionalNumber("settingAngle"));
+  HOBSHARP_ASSIGN(in.centerDistance, setup->optionalNumber("centerDistance"));
 
   auto machine = root.object("machine", true);
   if (!machine) return machine.error();
   HOBSHARP_TRY(machine->onlyKnown({"K1", "K2"}));
-  HOBSHARP_TRY(machine->number("K1", &in.machine.K1));
-  HOBSHARP_TRY(machine->number("K2", &in.machine.K2));
+  HOBSHARP_ASSIGN(in.machine.K1, machine->number("K1"));
+  HOBSHARP_ASSIGN(in.machine.K2, machine->number("K2"));
 
   std::optional<int> degree;
-  HOBSHARP_TRY(root.integer("degree", &degree));
+  HOBSHARP_ASSIGN(degree, root.optionalInteger("degree"));
   in.degree = degree.value_or(4);
 
   auto grid = root.object("grid", false);
   if (!grid) return grid.error();
   HOBSHARP_TRY(grid->onlyKnown({"radial", "axial", "rMin", "rMax", "xMin", "xMax"}));
-  HOBSHARP_TRY(grid->integer("radial", &in.grid.radial));
-  HOBSHARP_TRY(grid->integer("axial", &in.grid.axial));
-  HOBSHARP_TRY(grid->number("rMin", &in.grid.rMin));
-  HOBSHARP_TRY(grid->number("rMax", &in.grid.rMax));
-  HOBSHARP_TRY(grid->number("xMin", &in.grid.xMin));
-  HOBSHARP_TRY(grid->number("xMax", &in.grid.xMax));
+  HOBSHARP_ASSIGN(in.grid.radial, grid->optionalInteger("radial"));
+  HOBSHARP_ASSIGN(in.grid.axial, grid->optionalInteger("axial"));
+  HOBSHARP_ASSIGN(in.grid.rMin, grid->optionalNumber("rMin"));
+  HOBSHARP_ASSIGN(in.grid.rMax, grid->optionalNumber("rMax"));
+  HOBSHARP_ASSIGN(in.grid.xMin, grid->optionalNumber("xMin"));
+  HOBSHARP_ASSIGN(in.grid.xMax, grid->optionalNumber("xMax"));
 
   if (root.find("axes")) {
     auto axes = root.object("axes", true);
     if (!axes) return axes.error();
-    AxisPolynomials a;
-    HOBSHARP_TRY(readAxes(*axes, &a));
-    in.axes = a;
+    HOBSHARP_ASSIGN(in.axes, readAxes(*axes));
   }
   if (const Json* m = root.find("measured")) {
-    Eigen::MatrixXd measured;
-    HOBSHARP_TRY(readMeasured(*m, &measured));
-    in.measured = measured;
+    HOBSHARP_ASSIGN(in.measured, readMeasured(*m));
   }
   auto correction = root.object("correction", false);
   if (!correction) return correction.error();
-  HOBSHARP_TRY(readCorrection(*correction, &in.correction));
+  HOBSHARP_ASSIGN(in.correction, readCorrection(*correction));
   return in;
 }
 

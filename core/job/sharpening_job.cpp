@@ -18,25 +18,25 @@ std::string num(double v) {
   return s.str();
 }
 
-std::optional<Error> positive(const std::string& field, double v, const char* unit) {
+Outcome<void> positive(const std::string& field, double v, const char* unit) {
   if (!std::isfinite(v)) return refuse(field, "must be a finite number.");
   if (v <= 0) return refuse(field, "must be positive; got " + num(v) + " " + unit + ".");
-  return std::nullopt;
+  return success();
 }
 
-std::optional<Error> finite(const std::string& field, double v) {
+Outcome<void> finite(const std::string& field, double v) {
   if (!std::isfinite(v)) return refuse(field, "must be a finite number.");
-  return std::nullopt;
+  return success();
 }
 
-std::optional<Error> checkHob(const HobInput& h) {
+Outcome<void> checkHob(const HobInput& h) {
   for (auto [field, v, unit] : {std::tuple{"hob.normalModule", h.normalModule, "mm"},
                                 std::tuple{"hob.outerDiameter", h.outerDiameter, "mm"},
                                 std::tuple{"hob.pitchDiameter", h.pitchDiameter, "mm"},
                                 std::tuple{"hob.gashDepth", h.gashDepth, "mm"},
                                 std::tuple{"hob.length", h.length, "mm"}})
-    if (auto e = positive(field, v, unit)) return e;
-  if (auto e = finite("hob.rakeOffset", h.rakeOffset)) return e;
+    if (auto r = positive(field, v, unit); !r) return r;
+  if (auto r = finite("hob.rakeOffset", h.rakeOffset); !r) return r;
   if (!(h.normalPressureAngle > 0 && h.normalPressureAngle < 45))
     return refuse("hob.normalPressureAngle", "must lie between 0 and 45 deg; got " + num(h.normalPressureAngle) + " deg.");
   if (h.pitchDiameter >= h.outerDiameter)
@@ -60,7 +60,7 @@ std::optional<Error> checkHob(const HobInput& h) {
     if (!h.gashLead && !h.gashHelixAngle)
       return refuse("hob.gashLead", "a helical gash needs hob.gashLead or hob.gashHelixAngle.");
     if (h.gashLead)
-      if (auto e = positive("hob.gashLead", *h.gashLead, "mm")) return e;
+      if (auto r = positive("hob.gashLead", *h.gashLead, "mm"); !r) return r;
     if (h.gashHelixAngle && !(*h.gashHelixAngle > 0 && *h.gashHelixAngle < 90))
       return refuse("hob.gashHelixAngle", "must lie between 0 and 90 deg; got " + num(*h.gashHelixAngle) + " deg.");
     if (h.gashLead && h.gashHelixAngle) {
@@ -71,7 +71,7 @@ std::optional<Error> checkHob(const HobInput& h) {
                                                 " deg at the pitch diameter. Give one of the two.");
     }
   }
-  return std::nullopt;
+  return success();
 }
 
 ToothFace toothFace(const HobInput& h) {
@@ -86,7 +86,7 @@ ToothFace toothFace(const HobInput& h) {
   return f;
 }
 
-std::optional<Error> checkGrid(const GridInput& g, const SharpeningJob& job, double xCentre, FaceGrid* out) {
+Outcome<FaceGrid> checkGrid(const GridInput& g, const SharpeningJob& job, double xCentre) {
   const int radial = g.radial.value_or(5), axial = g.axial.value_or(9);
   for (auto [field, n] : {std::pair{"grid.radial", radial}, std::pair{"grid.axial", axial}})
     if (n < 2 || n > kMaxGridLines)
@@ -97,7 +97,7 @@ std::optional<Error> checkGrid(const GridInput& g, const SharpeningJob& job, dou
   const double xMin = g.xMin.value_or(xCentre - half), xMax = g.xMax.value_or(xCentre + half);
   for (auto [field, v] : {std::pair{"grid.rMin", rMin}, std::pair{"grid.rMax", rMax},
                           std::pair{"grid.xMin", xMin}, std::pair{"grid.xMax", xMax}})
-    if (auto e = finite(field, v)) return e;
+    if (auto r = finite(field, v); !r) return r.error();
   if (rMin < job.rootRadius - kGridTolerance)
     return refuse("grid.rMin", num(rMin) + " mm lies below the gash root (radius " + num(job.rootRadius) + " mm).");
   if (rMax > job.outerRadius + kGridTolerance)
@@ -112,22 +112,21 @@ std::optional<Error> checkGrid(const GridInput& g, const SharpeningJob& job, dou
     return refuse(xMin < -reach ? "grid.xMin" : "grid.xMax",
                   "the grid (x = " + num(xMin) + " to " + num(xMax) + " mm) reaches past the hob's ends: the face is " +
                       num(2 * half) + " mm long, centred at x = 0 or on the contact line at x = " + num(xCentre) + " mm.");
-  *out = FaceGrid::even(radial, axial, rMin, rMax, xMin, xMax);
-  return std::nullopt;
+  return FaceGrid::even(radial, axial, rMin, rMax, xMin, xMax);
 }
 
 }  // namespace
 
 Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
-  if (auto e = checkHob(in.hob)) return *e;
-  if (auto e = positive("wheel.outerDiameter", in.wheelOuterDiameter, "mm")) return *e;
+  if (auto r = checkHob(in.hob); !r) return r.error();
+  if (auto r = positive("wheel.outerDiameter", in.wheelOuterDiameter, "mm"); !r) return r.error();
   if (!(std::abs(in.tilt) < 90)) return refuse("setup.tilt", "must lie between -90 and 90 deg; got " + num(in.tilt) + " deg.");
   if (in.settingAngle && !(std::abs(*in.settingAngle) < 90))
     return refuse("setup.settingAngle", "must lie between -90 and 90 deg; got " + num(*in.settingAngle) + " deg.");
   if (in.centerDistance)
-    if (auto e = positive("setup.centerDistance", *in.centerDistance, "mm")) return *e;
-  if (auto e = finite("machine.K1", in.machine.K1)) return *e;
-  if (auto e = finite("machine.K2", in.machine.K2)) return *e;
+    if (auto r = positive("setup.centerDistance", *in.centerDistance, "mm"); !r) return r.error();
+  if (auto r = finite("machine.K1", in.machine.K1); !r) return r.error();
+  if (auto r = finite("machine.K2", in.machine.K2); !r) return r.error();
   if (in.degree < 1 || in.degree > kMaxDegree)
     return refuse("degree", "must be a whole number from 1 to " + std::to_string(kMaxDegree) + "; got " +
                                 std::to_string(in.degree) + ".");
@@ -162,10 +161,11 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
                       " mm the wheel needs a radius of " + num(ends->R[0]) + " mm, but it has " +
                       num(job.wheelRadius) + " mm. Use a larger wheel or a smaller setup.centerDistance.");
 
-  FaceGrid grid;
   auto pitch = contactCoordinate(face, universal, job.setup.normalSign, 0.0);
   if (!pitch) return pitch.error();
-  if (auto e = checkGrid(in.grid, job, face.axialAt(*pitch), &grid)) return *e;
+  auto checkedGrid = checkGrid(in.grid, job, face.axialAt(*pitch));
+  if (!checkedGrid) return checkedGrid.error();
+  const FaceGrid& grid = *checkedGrid;
   job.grid = grid;
 
   job.nominalAxes = cncAxisPolynomials(universal, in.machine, in.degree);

@@ -2,6 +2,7 @@
 // (or grid point) and the reason. Failure is explicit; nothing throws across the core.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -38,5 +39,23 @@ class Outcome {
  private:
   std::variant<T, Error> state_;
 };
+
+// A check or a step that has no value: it succeeded, or it holds the Error.
+template <>
+class Outcome<void> {
+ public:
+  Outcome() = default;                                // success
+  Outcome(Error error) : error_(std::move(error)) {}  // NOLINT: implicit on purpose
+
+  bool ok() const { return !error_.has_value(); }
+  explicit operator bool() const { return ok(); }
+
+  const Error& error() const { return *error_; }
+
+ private:
+  std::optional<Error> error_;
+};
+
+inline Outcome<void> success() { return Outcome<void>(); }
 
 }  // namespace hobsharp
