@@ -1,4 +1,5 @@
 # The layer rule of core/README.md, checked on the source text (cmake -P, no compiler needed):
+#   - every header and source file lies in a layer's folder;
 #   - every #include "..." names a header of the core by its bare file name;
 #   - no file includes a header of a higher layer;
 #   - no layer's CMakeLists.txt links a library of its own or a higher layer;
@@ -40,6 +41,15 @@ foreach(i RANGE ${last})
     set(folder_of_${h} ${layer})
     list(APPEND headers ${h})
   endforeach()
+endforeach()
+
+# Every source file lives in a layer's folder.
+file(GLOB_RECURSE sources RELATIVE "${CORE}" "${CORE}/*.h" "${CORE}/*.cpp")
+foreach(f IN LISTS sources)
+  get_filename_component(folder "${f}" DIRECTORY)
+  if(NOT folder IN_LIST LAYERS)
+    list(APPEND offences "core/${f} lies outside every layer's folder")
+  endif()
 endforeach()
 
 # Every file's quoted includes, against the layer of the file.

@@ -1,0 +1,2 @@
+// Fixture: a header outside every layer's folder.
+#pragma once
