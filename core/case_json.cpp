@@ -262,7 +262,7 @@ Outcome<CaseInput> parseCase(const std::string& text) {
 
   std::optional<int> degree;
   HOBSHARP_TRY(root.integer("degree", &degree));
-  in.degree = degree.value_or(4);
+  in.degree = degree.value_or(kDefaultDegree);
 
   auto grid = root.object("grid", false);
   if (!grid) return grid.error();

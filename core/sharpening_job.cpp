@@ -88,7 +88,7 @@ ToothFace toothFace(const HobInput& h) {
 }
 
 std::optional<Error> checkGrid(const GridInput& g, const SharpeningJob& job, double xCentre, FaceGrid* out) {
-  const int radial = g.radial.value_or(5), axial = g.axial.value_or(9);
+  const int radial = g.radial.value_or(kDefaultGridRadial), axial = g.axial.value_or(kDefaultGridAxial);
   for (auto [field, n] : {std::pair{"grid.radial", radial}, std::pair{"grid.axial", axial}})
     if (n < 2 || n > kMaxGridLines)
       return refuse(field, "must be a whole number from 2 to " + std::to_string(kMaxGridLines) + "; got " +
@@ -129,8 +129,9 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
     if (auto e = positive("setup.centerDistance", *in.centerDistance, "mm")) return *e;
   if (auto e = finite("machine.K1", in.machine.K1)) return *e;
   if (auto e = finite("machine.K2", in.machine.K2)) return *e;
-  if (in.degree < 1 || in.degree > kMaxDegree)
-    return refuse("degree", "must be a whole number from 1 to " + std::to_string(kMaxDegree) + "; got " +
+  if (in.degree < kMinDegree || in.degree > kMaxDegree)
+    return refuse("degree", "must be a whole number from " + std::to_string(kMinDegree) + " to " +
+                                std::to_string(kMaxDegree) + "; got " +
                                 std::to_string(in.degree) + ".");
 
   SharpeningJob job;
