@@ -14,8 +14,8 @@ namespace {
 
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
-constexpr const char* kHelicalOnly = "helical gash";
-constexpr const char* kWithMeasured = "with `measured`";
+constexpr const char* kHelicalOnly = "helical gash only";
+constexpr const char* kWithMeasured = "only with `measured`";
 constexpr const char* kCoefficientUnit = "mm or rad per (rad or mm)^k";
 constexpr const char* kMotionUnit = "rad or mm";
 
@@ -226,7 +226,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     const Correction& c = e.correction ? *e.correction : kNone;
     v.axes({"correction.axes", kCoefficientUnit, "the axes run plus the correction (Tab. 2 right)", kWithMeasured}, c.axes);
     v.texts({"correction.coefficients", "", "the coefficients left free (not locked)", kWithMeasured}, names(c.coefficients));
-    eigenNumbers(v, {"correction.change", "coefficient units", "their changes (Eq. 17)", kWithMeasured}, c.change);
+    eigenNumbers(v, {"correction.change", "coefficient units", "the changes of correction.coefficients, in order (Eq. 17)", kWithMeasured}, c.change);
     matrix(v, {"correction.residual", "µm", "predicted normal deviation after the correction", kWithMeasured}, c.after.normal);
     matrix(v, {"correction.residualCircular", "µm", "the same along the circle about the hob axis", kWithMeasured},
            c.after.circular);
