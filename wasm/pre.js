@@ -74,7 +74,12 @@ function hobsharpCaseText(caseObject, call) {
   if (scan.nonFinite !== null) {
     throw new HobSharpError(`${scan.path}: must be a finite number; got ${scan.nonFinite}.`, 'InvalidInput', scan.path);
   }
-  return JSON.stringify(caseObject, scan.typed ? (k, v) => (ArrayBuffer.isView(v) ? Array.from(v) : v) : undefined);
+  try {
+    return JSON.stringify(caseObject, scan.typed ? (k, v) => (ArrayBuffer.isView(v) ? Array.from(v) : v) : undefined);
+  } catch (e) {
+    // Nested too deeply for JSON.stringify, a cycle, a BigInt: no case file can hold these.
+    throw new HobSharpError(`The case cannot be written as JSON: ${e.message}.`, 'InvalidInput', '');
+  }
 }
 
 // Calls a binding; {ok: false} and anything thrown (a trap) become HobSharpErrors.

@@ -211,6 +211,23 @@ test('the production module carries no benchmark hooks', () => {
   assert.doesNotMatch(text, /timeCorrectionCycle|timeTopography/);
 });
 
+test('a case JSON cannot hold is refused, not thrown raw', () => {
+  let deep = 1;
+  for (let i = 0; i < 100000; i++) deep = [deep];
+  const cyclic = paper();
+  cyclic.hob.self = cyclic;
+  for (const c of [{ ...paper(), format: deep }, cyclic]) {
+    assert.throws(() => hobsharp.evaluate(c), (e) => {
+      assert.ok(e instanceof HobSharpError);
+      assert.equal(e.code, 'InvalidInput');
+      assert.equal(e.field, '');
+      assert.match(e.message, /^The case cannot be written as JSON: /);
+      return true;
+    });
+  }
+  assert.equal(hobsharp.evaluate(paper()).topography.normal.length, 5);
+});
+
 test('not an object is a TypeError', () => {
   assert.throws(() => hobsharp.evaluate('tab1.json'), TypeError);
   assert.throws(() => hobsharp.evaluate(null), TypeError);
