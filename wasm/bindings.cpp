@@ -117,13 +117,15 @@ val guarded(const std::string& caseText, Work work) {
   }
 }
 
-val evaluateJson(const std::string& caseText, bool typedArrays) {
+val jsResult(const std::string& caseText, bool typedArrays) {
   return guarded(caseText, [typedArrays](const Evaluation& e) {
     JsResult r(typedArrays);
     visitResult(e, r);
     return r.root;
   });
 }
+val evaluateJson(const std::string& caseText) { return jsResult(caseText, false); }
+val evaluateJsonTyped(const std::string& caseText) { return jsResult(caseText, true); }
 
 val evaluateJsonText(const std::string& caseText) {
   return guarded(caseText, [](const Evaluation& e) { return val(resultJson(e, 1)); });
@@ -180,6 +182,7 @@ val limits() {
 
 EMSCRIPTEN_BINDINGS(hobsharp) {
   emscripten::function("evaluateJson", &hobsharp::evaluateJson);
+  emscripten::function("evaluateJsonTyped", &hobsharp::evaluateJsonTyped);
   emscripten::function("evaluateJsonText", &hobsharp::evaluateJsonText);
   emscripten::function("resultFields", &hobsharp::resultFieldList);
   emscripten::function("limits", &hobsharp::limits);

@@ -11,7 +11,6 @@ import path from 'node:path';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 
-// eslint-disable-next-line import/no-mutable-exports
 export let HobSharpError;
 
 // Where the build puts the module; HOBSHARP_MODULE overrides it.

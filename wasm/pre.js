@@ -100,7 +100,7 @@ Module['HobSharpError'] = HobSharpError;
 // Float64Arrays (cheaper to post between threads); matrices are lists of rows either way.
 Module['evaluate'] = function (caseObject, options) {
   const text = hobsharpCaseText(caseObject, 'evaluate');
-  return hobsharpCall('evaluateJson', text, Boolean(options && options.typedArrays));
+  return hobsharpCall(options && options.typedArrays ? 'evaluateJsonTyped' : 'evaluateJson', text);
 };
 
 // The same result as JSON text, written by the C++ writer. Takes the case as an object or as the
