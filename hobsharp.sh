@@ -79,6 +79,7 @@ case "${1:-}" in
     install_npm
     build_native
     build_wasm
+    cmake --build "$BUILD_WASM" -j"$JOBS" --target hobsharp-bench_module
     "$BUILD/tests/hobsharp_bench" --benchmark_out="$BUILD/bench-native.json" --benchmark_out_format=json
     node tests/benchmark-wasm.mjs "$BUILD/bench-native.json"
     node tests/benchmark-page.mjs

@@ -1,6 +1,7 @@
 // The WebAssembly half of ./hobsharp.sh bench: the same correction cycle and dense topography as
-// tests/benchmark.cpp, run in the module under Node, printed beside the native figures that the
-// native benchmark wrote to the JSON file given as the first argument.
+// tests/benchmark.cpp, run under Node in the benchmark module (build/wasm/hobsharp-bench.js: the
+// page's module plus the timing hooks of wasm/bench_bindings.cpp), printed beside the native
+// figures that the native benchmark wrote to the JSON file given as the first argument.
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -14,7 +15,7 @@ for (const b of JSON.parse(readFileSync(nativeFile, 'utf8')).benchmarks) {
   native[b.name] = b.real_time * perMs;
 }
 
-const hobsharp = await loadHobSharp();
+const hobsharp = await loadHobSharp(path.join(root, 'build', 'wasm', 'hobsharp-bench.js'));
 const paper = JSON.parse(readFileSync(path.join(root, 'tests', 'data', 'tab1.json'), 'utf8'));
 const withError = (c, changes) => {
   const axes = hobsharp.evaluate(c).axes;

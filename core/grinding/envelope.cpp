@@ -161,7 +161,8 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
   }
   return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
                            ": the wheel does not envelop the tooth face there (Eq. 11 has no "
-                           "solution). Check the axis polynomials and the grid.");
+                           "solution). Check the axis polynomials and the grid.",
+                ErrorCode::Unsolvable);
 }
 
 }  // namespace hobsharp

@@ -1,5 +1,6 @@
 #include "ground_face.h"
 
+#include <algorithm>
 #include <optional>
 
 #include "wheel_profile.h"
@@ -48,6 +49,12 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
   if (!e) return e.error();
   f.meanEnvelope = *e;
   return f;
+}
+
+MotionRange motionRange(const GroundFace& face) {
+  MotionRange m;
+  for (const EnvelopePoint& e : face.envelope) m.min = std::min(m.min, e.phi), m.max = std::max(m.max, e.phi);
+  return m;
 }
 
 }  // namespace hobsharp

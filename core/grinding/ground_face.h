@@ -19,6 +19,13 @@ struct GroundFace {
   EnvelopePoint meanEnvelope;
 };
 
+// The range of the motion parameter phi over the grid's envelope points, widened to include 0
+// (the pitch point): rad, or mm for a straight gash.
+struct MotionRange {
+  double min = 0, max = 0;
+};
+MotionRange motionRange(const GroundFace& face);
+
 // With Sensitivities::Skip the envelope points carry no derivatives (a plot-only topography).
 Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisPolynomials& axes,
                                        const FaceGrid& grid, Sensitivities sensitivities = Sensitivities::Compute,

@@ -38,7 +38,8 @@ Outcome<double> contactCoordinate(const ToothFace& face, const UniversalSettings
   const double radius = std::hypot(u + face.y0Pitch(), face.rakeOffset);
   return refuse("setup", "no contact between the wheel and the tooth face at radius r = " + mm(radius) +
                            ": the equation of meshing (Eq. 5) has no solution there. Check the "
-                           "setting angle, tilt and centre distance.");
+                           "setting angle, tilt and centre distance.",
+                ErrorCode::Unsolvable);
 }
 
 std::vector<double> evenRadii(double rootRadius, double outerRadius, int points) {
@@ -112,7 +113,8 @@ Outcome<double> centerDistanceFromWheelRim(const ToothFace& face, const Universa
   return refuse("wheel.outerDiameter",
                 "the wheel rim (radius " + mm(wheelRadius) + ") cannot be brought to touch the gash root "
                "(radius " + mm(rootRadius) + "): no centre distance solves the boundary equation. "
-               "Give setup.centerDistance or change the wheel.");
+               "Give setup.centerDistance or change the wheel.",
+                ErrorCode::Unsolvable);
 }
 
 }  // namespace hobsharp

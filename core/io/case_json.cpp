@@ -269,7 +269,7 @@ Outcome<CaseInput> parseCase(const std::string& text) {
 
   std::optional<int> degree;
   HOBSHARP_ASSIGN(degree, root.optionalInteger("degree"));
-  in.degree = degree.value_or(4);
+  in.degree = degree.value_or(kDefaultDegree);
 
   auto grid = root.object("grid", false);
   if (!grid) return grid.error();

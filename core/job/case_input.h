@@ -41,6 +41,11 @@ struct CorrectionInput {
   std::vector<Coefficient> locked;
 };
 
+// What the case file's optional fields default to.
+constexpr int kDefaultDegree = 4;
+constexpr int kDefaultGridRadial = 5;
+constexpr int kDefaultGridAxial = 9;
+
 struct CaseInput {
   HobInput hob;
   double wheelOuterDiameter = 0;  // mm
@@ -48,7 +53,7 @@ struct CaseInput {
   std::optional<double> settingAngle;    // gamma_m, deg
   std::optional<double> centerDistance;  // E_t, mm
   MachineConstants machine;
-  int degree = 4;
+  int degree = kDefaultDegree;
   GridInput grid;
   std::optional<AxisPolynomials> axes;      // what the machine ran
   std::optional<Eigen::MatrixXd> measured;  // µm, grid.radial x grid.axial

@@ -87,7 +87,7 @@ ToothFace toothFace(const HobInput& h) {
 }
 
 Outcome<FaceGrid> checkGrid(const GridInput& g, const SharpeningJob& job, double xCentre) {
-  const int radial = g.radial.value_or(5), axial = g.axial.value_or(9);
+  const int radial = g.radial.value_or(kDefaultGridRadial), axial = g.axial.value_or(kDefaultGridAxial);
   for (auto [field, n] : {std::pair{"grid.radial", radial}, std::pair{"grid.axial", axial}})
     if (n < 2 || n > kMaxGridLines)
       return refuse(field, "must be a whole number from 2 to " + std::to_string(kMaxGridLines) + "; got " +
@@ -127,8 +127,9 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
     if (auto r = positive("setup.centerDistance", *in.centerDistance, "mm"); !r) return r.error();
   if (auto r = finite("machine.K1", in.machine.K1); !r) return r.error();
   if (auto r = finite("machine.K2", in.machine.K2); !r) return r.error();
-  if (in.degree < 1 || in.degree > kMaxDegree)
-    return refuse("degree", "must be a whole number from 1 to " + std::to_string(kMaxDegree) + "; got " +
+  if (in.degree < kMinDegree || in.degree > kMaxDegree)
+    return refuse("degree", "must be a whole number from " + std::to_string(kMinDegree) + " to " +
+                                std::to_string(kMaxDegree) + "; got " +
                                 std::to_string(in.degree) + ".");
 
   SharpeningJob job;

@@ -13,6 +13,7 @@ namespace hobsharp {
 enum class Axis { X = 0, Y = 1, Z = 2, A = 3, B = 4 };
 constexpr int kAxisCount = 5;
 constexpr std::array<Axis, kAxisCount> kAxes = {Axis::X, Axis::Y, Axis::Z, Axis::A, Axis::B};
+constexpr int kMinDegree = 1;
 constexpr int kMaxDegree = 6;
 
 inline const char* axisName(Axis a) {

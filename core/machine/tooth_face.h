@@ -28,6 +28,10 @@ struct ToothFace {
   double rakeAngle() const { return std::asin(rakeOffset / pitchRadius); }
   bool helical() const { return gash == GashKind::Helical; }
   Hand hand() const { return screwParameter < 0 ? Hand::Left : Hand::Right; }
+  // Helical gash: the lead L_c = 2 pi |p|, mm, and the helix angle at the pitch radius,
+  // tan = r_p / |p|, rad.
+  double lead() const { return 2 * kPi * std::abs(screwParameter); }
+  double helixAngle() const { return std::atan(pitchRadius / std::abs(screwParameter)); }
 
   // The line coordinate u of the point at `radius` from the hob axis.
   double uAtRadius(double radius) const {

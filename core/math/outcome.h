@@ -9,14 +9,21 @@
 
 namespace hobsharp {
 
+// What kind of failure an Error is: a refused input (the engineer changes a field), valid input
+// whose equations have no solution (a grid point the wheel never grinds, no contact), or a fault
+// of the calculator itself (the binding layer's report of a caught exception or a non-finite result).
+enum class ErrorCode { InvalidInput, Unsolvable, Internal };
+
 struct Error {
   std::string field;    // the input field, e.g. "hob.pitchDiameter", or "grid" for a grid point
   std::string message;  // a whole sentence for the engineer, naming the field and the reason
+  ErrorCode code = ErrorCode::InvalidInput;
 };
 
 // The usual refusal: the message begins with the field's name ("hob.gashDepth: must be ...").
-inline Error refuse(const std::string& field, const std::string& reason) {
-  return Error{field, field + ": " + reason};
+inline Error refuse(const std::string& field, const std::string& reason,
+                    ErrorCode code = ErrorCode::InvalidInput) {
+  return Error{field, field + ": " + reason, code};
 }
 
 template <class T>

@@ -6,7 +6,7 @@ import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { loadHobSharp } from '../../wasm/hobsharp.mjs';
+import { loadHobSharp, HobSharpError } from '../../wasm/hobsharp.mjs';
 
 const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const paperFile = path.join(root, 'tests', 'data', 'tab1.json');
@@ -50,7 +50,7 @@ test('the paper example through the wasm module matches the native figures to 1e
   assertClose(w.wheelProfile.Z, n.wheelProfile.Z, 1e-9, 'wheelProfile.Z');
   assertClose(w.topography.normal, n.topography.normal, 1e-6, 'topography.normal (µm)');
   assertClose(w.topography.circular, n.topography.circular, 1e-6, 'topography.circular (µm)');
-  assertClose(w.sensitivities.normal, n.sensitivities, 1e-6, 'sensitivities (µm per unit)');
+  assertClose(w.sensitivities.normal, n.sensitivities.normal, 1e-6, 'sensitivities (µm per unit)');
   // And the paper's own figures (Tab. 2 left, MODEL.md).
   assertClose(w.axes.X.slice(0, 2), [22.400299, 139.508857], 1e-6, 'X');
   assertClose(w.axes.Y[0], 39.307568, 1e-6, 'Y a0');
@@ -71,6 +71,48 @@ test('the correction through the wasm module matches the native one', () => {
   assert.match(w.correction.unobservable[0], /X a\d .* A a\d/);
 });
 
+// Every field of the native result is in the module's, with the same shape, and every number agrees
+// to 1e-9 of its size (1e-9 absolute below 1): both come from the one result model.
+function assertSameResult(w, n, where) {
+  if (typeof n === 'number') {
+    assert.equal(typeof w, 'number', `${where}: a number`);
+    assert.ok(Math.abs(w - n) <= 1e-9 * Math.max(1, Math.abs(n)), `${where}: wasm ${w} vs native ${n}`);
+  } else if (Array.isArray(n)) {
+    assert.ok(Array.isArray(w), `${where}: a list`);
+    assert.equal(w.length, n.length, `${where}: length`);
+    n.forEach((x, i) => assertSameResult(w[i], x, `${where}[${i}]`));
+  } else if (n && typeof n === 'object') {
+    assert.deepEqual(Object.keys(w), Object.keys(n), `${where}: the same fields in the same order`);
+    for (const k of Object.keys(n)) assertSameResult(w[k], n[k], `${where}.${k}`);
+  } else {
+    assert.equal(w, n, where);
+  }
+}
+
+test('every field of the result agrees with the native build, with and without a correction', () => {
+  for (const c of [paper(), measuredCase()]) {
+    const w = hobsharp.evaluate(c), n = native(c);
+    assertSameResult(w, n, 'result');
+  }
+});
+
+test('typedArrays gives Float64Arrays holding the same numbers', () => {
+  const c = measuredCase();
+  const plain = hobsharp.evaluate(c), typed = hobsharp.evaluate(c, { typedArrays: true });
+  assert.ok(typed.axes.X instanceof Float64Array);
+  assert.ok(typed.topography.normal[0] instanceof Float64Array);
+  assert.ok(Array.isArray(typed.topography.normal), 'a matrix is a list of rows');
+  assert.ok(typed.sensitivities.normal[3][2] instanceof Float64Array);
+  assert.ok(typed.correction.singularValues instanceof Float64Array);
+  const asPlain = (v) => (ArrayBuffer.isView(v) ? Array.from(v)
+    : Array.isArray(v) ? v.map(asPlain)
+    : v && typeof v === 'object' ? Object.fromEntries(Object.entries(v).map(([k, x]) => [k, asPlain(x)])) : v);
+  assert.deepStrictEqual(asPlain(typed), plain);
+  // A typed result's axes go back into a case as they are.
+  const again = hobsharp.evaluate({ ...paper(), axes: typed.axes });
+  assert.deepStrictEqual(again.topography.normal, hobsharp.evaluate({ ...paper(), axes: plain.axes }).topography.normal);
+});
+
 test('the result has the documented shape, with no NaN anywhere', () => {
   const r = hobsharp.evaluate(measuredCase());
   for (const key of ['setup', 'axes', 'wheelProfile', 'topography', 'correction']) assert.ok(r[key], key);
@@ -89,8 +131,12 @@ test('the result has the documented shape, with no NaN anywhere', () => {
 const bad = [
   ['a missing field', (c) => { delete c.hob.pitchDiameter; }, 'hob.pitchDiameter', /is missing/],
   ['a wrong type', (c) => { c.hob.outerDiameter = '80'; }, 'hob.outerDiameter', /must be a number; got a string/],
-  ['NaN (JSON null)', (c) => { c.setup.tilt = NaN; }, 'setup.tilt', /must be a number; got null/],
-  ['infinity (JSON null)', (c) => { c.machine.K1 = Infinity; }, 'machine.K1', /must be a number/],
+  ['null', (c) => { c.setup.tilt = null; }, 'setup.tilt', /must be a number; got null/],
+  ['NaN', (c) => { c.setup.tilt = NaN; }, 'setup.tilt', /^setup\.tilt: must be a finite number; got NaN\.$/],
+  ['infinity', (c) => { c.machine.K1 = Infinity; }, 'machine.K1', /^machine\.K1: must be a finite number; got Infinity\.$/],
+  ['minus infinity in a measured cell', (c) => { c.measured = Array.from({ length: 5 }, () => Array(9).fill(0)); c.measured[2][3] = -Infinity; }, 'measured[2][3]', /^measured\[2\]\[3\]: must be a finite number; got -Infinity\.$/],
+  ['NaN in an axis coefficient', (c) => { c.axes = { X: [22.4, 139.5, 0, 0, 0], Y: [39.3, 0, 0, 0, 0], Z: [-116.4, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.22, NaN, 0, 0, 0] }; }, 'axes.B[1]', /^axes\.B\[1\]: must be a finite number; got NaN\.$/],
+  ['NaN in a typed-array axis', (c) => { c.axes = { X: new Float64Array([22.4, 139.5, 0, 0, 0]), Y: [39.3, 0, 0, 0, 0], Z: [-116.4, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: new Float64Array([0.22, 0, 0, NaN, 0]) }; }, 'axes.B[3]', /^axes\.B\[3\]: must be a finite number; got NaN\.$/],
   ['an unknown format', (c) => { c.format = 'hobsharp-case/9'; }, 'format', /unknown format/],
   ['an unknown field', (c) => { c.setup.centreDistance = 69; }, 'setup.centreDistance', /unknown field/],
   ['a non-positive size', (c) => { c.hob.length = 0; }, 'hob.length', /must be positive/],
@@ -103,15 +149,21 @@ const bad = [
   ['axes of the wrong length', (c) => { c.axes = { X: [22.4, 139.5], Y: [39.3, 0, 0, 0, 0], Z: [-116.4, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.22, 0, 0, 0, 0] }; }, 'axes.X', /needs 5 coefficients/],
   ['measured of the wrong shape', (c) => { c.measured = [[1, 2, 3]]; }, 'measured', /needs grid.radial = 5 rows of grid.axial = 9 values; got 1 x 3/],
   ['a non-numeric measured cell', (c) => { c.measured = Array.from({ length: 5 }, () => Array(9).fill(0)); c.measured[1][2] = 'n/a'; }, 'measured[1][2]', /must be a number/],
-  ['an unsolvable grid point', (c) => { c.axes = { X: [222.4, 139.5089, 0, 0, 0], Y: [39.3076, 0, 0, 0, 0], Z: [-116.446, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.220365, 0, 0, 0, 0] }; }, 'grid', /r = 19 mm, x = -70 mm/],
+  ['an unsolvable grid point', (c) => { c.axes = { X: [222.4, 139.5089, 0, 0, 0], Y: [39.3076, 0, 0, 0, 0], Z: [-116.446, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.220365, 0, 0, 0, 0] }; }, 'grid', /r = 19 mm, x = -70 mm/, 'Unsolvable'],
+  ['no contact between wheel and face', (c) => { c.setup.settingAngle = -60; c.setup.centerDistance = 69.446; }, 'setup', /no contact between the wheel and the tooth face at radius r = 31.25 mm/, 'Unsolvable'],
+  ['no centre distance from the boundary equation', (c) => { c.setup.settingAngle = 85; delete c.setup.centerDistance; }, 'wheel.outerDiameter', /no centre distance solves the boundary equation/, 'Unsolvable'],
 ];
 
-for (const [name, change, field, message] of bad) {
+for (const [name, change, field, message, code = 'InvalidInput'] of bad) {
   test(`bad input is refused: ${name}`, () => {
     const c = paper();
     change(c);
     assert.throws(() => hobsharp.evaluate(c), (e) => {
       assert.ok(e instanceof Error, 'a real Error, not a number');
+      assert.ok(e instanceof HobSharpError, 'a HobSharpError');
+      assert.ok(e instanceof hobsharp.HobSharpError, "the module's own class");
+      assert.equal(e.name, 'HobSharpError');
+      assert.equal(e.code, code);
       assert.equal(e.field, field);
       assert.match(e.message, message);
       assert.ok(e.message.startsWith(field), `the message names the field: ${e.message}`);
@@ -119,6 +171,62 @@ for (const [name, change, field, message] of bad) {
     });
   });
 }
+
+test('every error code leaves the module usable', () => {
+  const expected = hobsharp.evaluate(paper());
+  const refusals = {
+    InvalidInput: (c) => { c.hob.gashDepth = 60; },
+    Unsolvable: (c) => { c.setup.settingAngle = -60; c.setup.centerDistance = 69.446; },
+  };
+  for (const [code, change] of Object.entries(refusals)) {
+    const c = paper();
+    change(c);
+    assert.throws(() => hobsharp.evaluate(c), (e) => e instanceof HobSharpError && e.code === code && e.field !== '');
+    assert.deepStrictEqual(hobsharp.evaluate(paper()), expected, `usable after ${code}`);
+  }
+  // Internal: what the bindings do not catch, a trap or a bare C++ exception pointer, is wrapped.
+  const binding = hobsharp.evaluateJson;
+  for (const thrown of [new WebAssembly.RuntimeError('unreachable'), 5251424]) {
+    hobsharp.evaluateJson = () => { throw thrown; };
+    try {
+      assert.throws(() => hobsharp.evaluate(paper()), (e) => {
+        assert.ok(e instanceof HobSharpError);
+        assert.equal(e.code, 'Internal');
+        assert.equal('field' in e, false, 'an Internal error names no field');
+        assert.match(e.message, /^The calculation failed inside the module: (unreachable|5251424)$/);
+        return true;
+      });
+    } finally {
+      hobsharp.evaluateJson = binding;
+    }
+    assert.deepStrictEqual(hobsharp.evaluate(paper()), expected, 'usable after Internal');
+  }
+});
+
+test('the production module carries no benchmark hooks', () => {
+  const exported = Object.keys(hobsharp).filter((k) => typeof hobsharp[k] === 'function');
+  assert.ok(exported.includes('evaluate') && exported.includes('limits'));
+  assert.deepEqual(exported.filter((k) => /^time|bench/i.test(k)), []);
+  const text = readFileSync(path.join(root, 'build', 'wasm', 'site', 'hobsharp.js'), 'latin1');
+  assert.doesNotMatch(text, /timeCorrectionCycle|timeTopography/);
+});
+
+test('a case JSON cannot hold is refused, not thrown raw', () => {
+  let deep = 1;
+  for (let i = 0; i < 100000; i++) deep = [deep];
+  const cyclic = paper();
+  cyclic.hob.self = cyclic;
+  for (const c of [{ ...paper(), format: deep }, cyclic]) {
+    assert.throws(() => hobsharp.evaluate(c), (e) => {
+      assert.ok(e instanceof HobSharpError);
+      assert.equal(e.code, 'InvalidInput');
+      assert.equal(e.field, '');
+      assert.match(e.message, /^The case cannot be written as JSON: /);
+      return true;
+    });
+  }
+  assert.equal(hobsharp.evaluate(paper()).topography.normal.length, 5);
+});
 
 test('not an object is a TypeError', () => {
   assert.throws(() => hobsharp.evaluate('tab1.json'), TypeError);
@@ -143,6 +251,11 @@ test('the CLI prints the result as JSON', () => {
   assert.ok(Math.abs(r.axes.X[0] - 22.400299) < 1e-6);
   assert.ok(Math.abs(r.setup.screwParameter - 139.508857) < 1e-6);
   assert.equal(r.topography.normal.length, 5);
+  // Exactly the C++ writer's text, and the same data as evaluate() to the last bit.
+  assert.equal(out, hobsharp.evaluateToJson(readFileSync(paperFile, 'utf8')) + '\n');
+  assert.deepStrictEqual(r, hobsharp.evaluate(paper()));
+  const measured = measuredCase();
+  assert.deepStrictEqual(JSON.parse(hobsharp.evaluateToJson(measured)), hobsharp.evaluate(measured));
 });
 
 test('the CLI refuses bad input with the message on stderr and a non-zero exit', () => {

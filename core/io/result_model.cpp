@@ -1,0 +1,293 @@
+#include "result_model.h"
+
+#include <cmath>
+#include <utility>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "case_json.h"
+#include "units.h"
+
+namespace hobsharp {
+namespace {
+
+using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+constexpr const char* kHelicalOnly = "helical gash only";
+constexpr const char* kWithMeasured = "only with `measured`";
+constexpr const char* kCoefficientUnit = "mm or rad per (rad or mm)^k";
+constexpr const char* kMotionUnit = "rad or mm";
+
+void matrix(ResultVisitor& v, const ResultField& f, const Eigen::MatrixXd& m) {
+  const RowMajor r = m;
+  v.matrix(f, r.data(), static_cast<int>(r.rows()), static_cast<int>(r.cols()));
+}
+void numbers(ResultVisitor& v, const ResultField& f, const std::vector<double>& x) {
+  v.numbers(f, x.data(), x.size());
+}
+template <class Vector>
+void eigenNumbers(ResultVisitor& v, const ResultField& f, const Vector& x) {
+  v.numbers(f, x.data(), static_cast<std::size_t>(x.size()));
+}
+std::vector<std::string> names(const std::vector<Coefficient>& coefficients) {
+  std::vector<std::string> out;
+  for (const Coefficient& c : coefficients) out.push_back(c.name());
+  return out;
+}
+
+// Finds the first number of the result that is not finite; its path names the cell.
+class FiniteCheck final : public ResultVisitor {
+ public:
+  std::string path;
+  double value = 0;
+
+  void number(const ResultField& f, double x) override { note(x, f.path); }
+  void count(const ResultField&, int) override {}
+  void flag(const ResultField&, bool) override {}
+  void text(const ResultField&, const std::string&) override {}
+  void texts(const ResultField&, const std::vector<std::string>&) override {}
+  void numbers(const ResultField& f, const double* x, std::size_t n) override {
+    for (std::size_t i = 0; i < n && path.empty(); ++i) note(x[i], f.path, {i});
+  }
+  void matrix(const ResultField& f, const double* x, int rows, int cols) override {
+    for (int i = 0; i < rows * cols && path.empty(); ++i) note(x[i], f.path, {std::size_t(i / cols), std::size_t(i % cols)});
+  }
+  void matrices(const ResultField& f, const double* x, int count, int rows, int cols) override {
+    const int cells = rows * cols;
+    for (int i = 0; i < count * cells && path.empty(); ++i)
+      note(x[i], f.path, {std::size_t(i / cells), std::size_t(i % cells / cols), std::size_t(i % cols)});
+  }
+  void axes(const ResultField& f, const AxisPolynomials& a) override {
+    for (Axis x : kAxes)
+      for (std::size_t k = 0; k < a[x].a.size() && path.empty(); ++k)
+        note(a[x].a[k], std::string(f.path) + "." + axisName(x), {k});
+  }
+
+ private:
+  void note(double x, const std::string& where, std::initializer_list<std::size_t> index = {}) {
+    if (std::isfinite(x) || !path.empty()) return;
+    path = where;
+    for (std::size_t i : index) path += "[" + std::to_string(i) + "]";
+    value = x;
+  }
+};
+
+// The JSON text: objects in the walk's order, matrices as lists of rows.
+class JsonWriter final : public ResultVisitor {
+ public:
+  using Json = nlohmann::ordered_json;
+  Json root = Json::object();
+
+  void number(const ResultField& f, double x) override { at(f) = x; }
+  void count(const ResultField& f, int x) override { at(f) = x; }
+  void flag(const ResultField& f, bool x) override { at(f) = x; }
+  void text(const ResultField& f, const std::string& x) override { at(f) = x; }
+  void texts(const ResultField& f, const std::vector<std::string>& x) override { at(f) = x; }
+  void numbers(const ResultField& f, const double* x, std::size_t n) override { at(f) = list(x, n); }
+  void matrix(const ResultField& f, const double* x, int rows, int cols) override { at(f) = grid(x, rows, cols); }
+  void matrices(const ResultField& f, const double* x, int count, int rows, int cols) override {
+    Json all = Json::array();
+    for (int k = 0; k < count; ++k) all.push_back(grid(x + std::size_t(k) * rows * cols, rows, cols));
+    at(f) = std::move(all);
+  }
+  void axes(const ResultField& f, const AxisPolynomials& a) override {
+    Json o = Json::object();
+    for (Axis x : kAxes) o[axisName(x)] = a[x].a;
+    at(f) = std::move(o);
+  }
+
+ private:
+  Json& at(const ResultField& f) {
+    Json* node = &root;
+    const std::string path = f.path;
+    for (std::size_t start = 0;;) {
+      const std::size_t dot = path.find('.', start);
+      node = &(*node)[path.substr(start, dot - start)];
+      if (dot == std::string::npos) return *node;
+      start = dot + 1;
+    }
+  }
+  static Json list(const double* x, std::size_t n) { return Json(std::vector<double>(x, x + n)); }
+  static Json grid(const double* x, int rows, int cols) {
+    Json g = Json::array();
+    for (int i = 0; i < rows; ++i) g.push_back(list(x + std::size_t(i) * cols, std::size_t(cols)));
+    return g;
+  }
+};
+
+// Records the fields, not their values.
+class FieldList final : public ResultVisitor {
+ public:
+  std::vector<FieldDescription> fields;
+
+  bool listsEveryField() const override { return true; }
+  void number(const ResultField& f, double) override { add(f, FieldKind::Number); }
+  void count(const ResultField& f, int) override { add(f, FieldKind::Count); }
+  void flag(const ResultField& f, bool) override { add(f, FieldKind::Flag); }
+  void text(const ResultField& f, const std::string&) override { add(f, FieldKind::Text); }
+  void texts(const ResultField& f, const std::vector<std::string>&) override { add(f, FieldKind::Texts); }
+  void numbers(const ResultField& f, const double*, std::size_t) override { add(f, FieldKind::Numbers); }
+  void matrix(const ResultField& f, const double*, int, int) override { add(f, FieldKind::Matrix); }
+  void matrices(const ResultField& f, const double*, int, int, int) override { add(f, FieldKind::Matrices); }
+  void axes(const ResultField& f, const AxisPolynomials&) override { add(f, FieldKind::Axes); }
+
+ private:
+  void add(const ResultField& f, FieldKind kind) {
+    fields.push_back({f.path, fieldKindName(kind), f.unit, f.meaning, f.when});
+  }
+};
+
+// As JS names them, which is how the engineer sees them in the page's messages.
+const char* nonFiniteName(double x) { return std::isnan(x) ? "NaN" : x > 0 ? "Infinity" : "-Infinity"; }
+
+}  // namespace
+
+const char* fieldKindName(FieldKind kind) {
+  switch (kind) {
+    case FieldKind::Number: return "number";
+    case FieldKind::Count: return "integer";
+    case FieldKind::Flag: return "boolean";
+    case FieldKind::Text: return "string";
+    case FieldKind::Texts: return "strings";
+    case FieldKind::Numbers: return "numbers";
+    case FieldKind::Matrix: return "matrix";
+    case FieldKind::Matrices: return "matrices";
+    case FieldKind::Axes: return "axes";
+  }
+  return "";
+}
+
+const char* axisUnit(Axis axis) { return isRotary(axis) ? "rad" : "mm"; }
+const char* motionUnit(GashKind gash) { return gash == GashKind::Helical ? "rad" : "mm"; }
+
+void visitResult(const Evaluation& e, ResultVisitor& v) {
+  const SharpeningJob& job = e.job;
+  const SharpeningSetup& s = job.setup;
+  const ToothFace& face = s.face;
+  const bool every = v.listsEveryField();
+
+  v.number({"setup.tilt", "deg", "eta, the tilt of the wheel head (the manual axis psi_c)"}, s.universal.tilt * kDegPerRad);
+  v.number({"setup.settingAngle", "deg", "gamma_m used"}, s.universal.settingAngle.coefficient(0) * kDegPerRad);
+  v.number({"setup.centerDistance", "mm", "E_t used"}, s.universal.centerDistance.coefficient(0));
+  v.number({"setup.screwParameter", "mm/rad", "P_t = L_c / 2 pi (1, in mm/mm, for a straight gash)"},
+           s.universal.screwParameter());
+  v.flag({"setup.settingAngleDerived", "", "true when gamma_m was derived (the gash helix angle, signed by hand)"},
+         job.settingAngleDerived);
+  v.flag({"setup.centerDistanceDerived", "", "true when E_t is from the boundary equation (wheel rim at the gash root)"},
+         job.centerDistanceDerived);
+  v.number({"setup.rakeAngle", "deg", "gamma_c, the rake angle at the pitch radius"}, face.rakeAngle() * kDegPerRad);
+  v.text({"setup.gash", "", "\"helical\" or \"straight\""}, face.helical() ? "helical" : "straight");
+  v.text({"setup.hand", "", "\"right\" or \"left\""}, face.hand() == Hand::Left ? "left" : "right");
+  if (face.helical() || every) {
+    v.number({"setup.gashLead", "mm", "L_c, the gash lead", kHelicalOnly}, face.lead());
+    v.number({"setup.gashHelixAngle", "deg", "the gash helix angle at the pitch diameter", kHelicalOnly},
+             face.helixAngle() * kDegPerRad);
+  }
+  v.number({"setup.rootRadius", "mm", "radius of the gash root"}, job.rootRadius);
+  v.number({"setup.outerRadius", "mm", "the hob's outer radius"}, job.outerRadius);
+  v.text({"setup.motionUnit", "", "unit of the motion parameter: \"rad\" (phi_1, helical) or \"mm\" (s, straight)"},
+         motionUnit(face.gash));
+
+  v.axes({"axes", kCoefficientUnit, "the nominal axis polynomials X .. B, a0 .. an (Eq. 9, Tab. 2 left)"}, job.nominalAxes);
+  v.axes({"runAxes", kCoefficientUnit, "the polynomials simulated: case.axes, or the nominal ones"}, job.runAxes);
+
+  numbers(v, {"wheelProfile.r", "mm", "tooth-face radius, root to tip (limits().wheelProfilePoints points)"},
+          e.wheelProfile.r);
+  numbers(v, {"wheelProfile.beta", kMotionUnit, "contact coordinate on the face: beta* (rad), x* for a straight gash (mm)"},
+          e.wheelProfile.w);
+  numbers(v, {"wheelProfile.R", "mm", "wheel radius"}, e.wheelProfile.R);
+  numbers(v, {"wheelProfile.Z", "mm", "axial position on the wheel"}, e.wheelProfile.Z);
+
+  const MotionRange motion = motionRange(e.groundFace);
+  v.number({"motion.min", kMotionUnit, "lowest motion parameter over the grid (at most 0)"}, motion.min);
+  v.number({"motion.max", kMotionUnit, "highest motion parameter over the grid (at least 0)"}, motion.max);
+
+  const Topography& t = e.topography;
+  numbers(v, {"topography.r", "mm", "grid radii, root to tip"}, t.grid.r);
+  numbers(v, {"topography.x", "mm", "grid axial positions, along the gash"}, t.grid.x);
+  matrix(v, {"topography.normal", "µm", "normal deviation for the axes run; plus = excess material"}, t.normal);
+  matrix(v, {"topography.circular", "µm", "the same along the circle about the hob axis, µm of arc at the mean radius"},
+         t.circular);
+  v.number({"topography.thickness", "µm", "thickness error at the mean point"}, t.thickness);
+  v.number({"topography.sse", "µm²", "sum of squares of the normal deviation"}, t.sse);
+  v.number({"topography.max", "µm", "largest absolute normal deviation"}, t.max);
+
+  const SensitivityMatrix& S = e.sensitivities;
+  v.texts({"sensitivities.coefficients", "", "\"X a0\" .. \"B an\", axis by axis"}, names(S.coefficients));
+  // Column j of the (rows * cols) x q matrix is coefficient j's topography in row-major order.
+  v.matrices({"sensitivities.normal", "µm per unit", "per coefficient: the normal deviation of a unit change (Eqs. 13-16)"},
+             S.normal.data(), static_cast<int>(S.normal.cols()), S.rows, S.cols);
+  eigenNumbers(v, {"sensitivities.thickness", "µm per unit", "per coefficient: the thickness change of a unit change"},
+               S.thickness);
+
+  if (e.correction || every) {
+    static const Correction kNone;
+    const Correction& c = e.correction ? *e.correction : kNone;
+    v.axes({"correction.axes", kCoefficientUnit, "the axes run plus the correction (Tab. 2 right)", kWithMeasured}, c.axes);
+    v.texts({"correction.coefficients", "", "the coefficients left free (not locked)", kWithMeasured}, names(c.coefficients));
+    eigenNumbers(v, {"correction.change", "coefficient units", "the changes of correction.coefficients, in order (Eq. 17)", kWithMeasured}, c.change);
+    matrix(v, {"correction.residual", "µm", "predicted normal deviation after the correction", kWithMeasured}, c.after.normal);
+    matrix(v, {"correction.residualCircular", "µm", "the same along the circle about the hob axis", kWithMeasured},
+           c.after.circular);
+    matrix(v, {"correction.measuredCircular", "µm", "the measured deviation along the circle about the hob axis",
+               kWithMeasured}, c.before.circular);
+    v.number({"correction.sseBefore", "µm²", "sum of squares, measured", kWithMeasured}, c.before.sse);
+    v.number({"correction.sseAfter", "µm²", "sum of squares, predicted after the correction", kWithMeasured}, c.after.sse);
+    v.number({"correction.maxBefore", "µm", "largest absolute deviation, measured", kWithMeasured}, c.before.max);
+    v.number({"correction.maxAfter", "µm", "largest absolute deviation after the correction", kWithMeasured}, c.after.max);
+    v.number({"correction.thicknessBefore", "µm", "thickness error at the mean point, measured", kWithMeasured},
+             c.before.thickness);
+    v.number({"correction.thicknessAfter", "µm", "thickness error after the correction", kWithMeasured}, c.after.thickness);
+    eigenNumbers(v, {"correction.singularValues", "", "of the column-scaled sensitivity matrix, largest first", kWithMeasured},
+                 c.singularValues);
+    v.count({"correction.rank", "", "singular directions used in the step", kWithMeasured}, c.rank);
+    v.count({"correction.amplifyingDropped", "", "directions above the truncation left out because they would amplify",
+             kWithMeasured}, c.amplifyingDropped);
+    std::vector<std::string> unobservable;
+    for (const UnobservableCombination& u : c.unobservable) unobservable.push_back(u.description);
+    v.texts({"correction.unobservable", "", "sentences: coefficient combinations the grid cannot see", kWithMeasured},
+            unobservable);
+    v.number({"correction.uncorrectableShare", "", "share of the sum of squares no coefficient change can make, 0..1",
+              kWithMeasured}, c.uncorrectableShare);
+    v.text({"correction.verdict", "", "one sentence for the engineer", kWithMeasured}, c.verdict);
+  }
+}
+
+std::string firstNonFinite(const Evaluation& e) {
+  FiniteCheck check;
+  visitResult(e, check);
+  return check.path;
+}
+
+std::vector<FieldDescription> resultFields() {
+  FieldList list;
+  visitResult(Evaluation{}, list);
+  return list.fields;
+}
+
+Outcome<Evaluation> evaluateCase(const std::string& caseText) {
+  auto in = parseCase(caseText);
+  if (!in) return in.error();
+  auto job = resolveJob(*in);
+  if (!job) return job.error();
+  auto e = evaluate(*job);
+  if (!e) return e.error();
+  // No NaN may reach a table or a plot: a value that is not finite is the calculator's fault.
+  FiniteCheck check;
+  visitResult(*e, check);
+  if (!check.path.empty())
+    return Error{"", "The calculation gave " + check.path + " = " + nonFiniteName(check.value) +
+                         ", which is not a finite number. This is a fault of the calculator, not of the case; "
+                         "please report the case.",
+                 ErrorCode::Internal};
+  return std::move(e).value();
+}
+
+std::string resultJson(const Evaluation& e, int indent) {
+  JsonWriter w;
+  visitResult(e, w);
+  return w.root.dump(indent, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
+}  // namespace hobsharp

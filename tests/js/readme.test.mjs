@@ -1,0 +1,38 @@
+// The README's table of result fields is the module's own description of the result.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { loadHobSharp } from '../../wasm/hobsharp.mjs';
+import { fieldTable, readmeTable, readmePath } from './readme-table.mjs';
+
+const hobsharp = await loadHobSharp();
+
+test('the README table of result fields is made from resultFields()', () => {
+  const inReadme = readmeTable(readFileSync(readmePath, 'utf8'));
+  assert.notEqual(inReadme, null, 'README.md has the result-fields markers');
+  assert.equal(inReadme, fieldTable(hobsharp.resultFields()),
+    'README.md is out of date: run node tests/js/readme-table.mjs --write');
+});
+
+test('every listed field is in the result of a measured case, and nothing else is', () => {
+  const c = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
+  c.measured = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (__, j) => (i - 2) * (j - 4) * 0.1));
+  const r = hobsharp.evaluate(c);
+  const fields = hobsharp.resultFields();
+  const listed = new Set(fields.map((f) => f.path));
+  for (const f of fields) {
+    const v = f.path.split('.').reduce((o, k) => (o === undefined ? undefined : o[k]), r);
+    assert.notEqual(v, undefined, `${f.path} is in the result`);
+  }
+  // The leaves of the result (an axes object counts as one field).
+  const found = [];
+  const stack = [[r, '']];
+  while (stack.length) {
+    const [v, p] = stack.pop();
+    if (v && typeof v === 'object' && !Array.isArray(v) && !('X' in v && 'B' in v)) {
+      for (const [k, x] of Object.entries(v)) stack.push([x, p ? `${p}.${k}` : k]);
+    } else found.push(p);
+  }
+  assert.deepEqual(found.filter((p) => !listed.has(p)), []);
+  assert.equal(found.length, listed.size);
+});

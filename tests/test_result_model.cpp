@@ -1,0 +1,133 @@
+// The result model (core/result_model.h): one description, the same fields in the JSON writer and
+// in the field list; optional fields only where they belong; no non-finite number handed out.
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "result_model.h"
+#include "test_support.h"
+
+namespace hobsharp {
+namespace {
+
+using Json = nlohmann::json;
+using test::paperCase;
+
+Evaluation evaluated(const CaseInput& in) {
+  auto job = resolveJob(in);
+  EXPECT_TRUE(job.ok()) << (job.ok() ? "" : job.error().message);
+  auto r = evaluate(job.value());
+  EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().message);
+  return r.value();
+}
+
+// The paper's case with a measured topography of a machine error of the paper's size.
+CaseInput measuredCase() {
+  CaseInput in = paperCase();
+  const SharpeningJob job = test::jobOf(in);
+  AxisPolynomials run = job.nominalAxes;
+  run[Axis::Y].a[0] += 0.01;
+  run[Axis::B].a[2] += 0.001;
+  in.measured = test::topographyFor(job, run).normal;
+  return in;
+}
+
+// The JSON's leaves as dotted paths, lists and axis objects counted as one field.
+void leaves(const Json& j, const std::string& path, std::set<std::string>* out) {
+  if (j.is_object() && !(j.contains("X") && j.contains("B"))) {
+    for (auto it = j.begin(); it != j.end(); ++it) leaves(*it, path.empty() ? it.key() : path + "." + it.key(), out);
+  } else {
+    out->insert(path);
+  }
+}
+
+TEST(ResultModel, FieldPathsAreUniqueAndOptionalOnesSayWhen) {
+  std::set<std::string> paths;
+  for (const FieldDescription& f : resultFields()) {
+    EXPECT_TRUE(paths.insert(f.path).second) << f.path << " is described twice";
+    EXPECT_FALSE(f.meaning.empty()) << f.path;
+    const bool optional = f.path.rfind("correction.", 0) == 0 || f.path == "setup.gashLead" ||
+                          f.path == "setup.gashHelixAngle";
+    EXPECT_EQ(!f.when.empty(), optional) << f.path;
+  }
+  EXPECT_EQ(paths.count("topography.normal"), 1u);
+  EXPECT_EQ(paths.count("correction.residual"), 1u);
+}
+
+TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
+  std::set<std::string> described;
+  for (const FieldDescription& f : resultFields()) described.insert(f.path);
+  const Json j = Json::parse(resultJson(evaluated(measuredCase())));
+  std::set<std::string> written;
+  leaves(j, "", &written);
+  EXPECT_EQ(written, described);
+  // Without a measured topography there is no correction.
+  const Json nominal = Json::parse(resultJson(evaluated(paperCase())));
+  EXPECT_FALSE(nominal.contains("correction"));
+  EXPECT_TRUE(nominal["setup"].contains("gashLead"));
+}
+
+TEST(ResultModel, ShapesAndUnitsAsTheJsApiStatesThem) {
+  const Evaluation e = evaluated(measuredCase());
+  const Json j = Json::parse(resultJson(e));
+  ASSERT_EQ(j["topography"]["normal"].size(), 5u);
+  ASSERT_EQ(j["topography"]["normal"][0].size(), 9u);
+  EXPECT_DOUBLE_EQ(j["topography"]["normal"][2][7].get<double>(), e.topography.normal(2, 7));
+  ASSERT_EQ(j["sensitivities"]["normal"].size(), 25u);
+  EXPECT_DOUBLE_EQ(j["sensitivities"]["normal"][6][1][4].get<double>(), e.sensitivities.topography(6)(1, 4));
+  EXPECT_EQ(j["sensitivities"]["coefficients"][6], "Y a1");
+  EXPECT_EQ(j["axes"]["B"].size(), 5u);
+  EXPECT_DOUBLE_EQ(j["setup"]["settingAngle"].get<double>(), 12.626);
+  EXPECT_NEAR(j["setup"]["gashLead"].get<double>(), 876.56, 1e-9);
+  EXPECT_DOUBLE_EQ(j["correction"]["maxBefore"].get<double>(), e.correction->before.max);
+  EXPECT_DOUBLE_EQ(j["correction"]["residual"][4][8].get<double>(), e.correction->after.normal(4, 8));
+  EXPECT_EQ(j["correction"]["rank"].get<int>(), e.correction->rank);
+  EXPECT_EQ(j["setup"]["motionUnit"], "rad");
+  EXPECT_LE(j["motion"]["min"].get<double>(), 0.0);
+  EXPECT_GE(j["motion"]["max"].get<double>(), 0.0);
+  // A straight gash: no lead, the motion in mm.
+  CaseInput straight = paperCase();
+  straight.hob.gash = GashKind::Straight;
+  straight.settingAngle = 0.0;
+  straight.centerDistance.reset();
+  const Json s = Json::parse(resultJson(evaluated(straight)));
+  EXPECT_FALSE(s["setup"].contains("gashLead"));
+  EXPECT_EQ(s["setup"]["motionUnit"], "mm");
+}
+
+TEST(ResultModel, ANonFiniteNumberIsNamedByItsPath) {
+  Evaluation e = evaluated(measuredCase());
+  EXPECT_EQ(firstNonFinite(e), "");
+  Evaluation a = e;
+  a.topography.normal(2, 3) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(firstNonFinite(a), "topography.normal[2][3]");
+  Evaluation b = e;
+  b.sensitivities.normal(1 * 9 + 4, 7) = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(firstNonFinite(b), "sensitivities.normal[7][1][4]");
+  Evaluation c = e;
+  c.correction->axes[Axis::B].a[1] = -std::numeric_limits<double>::infinity();
+  EXPECT_EQ(firstNonFinite(c), "correction.axes.B[1]");
+}
+
+TEST(ResultModel, EvaluateCaseReportsEachKindOfFailure) {
+  Json j = Json::parse(test::readFile("tab1.json"));
+  j["hob"]["gashDepth"] = 60;
+  auto refused = evaluateCase(j.dump());
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().code, ErrorCode::InvalidInput);
+  EXPECT_EQ(refused.error().field, "hob.gashDepth");
+  j = Json::parse(test::readFile("tab1.json"));
+  j["setup"]["settingAngle"] = -60;
+  auto unsolvable = evaluateCase(j.dump());
+  ASSERT_FALSE(unsolvable.ok());
+  EXPECT_EQ(unsolvable.error().code, ErrorCode::Unsolvable);
+  EXPECT_EQ(unsolvable.error().field, "setup");
+  EXPECT_TRUE(evaluateCase(test::readFile("tab1.json")).ok());
+}
+
+}  // namespace
+}  // namespace hobsharp
