@@ -59,5 +59,8 @@ struct CaseInput {
 constexpr int kMaxGridLines = 201;
 // How far a grid may reach past the face (root, tip, hob ends), mm.
 constexpr double kGridTolerance = 1e-3;
+// The largest |measured deviation| taken, µm (10 mm): beyond any real grinding error or
+// what-if, and far below where the correction's squares and sums overflow (docs/case-format.md).
+constexpr double kMaxDeviation = 1e4;
 
 }  // namespace hobsharp
