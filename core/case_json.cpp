@@ -22,20 +22,31 @@ const char* typeName(const Json& j) {
   return "an object";
 }
 
-// A user's string as a message shows it: quoted, and cut after 40 bytes (at a character boundary).
-std::string quoted(const std::string& s) {
+// A user's string as a message shows it: cut after 40 bytes (at a character boundary), with
+// control characters, quotes and backslashes escaped as JSON writes them.
+std::string escapedCut(const std::string& s) {
   constexpr std::size_t kShown = 40;
-  if (s.size() <= kShown) return "\"" + s + "\"";
-  std::size_t end = kShown;
-  while (end > 0 && (static_cast<unsigned char>(s[end]) & 0xC0) == 0x80) --end;  // UTF-8 continuation
-  return "\"" + s.substr(0, end) + "...\"";
+  std::size_t end = std::min(s.size(), kShown);
+  while (end > 0 && end < s.size() && (static_cast<unsigned char>(s[end]) & 0xC0) == 0x80) --end;  // UTF-8
+  std::string out;
+  for (std::size_t i = 0; i < end; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20) {
+      const char* hex = "0123456789abcdef";
+      out += std::string("\\u00") + hex[c >> 4] + hex[c & 15];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return end < s.size() ? out + "..." : out;
 }
+std::string quoted(const std::string& s) { return "\"" + escapedCut(s) + "\""; }
 
-// A user's object key as a field name shows it: cut like quoted(), without the quotes.
-std::string shownKey(const std::string& key) {
-  const std::string q = quoted(key);
-  return q.substr(1, q.size() - 2);
-}
+// A user's object key in a field name: as written, or quoted when empty.
+std::string shownKey(const std::string& key) { return key.empty() ? "\"\"" : escapedCut(key); }
 
 // Walks the text once before it is read, building nothing, and keeps the path of the value it
 // is in. It refuses text that is not JSON, and lists and objects nested deeper than
@@ -132,7 +143,7 @@ class Node {
  public:
   Node(const Json& j, std::string path) : j_(j), path_(std::move(path)) {}
 
-  std::string field(const char* key) const { return path_.empty() ? key : path_ + "." + key; }
+  std::string field(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
   const Json* find(const char* key) const {
     auto it = j_.find(key);
     return it == j_.end() ? nullptr : &*it;
@@ -143,7 +154,7 @@ class Node {
       if (std::none_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; })) {
         std::string list;
         for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-        return refuse(field(shownKey(it.key()).c_str()), "unknown field (expected one of: " + list + ").");
+        return refuse(field(shownKey(it.key())), "unknown field (expected one of: " + list + ").");
       }
     }
     return std::nullopt;

@@ -258,6 +258,29 @@ TEST(CaseFile, LongStringsAreShownCut) {
   EXPECT_LT(e.message.size(), 300u);
 }
 
+// Found by the fuzzer: an unknown key that is empty or starts with NUL gave a refusal with an
+// empty field. Keys are shown escaped, as JSON writes them.
+TEST(CaseFile, OddKeysAreNamed) {
+  const struct {
+    const char* text;
+    const char* field;
+  } odd[] = {
+      {"{\"format\": \"hobsharp-case/1\", \"\": 1}", "\"\""},
+      {"{\"format\": \"hobsharp-case/1\", \"\\u0000a\": 1}", "\\u0000a"},
+      {"{\"format\": \"hobsharp-case/1\", \"a\\\"\\n\": 1}", "a\\\"\\u000a"},
+  };
+  for (const auto& o : odd) {
+    const Error e = firstError(std::string(o.text));
+    EXPECT_EQ(e.field, o.field) << o.text;
+    EXPECT_EQ(e.message.rfind(std::string(o.field) + ": unknown field", 0), 0u) << e.message;
+    EXPECT_TRUE(std::none_of(e.message.begin(), e.message.end(), [](char c) { return c >= 0 && c < 0x20; }));
+  }
+  Json j = paperJson();
+  j["hob"]["hand"] = std::string("le\0ft\n", 6);
+  const Error e = firstError(j);
+  EXPECT_NE(e.message.find("got \"le\\u0000ft\\u000a\""), std::string::npos) << e.message;
+}
+
 // Measured deviations up to 10 mm are taken, and the correction stays finite.
 TEST(CaseFile, LargeButPossibleMeasuredValuesStayFinite) {
   Json j = paperJson();
