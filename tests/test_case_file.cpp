@@ -258,6 +258,46 @@ TEST(CaseFile, LongStringsAreShownCut) {
   EXPECT_LT(e.message.size(), 300u);
 }
 
+// Absurd axis coefficients cannot overflow the way absurd measured values did: the wheel then
+// misses the face and the grid point is refused, or (an angle far beyond 2 pi) the numbers stay
+// finite. Tried for every coefficient up to 1e300, with a measured topography.
+TEST(CaseFile, AbsurdAxisCoefficientsAreRefusedOrStayFinite) {
+  const Json axes = {{"X", {22.4003, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}},
+                     {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}};
+  int refused = 0, finite = 0;
+  for (const char* axis : {"X", "Y", "Z", "A", "B"})
+    for (int k = 0; k <= 4; ++k)
+      for (double v : {1e300, -1e300, 1e154, 1e20}) {
+        Json j = paperJson();
+        j["axes"] = axes;
+        j["axes"][axis][k] = v;
+        j["measured"] = measuredRows(5, 9);
+        auto in = parseCase(j.dump());
+        ASSERT_TRUE(in.ok()) << in.error().message;
+        auto job = resolveJob(*in);
+        ASSERT_TRUE(job.ok()) << job.error().message;
+        auto e = evaluate(*job);
+        if (!e) {
+          EXPECT_EQ(e.error().field, "grid") << e.error().message;
+          ++refused;
+          continue;
+        }
+        ++finite;
+        const std::string what = std::string(axis) + " a" + std::to_string(k) + " = " + std::to_string(v);
+        EXPECT_TRUE(e->topography.normal.allFinite()) << what;
+        EXPECT_TRUE(std::isfinite(e->topography.sse)) << what;
+        EXPECT_TRUE(e->sensitivities.normal.allFinite()) << what;
+        ASSERT_TRUE(e->correction.has_value()) << what;
+        EXPECT_TRUE(e->correction->change.allFinite()) << what;
+        EXPECT_TRUE(e->correction->after.normal.allFinite()) << what;
+        EXPECT_TRUE(std::isfinite(e->correction->before.sse) && std::isfinite(e->correction->after.sse)) << what;
+        for (Axis a : kAxes)
+          for (double c : e->correction->axes[a].a) EXPECT_TRUE(std::isfinite(c)) << what;
+      }
+  EXPECT_GT(refused, 0);
+  EXPECT_GT(finite, 0);
+}
+
 // Found by the fuzzer: an unknown key that is empty or starts with NUL gave a refusal with an
 // empty field. Keys are shown escaped, as JSON writes them.
 TEST(CaseFile, OddKeysAreNamed) {
