@@ -13,7 +13,12 @@ BUILD_WASM=$ROOT/build/wasm
 SITE=$BUILD_WASM/site
 
 APT_PACKAGES=(cmake g++ make libeigen3-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev python3
-              emscripten chromium)
+              emscripten chromium
+              clang-14 libclang-rt-14-dev)  # the sanitizer build and libFuzzer (in libclang-rt-14-dev)
+
+# The sanitizer build: Debian's clang with ASan + UBSan, the native tests and the case fuzzer.
+BUILD_SANITIZE=$ROOT/build/sanitize
+FUZZ_SECONDS=${FUZZ_SECONDS:-60}
 
 
 as_root() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
@@ -49,6 +54,39 @@ build_native() {
   cmake --build "$BUILD" -j"$JOBS"
 }
 
+build_sanitize() {
+  cmake -S "$ROOT" -B "$BUILD_SANITIZE" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+        -DHOBSHARP_SANITIZE=ON -DHOBSHARP_FUZZ=ON >/dev/null
+  cmake --build "$BUILD_SANITIZE" -j"$JOBS" --target hobsharp_tests fuzz_case
+}
+
+# Halt at the first report of either sanitizer, with a stack; leaks count too.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:detect_leaks=1:detect_stack_use_after_return=1:check_initialization_order=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+
+# libFuzzer on a copy of the seed corpus (the repository is not written). Any crash, sanitizer
+# report, broken check in tests/fuzz/fuzz_case.cpp, or input slower than 30 s fails the run.
+run_fuzzer() {
+  local dir=$BUILD_SANITIZE/fuzz
+  rm -rf "$dir" && mkdir -p "$dir/artifacts" && cp -r tests/fuzz/corpus "$dir/corpus"
+  if "$BUILD_SANITIZE/tests/fuzz/fuzz_case" -dict=tests/fuzz/case.dict -max_len=16384 -timeout=30 \
+       -max_total_time="$FUZZ_SECONDS" -print_final_stats=1 -artifact_prefix="$dir/artifacts/" \
+       "$dir/corpus" >"$dir/log" 2>&1; then
+    grep -E '^Done [0-9]+ runs|^stat::(new_units_added|peak_rss_mb)' "$dir/log"
+  else
+    tail -n 80 "$dir/log"
+    echo "FAILED: the fuzzer found an input that breaks the case reader; it is in $dir/artifacts/" >&2
+    return 1
+  fi
+}
+
+# Runs a step and says how long it took.
+timed() {
+  local start=$SECONDS
+  "$@" || return
+  echo "   ($(( SECONDS - start )) s)"
+}
+
 case "${1:-}" in
   serve)
     install_missing
@@ -65,14 +103,20 @@ case "${1:-}" in
   test)
     install_missing
     install_npm
-    build_native
-    build_wasm
+    timed build_native
+    timed build_wasm
     echo "== native tests (GoogleTest via CTest)"
-    (cd "$BUILD" && ctest --output-on-failure -j"$JOBS")
+    (cd "$BUILD" && timed ctest --output-on-failure -j"$JOBS")
     echo "== module and command-line tests (node --test)"
-    node --test tests/js/
+    timed node --test tests/js/
     echo "== browser tests (playwright-core, Debian's Chromium; screenshots in test-output/browser/)"
-    node --test tests/browser/
+    timed node --test tests/browser/
+    echo "== sanitizer build (clang, ASan + UBSan) in build/sanitize"
+    timed build_sanitize
+    echo "== native tests under ASan + UBSan (halt at the first report)"
+    (cd "$BUILD_SANITIZE" && timed ctest --output-on-failure -j"$JOBS")
+    echo "== fuzzing the case reader for ${FUZZ_SECONDS} s (libFuzzer, ASan + UBSan; a finding fails)"
+    timed run_fuzzer
     ;;
   bench)
     install_missing

@@ -1,5 +1,7 @@
 // Every bad-input rule of docs/case-format.md: refused with a message that names the field and
 // the reason, and nothing crashes.
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <random>
@@ -43,9 +45,8 @@ TEST_P(BadInput, IsRefusedWithItsMessage) {
   const Error e = firstError(j);
   EXPECT_EQ(e.field, rule.field) << e.message;
   EXPECT_NE(e.message.find(rule.message), std::string::npos) << e.message;
-  if (std::string(rule.field).size() > 0) {
-    EXPECT_EQ(e.message.rfind(rule.field, 0), 0u) << e.message;  // the message starts with the field
-  }
+  ASSERT_FALSE(std::string(rule.field).empty()) << "every refusal names a field";
+  EXPECT_EQ(e.message.rfind(rule.field, 0), 0u) << e.message;  // the message starts with the field
 }
 
 Json measuredRows(int rows, int cols) {
@@ -106,6 +107,12 @@ const Rule kRules[] = {
     {"MeasuredNotANumber", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][3][4] = "x"; }, "measured[3][4]", "must be a number; got a string"},
     {"MeasuredEmpty", [](Json& j) { j["measured"] = Json::array(); }, "measured", "is empty"},
     {"MeasuredNotAList", [](Json& j) { j["measured"] = 3; }, "measured", "must be a list of rows"},
+    // Absurd magnitudes: beyond 10 mm, where the correction's squares would overflow.
+    {"MeasuredHuge", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][2][3] = 1e154; }, "measured[2][3]", "got 1e+154 µm"},
+    {"MeasuredBeyond10mm", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][4][8] = -10000.5; }, "measured[4][8]", "must lie within ±10000 µm"},
+    {"MeasuredRowsNotLists", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][1] = 7; }, "measured[1]", "must be a list of values; got a number"},
+    // A long first row and 100,000 rows that are not lists: refused before 80 GB are allocated.
+    {"MeasuredHugeFirstRow", [](Json& j) { j["measured"] = Json(std::vector<int>(100001, 1)); j["measured"][0] = std::vector<double>(100000, 0.0); }, "measured[1]", "must be a list of values"},
     // A geometry for which a grid point cannot be solved: the message names r and x.
     {"UnsolvableGridPoint", [](Json& j) { j["axes"] = {{"X", {222.4, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}}; }, "grid", "cannot be solved at the grid point r = 19 mm, x = -70 mm"},
     // Correction options.
@@ -122,8 +129,215 @@ TEST(CaseFile, ThePaperCaseIsAccepted) { EXPECT_EQ(firstError(paperJson()).messa
 TEST(CaseFile, NotJson) {
   const Error e = firstError(std::string("{\"format\": \"hobsharp-case/1\", \"hob\": {"));
   EXPECT_NE(e.message.find("not valid JSON"), std::string::npos) << e.message;
+  EXPECT_EQ(e.field, "hob") << e.message;  // where the text stopped: inside hob
   EXPECT_NE(firstError(std::string("[1, 2]")).message.find("must be a JSON object"), std::string::npos);
+  EXPECT_EQ(firstError(std::string("[1, 2]")).field, "case");
   EXPECT_NE(firstError(std::string("")).message.find("not valid JSON"), std::string::npos);
+  EXPECT_EQ(firstError(std::string("")).field, "case");
+}
+
+// Syntax errors are named by the JSON path of the value where the text stops being JSON.
+TEST(CaseFile, ASyntaxErrorNamesItsPath) {
+  std::string text = paperJson().dump();
+  const std::string from = "\"tilt\":15.0";
+  ASSERT_NE(text.find(from), std::string::npos) << text;
+  text.replace(text.find(from), from.size(), "\"tilt\":15.x");
+  EXPECT_EQ(firstError(text).field, "setup.tilt") << firstError(text).message;
+
+  Json j = paperJson();
+  j["measured"] = measuredRows(5, 9);
+  text = j.dump();
+  const std::string row = "[0.5,0.5,0.5,0.5,0.5,0.5,0.5,0.5,0.5]";
+  const size_t third = text.find(row, text.find(row, text.find(row) + 1) + 1);
+  ASSERT_NE(third, std::string::npos);
+  text.replace(third, row.size(), "[0.5,0.5,0.5,0.5,-,0.5,0.5,0.5,0.5]");
+  const Error e = firstError(text);
+  EXPECT_EQ(e.field, "measured[2][4]") << e.message;
+  EXPECT_EQ(e.message.rfind("measured[2][4]: ", 0), 0u) << e.message;
+}
+
+// A lone UTF-16 surrogate (what JSON.stringify makes of '\ud800') in any string: refused, naming
+// the field it stands in.
+TEST(CaseFile, ALoneSurrogateNamesItsField) {
+  const struct {
+    std::function<void(Json&)> put;  // puts the marker string "SURROGATE" somewhere
+    const char* field;
+  } places[] = {
+      {[](Json& j) { j["format"] = "SURROGATE"; }, "format"},
+      {[](Json& j) { j["hob"]["hand"] = "SURROGATE"; }, "hob.hand"},
+      {[](Json& j) { j["hob"]["gash"] = "SURROGATE"; }, "hob.gash"},
+      {[](Json& j) { j["correction"] = {{"locked", {"X a0", "SURROGATE"}}}; }, "correction.locked[1]"},
+      {[](Json& j) { j["correction"] = {{"lockedAxes", {"SURROGATE"}}}; }, "correction.lockedAxes[0]"},
+      {[](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][3][2] = "SURROGATE"; }, "measured[3][2]"},
+      {[](Json& j) { j["setup"]["SURROGATE"] = 1; }, "setup"},  // in a key: the object it is in
+  };
+  for (const auto& place : places) {
+    Json j = paperJson();
+    place.put(j);
+    std::string text = j.dump();
+    for (const char* lone : {"\\ud800", "\\udfff", "\\ud800\\u0041"}) {
+      std::string t = text;
+      t.replace(t.find("SURROGATE"), 9, lone);
+      const Error e = firstError(t);
+      EXPECT_EQ(e.field, place.field) << t;
+      EXPECT_EQ(e.message.rfind(std::string(place.field) + ": ", 0), 0u) << e.message;
+      EXPECT_NE(e.message.find("surrogate"), std::string::npos) << e.message;
+    }
+  }
+}
+
+std::string nested(const std::string& open, const std::string& close, int depth) {
+  std::string s;
+  s.reserve(static_cast<size_t>(depth) * (open.size() + close.size()));
+  for (int i = 0; i < depth; ++i) s += open;
+  for (int i = 0; i < depth; ++i) s += close;
+  return s;
+}
+
+// Nesting is bounded before anything is read: 100,000 deep once crashed the reader (its message
+// dumped the value recursively). The field where it goes too deep is named.
+TEST(CaseFile, DeepNestingIsRefusedNamingTheField) {
+  for (int depth : {65, 1000, 100000, 1000000}) {
+    const Error e = firstError("{\"format\": " + nested("[", "]", depth) + "}");
+    EXPECT_EQ(e.field, "format") << depth;
+    EXPECT_EQ(e.message.rfind("format: ", 0), 0u) << e.message;
+    EXPECT_NE(e.message.find("nested more than 64 deep"), std::string::npos) << e.message;
+    EXPECT_LT(e.message.size(), 200u) << "no dump of the input";
+  }
+  const std::string paper = paperJson().dump();
+  const std::string gashLead = "\"gashLead\":";
+  ASSERT_NE(paper.find(gashLead), std::string::npos);
+  std::string text = paper;
+  text.insert(text.find(gashLead) + gashLead.size(), nested("[", "]", 100000) + ",\"x\":");
+  EXPECT_EQ(firstError(text).field, "hob.gashLead") << firstError(text).message;
+  text = paper;
+  text.insert(text.find(gashLead) + gashLead.size(), nested("{\"a\":", "}", 100000) + ",\"x\":");
+  EXPECT_EQ(firstError(text).field.rfind("hob.gashLead.a.a.a", 0), 0u) << firstError(text).message;
+  text = paper;
+  text.insert(text.size() - 1, ",\"measured\":[[1]," + nested("[", "]", 100000) + "]");
+  EXPECT_EQ(firstError(text).field, "measured") << firstError(text).message;
+  const Error root = firstError("[" + nested("{\"a\":[", "]}", 50000) + "]");
+  EXPECT_EQ(root.field.rfind("[0].a[0].a[0].a", 0), 0u) << root.field;
+  EXPECT_LT(root.message.size(), 1000u);
+  EXPECT_EQ(firstError(nested("[", "]", 100000)).field, "case");
+}
+
+// 64 levels are still read (and then refused for their type), 65 are not.
+TEST(CaseFile, NestingUpToTheLimitIsRead) {
+  const std::string paper = paperJson().dump();
+  const std::string rake = "\"rakeOffset\":0.0";
+  ASSERT_NE(paper.find(rake), std::string::npos) << paper;
+  std::string text = paper;  // the document and hob are two levels
+  text.replace(text.find(rake), rake.size(), "\"rakeOffset\":" + nested("[", "]", kMaxCaseNesting - 2));
+  Error e = firstError(text);
+  EXPECT_EQ(e.field, "hob.rakeOffset");
+  EXPECT_NE(e.message.find("must be a number; got a list"), std::string::npos) << e.message;
+  text = paper;
+  text.replace(text.find(rake), rake.size(), "\"rakeOffset\":" + nested("[", "]", kMaxCaseNesting - 1));
+  e = firstError(text);
+  EXPECT_EQ(e.field, "hob.rakeOffset");
+  EXPECT_NE(e.message.find("nested more than 64 deep"), std::string::npos) << e.message;
+}
+
+// A user's string in a message is cut short, and the message names the field.
+TEST(CaseFile, LongStringsAreShownCut) {
+  Json j = paperJson();
+  j["hob"]["hand"] = std::string(1000000, 'x');
+  Error e = firstError(j);
+  EXPECT_EQ(e.field, "hob.hand");
+  EXPECT_LT(e.message.size(), 200u);
+  j = paperJson();
+  j["format"] = std::string(1000000, 'y');
+  e = firstError(j);
+  EXPECT_EQ(e.field, "format");
+  EXPECT_LT(e.message.size(), 200u);
+  j = paperJson();
+  j["setup"][std::string(39, 'z') + "\u00b5" + std::string(100, 'z')] = 1;  // 40 bytes end inside the µ
+  e = firstError(j);
+  EXPECT_EQ(e.field, "setup." + std::string(39, 'z') + "...") << e.field;
+  EXPECT_LT(e.message.size(), 300u);
+}
+
+// Absurd axis coefficients cannot overflow the way absurd measured values did: the wheel then
+// misses the face and the grid point is refused, or (an angle far beyond 2 pi) the numbers stay
+// finite. Tried for every coefficient up to 1e300, with a measured topography.
+TEST(CaseFile, AbsurdAxisCoefficientsAreRefusedOrStayFinite) {
+  const Json axes = {{"X", {22.4003, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}},
+                     {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}};
+  int refused = 0, finite = 0;
+  for (const char* axis : {"X", "Y", "Z", "A", "B"})
+    for (int k = 0; k <= 4; ++k)
+      for (double v : {1e300, -1e300, 1e154, 1e20}) {
+        Json j = paperJson();
+        j["axes"] = axes;
+        j["axes"][axis][k] = v;
+        j["measured"] = measuredRows(5, 9);
+        auto in = parseCase(j.dump());
+        ASSERT_TRUE(in.ok()) << in.error().message;
+        auto job = resolveJob(*in);
+        ASSERT_TRUE(job.ok()) << job.error().message;
+        auto e = evaluate(*job);
+        if (!e) {
+          EXPECT_EQ(e.error().field, "grid") << e.error().message;
+          ++refused;
+          continue;
+        }
+        ++finite;
+        const std::string what = std::string(axis) + " a" + std::to_string(k) + " = " + std::to_string(v);
+        EXPECT_TRUE(e->topography.normal.allFinite()) << what;
+        EXPECT_TRUE(std::isfinite(e->topography.sse)) << what;
+        EXPECT_TRUE(e->sensitivities.normal.allFinite()) << what;
+        ASSERT_TRUE(e->correction.has_value()) << what;
+        EXPECT_TRUE(e->correction->change.allFinite()) << what;
+        EXPECT_TRUE(e->correction->after.normal.allFinite()) << what;
+        EXPECT_TRUE(std::isfinite(e->correction->before.sse) && std::isfinite(e->correction->after.sse)) << what;
+        for (Axis a : kAxes)
+          for (double c : e->correction->axes[a].a) EXPECT_TRUE(std::isfinite(c)) << what;
+      }
+  EXPECT_GT(refused, 0);
+  EXPECT_GT(finite, 0);
+}
+
+// Found by the fuzzer: an unknown key that is empty or starts with NUL gave a refusal with an
+// empty field. Keys are shown escaped, as JSON writes them.
+TEST(CaseFile, OddKeysAreNamed) {
+  const struct {
+    const char* text;
+    const char* field;
+  } odd[] = {
+      {"{\"format\": \"hobsharp-case/1\", \"\": 1}", "\"\""},
+      {"{\"format\": \"hobsharp-case/1\", \"\\u0000a\": 1}", "\\u0000a"},
+      {"{\"format\": \"hobsharp-case/1\", \"a\\\"\\n\": 1}", "a\\\"\\u000a"},
+  };
+  for (const auto& o : odd) {
+    const Error e = firstError(std::string(o.text));
+    EXPECT_EQ(e.field, o.field) << o.text;
+    EXPECT_EQ(e.message.rfind(std::string(o.field) + ": unknown field", 0), 0u) << e.message;
+    EXPECT_TRUE(std::none_of(e.message.begin(), e.message.end(), [](char c) { return c >= 0 && c < 0x20; }));
+  }
+  Json j = paperJson();
+  j["hob"]["hand"] = std::string("le\0ft\n", 6);
+  const Error e = firstError(j);
+  EXPECT_NE(e.message.find("got \"le\\u0000ft\\u000a\""), std::string::npos) << e.message;
+}
+
+// Measured deviations up to 10 mm are taken, and the correction stays finite.
+TEST(CaseFile, LargeButPossibleMeasuredValuesStayFinite) {
+  Json j = paperJson();
+  j["measured"] = measuredRows(5, 9);
+  j["measured"][2][3] = 10000.0;
+  j["measured"][0][0] = -10000.0;
+  auto in = parseCase(j.dump());
+  ASSERT_TRUE(in.ok()) << in.error().message;
+  auto e = evaluate(jobOf(*in));
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  ASSERT_TRUE(e->correction.has_value());
+  EXPECT_TRUE(std::isfinite(e->correction->before.sse));
+  EXPECT_TRUE(std::isfinite(e->correction->after.sse));
+  EXPECT_TRUE(e->correction->after.normal.allFinite());
+  EXPECT_TRUE(e->correction->change.allFinite());
+  for (Axis a : kAxes) EXPECT_TRUE(std::all_of(e->correction->axes[a].a.begin(), e->correction->axes[a].a.end(),
+                                               [](double c) { return std::isfinite(c); }));
 }
 
 // JSON has no infinity: a number too large for a double is refused where it stands.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <optional>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -20,25 +22,120 @@ const char* typeName(const Json& j) {
   return "an object";
 }
 
-// Finds where the text stops being JSON, without exceptions.
-struct ErrorPosition : nlohmann::json_sax<Json> {
-  std::size_t position = 0;
-  bool null() override { return true; }
-  bool boolean(bool) override { return true; }
-  bool number_integer(number_integer_t) override { return true; }
-  bool number_unsigned(number_unsigned_t) override { return true; }
-  bool number_float(number_float_t, const string_t&) override { return true; }
-  bool string(string_t&) override { return true; }
-  bool binary(binary_t&) override { return true; }
-  bool start_object(std::size_t) override { return true; }
-  bool key(string_t&) override { return true; }
-  bool end_object() override { return true; }
-  bool start_array(std::size_t) override { return true; }
-  bool end_array() override { return true; }
-  bool parse_error(std::size_t p, const std::string&, const nlohmann::detail::exception&) override {
-    position = p;
+// A user's string as a message shows it: cut after 40 bytes (at a character boundary), with
+// control characters, quotes and backslashes escaped as JSON writes them.
+std::string escapedCut(const std::string& s) {
+  constexpr std::size_t kShown = 40;
+  std::size_t end = std::min(s.size(), kShown);
+  while (end > 0 && end < s.size() && (static_cast<unsigned char>(s[end]) & 0xC0) == 0x80) --end;  // UTF-8
+  std::string out;
+  for (std::size_t i = 0; i < end; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20) {
+      const char* hex = "0123456789abcdef";
+      out += std::string("\\u00") + hex[c >> 4] + hex[c & 15];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return end < s.size() ? out + "..." : out;
+}
+std::string quoted(const std::string& s) { return "\"" + escapedCut(s) + "\""; }
+
+// A user's object key in a field name: as written, or quoted when empty.
+std::string shownKey(const std::string& key) { return key.empty() ? "\"\"" : escapedCut(key); }
+
+// Walks the text once before it is read, building nothing, and keeps the path of the value it
+// is in. It refuses text that is not JSON, and lists and objects nested deeper than
+// kMaxCaseNesting, naming the field where that happens (docs/case-format.md). So no later step
+// (the document's own recursion, a message) ever meets deep input.
+class Shape : public nlohmann::json_sax<Json> {
+ public:
+  const std::optional<Error>& error() const { return error_; }
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override { return open(false); }
+  bool start_array(std::size_t) override { return open(true); }
+  bool key(string_t& k) override {
+    frames_.back().key = shownKey(k);
+    frames_.back().keyed = true;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& e) override {
+    // nlohmann's message: "[json.exception...] parse error at ...: syntax error while parsing
+    // value - <reason>; last read: '<the text>'". Keep the reason, never the text.
+    std::string reason = e.what();
+    const std::size_t dash = reason.find(" - ");
+    reason = dash == std::string::npos ? "syntax error" : reason.substr(dash + 3);
+    reason = reason.substr(0, reason.find("; last read: "));
+    error_ = refuse(path(false), "the case is not valid JSON here, at character " + std::to_string(position) +
+                                     " (" + reason.substr(0, 200) + ").");
     return false;
   }
+
+ private:
+  struct Frame {
+    bool list = false;
+    std::size_t index = 0;  // of the current element (a list)
+    std::string key;        // of the current member (an object), as shown
+    bool keyed = false;     // an object: inside a member's value
+  };
+
+  bool value() {
+    if (!frames_.empty()) {
+      Frame& f = frames_.back();
+      if (f.list) ++f.index;
+      f.keyed = false;
+    }
+    return true;
+  }
+  bool open(bool list) {
+    if (frames_.size() >= static_cast<std::size_t>(kMaxCaseNesting)) {
+      error_ = refuse(path(true), "lists and objects are nested more than " + std::to_string(kMaxCaseNesting) +
+                                      " deep here; a case nests them at most 3 deep.");
+      return false;
+    }
+    Frame f;
+    f.list = list;
+    frames_.push_back(f);
+    return true;
+  }
+  bool close() {
+    frames_.pop_back();
+    return value();
+  }
+
+  // The path of the current value ("measured[2][3]"), or only down to its innermost named field
+  // ("hob.gashLead" for anything inside it); "case" for the document itself.
+  std::string path(bool named) const {
+    std::string p, upToName;
+    for (const Frame& f : frames_) {
+      if (f.list) {
+        p += "[" + std::to_string(f.index) + "]";
+      } else if (f.keyed) {
+        p += (p.empty() ? "" : ".") + f.key;
+        upToName = p;
+      } else {
+        break;  // between members: the object itself
+      }
+    }
+    const std::string& chosen = named ? upToName : p;
+    return chosen.empty() ? "case" : chosen;
+  }
+
+  std::vector<Frame> frames_;
+  std::optional<Error> error_;
 };
 
 // An object of the document with its path, for reading fields and naming them in messages.
@@ -46,7 +143,7 @@ class Node {
  public:
   Node(const Json& j, std::string path) : j_(j), path_(std::move(path)) {}
 
-  std::string field(const char* key) const { return path_.empty() ? key : path_ + "." + key; }
+  std::string field(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
   const Json* find(const char* key) const {
     auto it = j_.find(key);
     return it == j_.end() ? nullptr : &*it;
@@ -57,7 +154,7 @@ class Node {
       if (std::none_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; })) {
         std::string list;
         for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-        return refuse(field(it.key().c_str()), "unknown field (expected one of: " + list + ").");
+        return refuse(field(shownKey(it.key())), "unknown field (expected one of: " + list + ").");
       }
     }
     return success();
@@ -103,7 +200,7 @@ class Node {
     if (!v->is_string()) return refuse(field(key), "must be one of " + list + "; got " + typeName(*v) + ".");
     const std::string s = v->get<std::string>();
     if (std::none_of(options.begin(), options.end(), [&](const char* o) { return s == o; }))
-      return refuse(field(key), "must be one of " + list + "; got \"" + s + "\".");
+      return refuse(field(key), "must be one of " + list + "; got " + quoted(s) + ".");
     return std::optional<std::string>(s);
   }
 
@@ -177,12 +274,16 @@ Outcome<Eigen::MatrixXd> readMeasured(const Json& m) {
   if (!m.is_array()) return refuse("measured", std::string("must be a list of rows; got ") + typeName(m) + ".");
   if (m.empty()) return refuse("measured", "is empty; it needs one row per radial grid line.");
   const std::size_t cols = m[0].is_array() ? m[0].size() : 0;
-  Eigen::MatrixXd out(static_cast<Eigen::Index>(m.size()), static_cast<Eigen::Index>(cols));
+  // Every row's shape before the matrix is allocated: its size then follows from the text's.
   for (std::size_t i = 0; i < m.size(); ++i) {
     const std::string row = "measured[" + std::to_string(i) + "]";
     if (!m[i].is_array()) return refuse(row, std::string("must be a list of values; got ") + typeName(m[i]) + ".");
     if (m[i].size() != cols)
       return refuse(row, "has " + std::to_string(m[i].size()) + " values; the first row has " + std::to_string(cols) + ".");
+  }
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(m.size()), static_cast<Eigen::Index>(cols));
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const std::string row = "measured[" + std::to_string(i) + "]";
     for (std::size_t j = 0; j < cols; ++j) {
       double v = 0;
       HOBSHARP_ASSIGN(v, Node::toNumber(m[i][j], row + "[" + std::to_string(j) + "]"));
@@ -218,7 +319,7 @@ Outcome<CorrectionInput> readCorrection(const Node& c) {
       Axis a;
       if (text.size() != 4 || text.substr(1, 2) != " a" || !axisOf(text.substr(0, 1), &a) || text[3] < '0' ||
           text[3] > '9')
-        return refuse(c.field("locked"), "holds \"" + text + "\"; write a coefficient as \"X a0\" .. \"B a6\".");
+        return refuse(c.field("locked"), "holds " + quoted(text) + "; write a coefficient as \"X a0\" .. \"B a6\".");
       out.locked.push_back(Coefficient{a, text[3] - '0'});
     }
   }
@@ -228,20 +329,20 @@ Outcome<CorrectionInput> readCorrection(const Node& c) {
 }  // namespace
 
 Outcome<CaseInput> parseCase(const std::string& text) {
-  const Json doc = Json::parse(text, nullptr, /*allow_exceptions=*/false);
-  if (doc.is_discarded()) {
-    ErrorPosition where;
-    Json::sax_parse(text, &where);
-    return Error{"", "The case is not valid JSON (it stops making sense at character " +
-                         std::to_string(where.position) + ")."};
+  Shape shape;
+  if (!Json::sax_parse(text, &shape)) {
+    if (shape.error()) return *shape.error();
+    return refuse("case", "is not valid JSON.");
   }
-  if (!doc.is_object()) return Error{"", std::string("The case must be a JSON object; got ") + typeName(doc) + "."};
+  const Json doc = Json::parse(text, nullptr, /*allow_exceptions=*/false);
+  if (doc.is_discarded()) return refuse("case", "is not valid JSON.");  // the walk above found no fault
+  if (!doc.is_object()) return refuse("case", std::string("must be a JSON object; got ") + typeName(doc) + ".");
   const Node root(doc, "");
   const Json* format = root.find("format");
   if (!format) return refuse("format", std::string("is missing; it must be \"") + kCaseFormat + "\".");
   if (!format->is_string() || format->get<std::string>() != kCaseFormat)
-    return refuse("format", std::string("unknown format ") + format->dump() + "; this calculator reads \"" +
-                                kCaseFormat + "\".");
+    return refuse("format", "unknown format " + (format->is_string() ? quoted(format->get<std::string>()) : typeName(*format)) +
+                                "; this calculator reads \"" + kCaseFormat + "\".");
   HOBSHARP_TRY(root.onlyKnown({"format", "hob", "wheel", "setup", "machine", "degree", "grid", "axes", "measured",
                                "correction"}));
   CaseInput in;

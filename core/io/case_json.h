@@ -1,6 +1,7 @@
 // Reads a `hobsharp-case/1` document (docs/case-format.md) into typed values. Text in, typed
-// CaseInput or an Error naming the field out; nothing throws. Value rules are checked later by
-// resolveJob(); here only presence, type, finiteness, shape and unknown names.
+// CaseInput or an Error naming the field out (the JSON path; "case" for the document itself);
+// nothing throws. Value rules are checked later by resolveJob(); here only JSON syntax, nesting
+// depth, presence, type, finiteness, shape and unknown names.
 #pragma once
 
 #include <string>
@@ -11,6 +12,10 @@
 namespace hobsharp {
 
 inline constexpr const char* kCaseFormat = "hobsharp-case/1";
+
+// Lists and objects nest at most this deep in a case file; a real one nests them 3 deep
+// (measured rows in a list in the document). Deeper text is refused before it is read.
+inline constexpr int kMaxCaseNesting = 64;
 
 Outcome<CaseInput> parseCase(const std::string& json);
 

@@ -67,5 +67,8 @@ constexpr double kGridTolerance = 1e-3;
 // How far the helix angle given by hob.gashLead may differ from hob.gashHelixAngle when the case
 // gives both, deg.
 constexpr double kHelixAngleAgreement = 0.01;
+// The largest |measured deviation| taken, µm (10 mm): beyond any real grinding error or
+// what-if, and far below where the correction's squares and sums overflow (docs/case-format.md).
+constexpr double kMaxDeviation = 1e4;
 
 }  // namespace hobsharp

@@ -192,8 +192,11 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
                                     " x " + std::to_string(m.cols()) + ".");
     for (int i = 0; i < m.rows(); ++i)
       for (int j = 0; j < m.cols(); ++j)
-        if (!std::isfinite(m(i, j)))
-          return refuse("measured[" + std::to_string(i) + "][" + std::to_string(j) + "]", "must be a finite number.");
+        if (!std::isfinite(m(i, j)) || std::abs(m(i, j)) > kMaxDeviation)
+          return refuse("measured[" + std::to_string(i) + "][" + std::to_string(j) + "]",
+                        std::isfinite(m(i, j)) ? "must lie within ±" + num(kMaxDeviation) + " µm (10 mm); got " +
+                                                     num(m(i, j)) + " µm."
+                                               : "must be a finite number.");
   }
   if (in.correction.truncation) {
     if (!(*in.correction.truncation > 0 && *in.correction.truncation < 1))
