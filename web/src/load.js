@@ -7,7 +7,6 @@ import { measuredText } from './io/csv.js';
 import { MAX_CASE_DEPTH, nestingDepth } from './io/nesting.js';
 
 const isPlainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
-const isMeasuredField = (field) => /^(measured|correction)/.test(field || '');
 
 export function createLoader({ store, calculator, form, measuredView, paperCase }) {
   // Puts a checked case into the form and the state; the recompute follows from 'inputs'.
@@ -39,29 +38,35 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
       return;
     }
     store.setStatus(`Checking ${where === 'The link' ? 'the link' : where}…`, 'busy');
-    try {
-      await calculator.evaluate(c);
-      apply(c);
-      return;
-    } catch (error) {
-      if (!isMeasuredField(error.field) || error.code === 'Timeout') {
-        refused(where, error.message, fallback);
-        return;
-      }
-      const rest = { ...c };
-      delete rest.measured;
-      delete rest.correction;
+    // A refused measured grid or correction is taken out and the rest checked again.
+    let candidate = c, aside = null;
+    const notes = [], refusals = [];
+    for (;;) {
       try {
-        await calculator.evaluate(rest);
-      } catch (restError) {
-        refused(where, restError.message, fallback);
-        return;
+        await calculator.evaluate(candidate);
+        break;
+      } catch (error) {
+        const part = /^measured/.test(error.field || '') ? 'measured' : /^correction/.test(error.field || '') ? 'correction' : null;
+        if (!part || error.code === 'Timeout' || !(part in candidate)) {
+          refused(where, error.message, fallback);
+          return;
+        }
+        candidate = { ...candidate };
+        delete candidate.correction;
+        if (part === 'measured') {
+          aside = c.measured;
+          delete candidate.measured;
+          notes.push(`the measured grid is set aside, not used: ${error.message} Its text is in the box under ` +
+            '"Measured topography and correction": correct it there and press "Use this grid".');
+        } else {
+          notes.push(`its correction settings are left out: ${error.message}`);
+        }
+        refusals.push(error);
       }
-      apply(rest, { setAside: c.measured === undefined ? null : c.measured });
-      store.setNotice(`${where}: the measured grid is set aside, not used: ${error.message} ` +
-        'Its text is in the box under "Measured topography and correction": correct it there and press "Use this grid".');
-      store.refuse(error, null);
     }
+    apply(candidate, { setAside: aside });
+    for (const error of refusals) store.refuse(error, null);
+    if (notes.length) store.setNotice(`${where}: ${notes.join(' Also, ')}`);
   }
 
   return {

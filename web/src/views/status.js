@@ -18,7 +18,7 @@ export function mountStatus(store) {
   const kept = () => (store.state.result ? ' The results below are from the last good input.' : '');
   store.on('result', ({ ms }) => store.setStatus(`Computed in ${ms.toFixed(1)} ms in a WebAssembly worker.`, 'ok'));
   store.on('refusal', ({ error, caseObject }) => {
-    const what = caseObject ? 'Not computed' : 'Measured grid not used';
+    const what = caseObject ? 'Not computed' : 'Not used';
     store.setStatus(`${what}: ${error.message}${kept()}`, 'error');
     if (error.code === 'Timeout') store.setNotice(`${error.message}${kept()} Change an input to compute again.`);
   });
