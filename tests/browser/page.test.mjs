@@ -185,6 +185,10 @@ test('a shared link reopens the same job', async () => {
 test('the page also works opened from disk', async () => {
   const page = await openPage(pathToFileURL(path.join(site, 'index.html')).href);
   assert.equal((await tab2(page, 'nominal')).X, '22.4003 + 139.5089 φ₁');
+  await plotted(page);
+  for (const id of ['#plot-axes', '#plot-before-3d', '#plot-before-2d', '#sens-24']) {
+    assert.ok(await colours(page, id) > 30, `${id} draws something`);
+  }
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

@@ -8,14 +8,21 @@ const STOPS = [
 // For Plotly: [[0, 'rgb(...)'], ...].
 export const DEVIATION_SCALE = STOPS.map(([t, c]) => [t, `rgb(${c.join(',')})`]);
 
-// The colour of a value in -range..range, as [r, g, b]; `shade` darkens it (1 = as is).
-export function colourOf(value, range, shade = 1) {
-  const t = Math.min(1, Math.max(0, (value / range + 1) / 2));
+function interpolate(t) {
   let k = 1;
   while (k < STOPS.length - 1 && STOPS[k][0] < t) k++;
   const [t0, c0] = STOPS[k - 1], [t1, c1] = STOPS[k];
   const f = t1 > t0 ? (t - t0) / (t1 - t0) : 0;
-  return c0.map((c, i) => Math.round((c + (c1[i] - c) * f) * shade));
+  return c0.map((c, i) => Math.round(c + (c1[i] - c) * f));
+}
+const STEPS = 511;
+const TABLE = Array.from({ length: STEPS + 1 }, (_, k) => interpolate(k / STEPS));
+
+// The colour of a value in -range..range, as [r, g, b] (one of 512 steps); `shade` darkens it.
+export function colourOf(value, range, shade = 1) {
+  const t = Math.min(1, Math.max(0, (value / range + 1) / 2));
+  const c = TABLE[Math.round(t * STEPS)] || TABLE[STEPS / 2 + 0.5];
+  return shade === 1 ? c : c.map((v) => Math.round(v * shade));
 }
 
 export const css = (rgb) => `rgb(${rgb[0]},${rgb[1]},${rgb[2]})`;

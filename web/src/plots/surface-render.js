@@ -6,6 +6,7 @@ import { FONT, colourBar, sized } from './canvas.js';
 
 const RAD = Math.PI / 180;
 const HALF = { x: 0.8, y: 0.5, z: 0.3 };
+const MESH = 100;
 
 // Orthographic view: turned by az about the vertical, then tilted by el towards the viewer.
 function projector(view, width, height) {
@@ -64,20 +65,25 @@ export function renderSurface(base, overlay, width, spec, view) {
   line([[-bx, -by, floor], [bx, -by, floor], [bx, by, floor], [-bx, by, floor], [-bx, -by, floor]], '#b8bec8');
 
   // The surface, far quads first, each shaded by its slope towards the viewer.
+  // At most MESH lines each way are drawn (every grid point up to that; beyond, every k-th line,
+  // the last always): finer than a few pixels does not show, and the map beside shows them all.
+  const lines = (n) => { const k = Math.ceil((n - 1) / MESH); const out = []; for (let i = 0; i < n - 1; i += k) out.push(i); out.push(n - 1); return out; };
+  const [xi, yi] = [lines(x.length), lines(y.length)];
+  const pt = yi.map((i) => xi.map((j) => P(nx(x[j]), ny(y[i]), nz(z[i][j]))));
   const quads = [];
-  const pt = z.map((row, i) => row.map((v, j) => P(nx(x[j]), ny(y[i]), nz(v))));
-  for (let i = 0; i + 1 < y.length; i++) {
-    for (let j = 0; j + 1 < x.length; j++) {
-      const c = [pt[i][j], pt[i][j + 1], pt[i + 1][j + 1], pt[i + 1][j]];
-      const mean = (z[i][j] + z[i][j + 1] + z[i + 1][j + 1] + z[i + 1][j]) / 4;
-      const ux = nx(x[j + 1]) - nx(x[j]), uy = ny(y[i + 1]) - ny(y[i]);
-      const dzx = nz((z[i][j + 1] + z[i + 1][j + 1] - z[i][j] - z[i + 1][j]) / 2), dzy = nz((z[i + 1][j] + z[i + 1][j + 1] - z[i][j] - z[i][j + 1]) / 2);
+  for (let a = 0; a + 1 < yi.length; a++) {
+    for (let b = 0; b + 1 < xi.length; b++) {
+      const [i, i1, j, j1] = [yi[a], yi[a + 1], xi[b], xi[b + 1]];
+      const c = [pt[a][b], pt[a][b + 1], pt[a + 1][b + 1], pt[a + 1][b]];
+      const mean = (z[i][j] + z[i][j1] + z[i1][j1] + z[i1][j]) / 4;
+      const ux = nx(x[j1]) - nx(x[j]), uy = ny(y[i1]) - ny(y[i]);
+      const dzx = nz((z[i][j1] + z[i1][j1] - z[i][j] - z[i1][j]) / 2), dzy = nz((z[i1][j] + z[i1][j1] - z[i][j] - z[i][j1]) / 2);
       const slope = Math.hypot(dzx / ux, dzy / uy);
       quads.push({ c, depth: (c[0][2] + c[1][2] + c[2][2] + c[3][2]) / 4, rgb: colourOf(mean, range, 1 - 0.25 * Math.min(1, slope)) });
     }
   }
-  quads.sort((a, b) => b.depth - a.depth);
-  const edges = x.length <= 41 && y.length <= 41;
+  quads.sort((p, q) => q.depth - p.depth);
+  const edges = xi.length <= 41 && yi.length <= 41;
   for (const q of quads) {
     g.beginPath();
     q.c.forEach(([sx, sy], k) => (k ? g.lineTo(sx, sy) : g.moveTo(sx, sy)));
@@ -120,6 +126,6 @@ export function renderSurface(base, overlay, width, spec, view) {
   g.textAlign = 'center';
   g.fillText(spec.title, width / 2, 16);
   colourBar(g, width - 70, 40, height - 85, range, spec.colourTitle || 'µm');
-  return z.flatMap((row, i) => row.map((v, j) => ({ i, j, s: pt[i][j] })));
+  return yi.flatMap((i, a) => xi.map((j, b) => ({ i, j, s: pt[a][b] })));
 }
 
