@@ -3,13 +3,20 @@ import { colourOf, css, ticks, tickText } from './colours.js';
 
 export const FONT = '12px system-ui, sans-serif';
 
+// The canvas at width x height CSS pixels, sharp on the screen; its backing store is made anew
+// only when the size changed (that is the costly part).
 export function sized(canvas, width, height) {
   const dpr = window.devicePixelRatio || 1;
-  canvas.width = Math.round(width * dpr);
-  canvas.height = Math.round(height * dpr);
-  canvas.style.width = `${width}px`;
-  canvas.style.height = `${height}px`;
+  const [w, h] = [Math.round(width * dpr), Math.round(height * dpr)];
+  if (canvas.width !== w || canvas.height !== h) {
+    canvas.width = w;
+    canvas.height = h;
+    canvas.style.width = `${width}px`;
+    canvas.style.height = `${height}px`;
+  }
   const g = canvas.getContext('2d');
+  g.setTransform(1, 0, 0, 1, 0, 0);
+  g.clearRect(0, 0, w, h);
   g.setTransform(dpr, 0, 0, dpr, 0, 0);
   return g;
 }

@@ -3,6 +3,8 @@
 import { colourOf } from './colours.js';
 import { sized } from './canvas.js';
 
+let scratch = null;  // one grid point per pixel, scaled up into each thumbnail
+
 // z: rows root to tip (drawn bottom to top) of values along the gash (left to right).
 export function drawThumbnail(el, { z, range, title }) {
   let canvas = el.querySelector('canvas');
@@ -33,10 +35,9 @@ export function drawThumbnail(el, { z, range, title }) {
       image.data[at + 3] = 255;
     }
   }
-  const cells = document.createElement('canvas');
-  cells.width = cols;
-  cells.height = rows;
-  cells.getContext('2d').putImageData(image, 0, 0);
+  scratch = scratch || document.createElement('canvas');
+  [scratch.width, scratch.height] = [cols, rows];
+  scratch.getContext('2d').putImageData(image, 0, 0);
   g.imageSmoothingEnabled = false;
-  g.drawImage(cells, 6, 32, width - 12, height - 38);
+  g.drawImage(scratch, 6, 32, width - 12, height - 38);
 }
