@@ -45,9 +45,10 @@ export function hover(overlay, points, px, py, spec) {
     const d = (p.s[0] - px) ** 2 + (p.s[1] - py) ** 2;
     if (d < bestD) { best = p; bestD = d; }
   }
-  if (!best || !spec) return;
+  const lines = best && spec ? spec.hover(best.i, best.j) : [];
+  overlay.dataset.hover = lines.join('; ');
+  if (!lines.length) return;
   const [sx, sy] = best.s;
-  const lines = spec.hover(best.i, best.j);
   g.font = FONT;
   const w = Math.max(...lines.map((t) => g.measureText(t).width)) + 12;
   const bx = Math.min(sx + 10, overlay.clientWidth - w - 2), by = Math.max(2, sy - 12 - 16 * lines.length);

@@ -115,8 +115,9 @@ export function renderSurface(base, overlay, width, spec, view) {
     for (const v of a.values) label(tickText(v), P(...a.at(v)), 6);
     g.font = `600 ${FONT}`;
     if (a.top) {
-      const [sx, sy] = P(zx, zy, HALF.z);
-      g.fillText(a.title, sx, sy - 16);
+      // Above the box, over its vertical edge, clear of the surface.
+      const top = Math.min(...[[-1, -1], [1, -1], [1, 1], [-1, 1]].map(([u, v]) => P(u * HALF.x, v * HALF.y, HALF.z)[1]));
+      g.fillText(a.title, Math.max(P(zx, zy, HALF.z)[0], g.measureText(a.title).width / 2 + 4), top - 14);
     } else {
       const mid = P(...a.at((a.values[0] + a.values[a.values.length - 1]) / 2));
       label(a.title, mid, 14 + Math.abs(nx0) * widest + Math.abs(ny0) * 14);
