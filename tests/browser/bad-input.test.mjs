@@ -85,6 +85,13 @@ test('a case file whose measured grid has the wrong shape: refused once, its tex
   assert.equal(await count(page, 'errors'), errors, 'no refusal: the grid was not sent again');
   assert.equal(await page.getAttribute('#verdict', 'data-sse-after'), null);
   assert.equal((await page.inputValue('#measured-csv')).split('\n').length, 4);
+  // A good file afterwards loads, and the old notice goes.
+  const good = path.join(path.dirname(file), 'good.json');
+  writeFileSync(good, JSON.stringify({ ...c, measured: Array.from({ length: 5 }, () => Array(9).fill(2.5)) }));
+  await afterResult(page, () => page.setInputFiles('#load-case', good));
+  assert.equal(Number(await page.getAttribute('#verdict', 'data-sse-before')), 5 * 9 * 2.5 * 2.5);
+  assert.equal(await page.isVisible('#notice'), false);
+  assert.equal(await page.isVisible('#measured-error'), false);
   await page.context().close();
 });
 

@@ -66,7 +66,7 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
     }
     apply(candidate, { setAside: aside });
     for (const error of refusals) store.refuse(error, null);
-    if (notes.length) store.setNotice(`${where}: ${notes.join(' Also, ')}`);
+    store.setNotice(notes.length ? `${where}: ${notes.join(' Also, ')}` : null);  // an older notice ends
   }
 
   return {
