@@ -6,6 +6,7 @@
 //   and the plotting library's size (target at most 2 MB).
 import { spawn } from 'node:child_process';
 import { readFileSync } from 'node:fs';
+import { loadavg } from 'node:os';
 import { gzipSync } from 'node:zlib';
 import net from 'node:net';
 import path from 'node:path';
@@ -25,6 +26,7 @@ const url = `http://127.0.0.1:${port}/`;
 for (let i = 0; i < 100; i++) {
   try { if ((await fetch(url)).ok) break; } catch { await new Promise((r) => setTimeout(r, 100)); }
 }
+const loadBefore = loadavg()[0];
 const browser = await chromium.launch({
   executablePath: '/usr/bin/chromium',
   args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update'],
@@ -68,7 +70,7 @@ const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
 const line = (name, a, target) => console.log(`  ${name.padEnd(34)} median ${median(a).toFixed(0).padStart(5)}, best ${Math.min(...a).toFixed(0).padStart(5)}, worst ${Math.max(...a).toFixed(0).padStart(5)}  (target ${target})`);
 const plotly = readFileSync(path.join(site, 'plotly.min.js'));
 const app = readFileSync(path.join(site, 'app.js'));
-console.log(`\nthe page, ${runs} cold opens in headless Chromium (ms after navigation):`);
+console.log(`\nthe page, ${runs} cold opens in headless Chromium (ms after navigation; load average ${loadBefore.toFixed(1)} before, ${loadavg()[0].toFixed(1)} after):`);
 line('first numbers (Tab. 2 on screen):', first, '< 1000');
 line('plots drawn (every plot):', plotted, '< 1000');
 console.log(`the page, ${typed.length} keystrokes in a field (${keystrokes} per open), ms:`);
