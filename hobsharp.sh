@@ -37,7 +37,7 @@ install_missing() {
 }
 
 install_npm() {
-  if [ ! -d node_modules/plotly.js-dist-min ] || [ ! -d node_modules/playwright-core ] ||
+  if [ ! -d node_modules/plotly.js ] || [ ! -d node_modules/esbuild ] || [ ! -d node_modules/playwright-core ] ||
      [ package-lock.json -nt node_modules/.package-lock.json ]; then
     echo "== npm ci"
     npm ci --no-audit --no-fund

@@ -4,7 +4,9 @@
 function hobsharpWorkerMain(scope, factory) {
   let ready = factory();
   scope.onmessage = async (event) => {
-    const { id, caseObject } = event.data;
+    const { id, caseObject, stall } = event.data;
+    // The tests' stand-in for a calculation that never ends: the page's watchdog must end it.
+    if (stall) for (;;) { /* spin */ }
     const started = performance.now();
     try {
       const module = await ready;
@@ -14,7 +16,7 @@ function hobsharpWorkerMain(scope, factory) {
       // A refusal of the input leaves the module as it was; anything else (a trap) may not, so
       // the next case gets a fresh instance.
       if (!(e && typeof e === 'object' && 'field' in e)) ready = factory();
-      scope.postMessage({ id, ok: false, error: { message: e.message || String(e), field: e.field || '' } });
+      scope.postMessage({ id, ok: false, error: { message: e.message || String(e), field: e.field || '', code: e.code || '' } });
     }
   };
 }

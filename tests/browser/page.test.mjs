@@ -1,104 +1,14 @@
-// The page in Debian's Chromium, driven by playwright-core, served on localhost by python3.
+// The page in Debian's Chromium: what it shows, how it corrects, saves, loads and shares a job.
 // Screenshots of each main view go to test-output/browser/.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { spawn } from 'node:child_process';
-import { mkdirSync, readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
+import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import net from 'node:net';
 import path from 'node:path';
-import { fileURLToPath, pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
+import { pathToFileURL } from 'node:url';
+import { afterError, afterResult, after_, base, colours, openPage, plotted, shots, site, tab2, useBrowser } from './support.mjs';
 
-const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
-const site = process.env.HOBSHARP_SITE || path.join(root, 'build', 'wasm', 'site');
-const shots = path.join(root, 'test-output', 'browser');
-mkdirSync(shots, { recursive: true });
-
-let server, browser, base;
-
-function freePort() {
-  return new Promise((resolve) => {
-    const s = net.createServer().listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => resolve(port)); });
-  });
-}
-
-async function waitForServer(url) {
-  for (let i = 0; i < 100; i++) {
-    try { if ((await fetch(url)).ok) return; } catch { /* not yet */ }
-    await new Promise((r) => setTimeout(r, 100));
-  }
-  throw new Error(`the test server at ${url} did not start`);
-}
-
-before(async () => {
-  const port = await freePort();
-  server = spawn('/usr/bin/python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', site],
-                 { stdio: 'ignore' });
-  base = `http://127.0.0.1:${port}/`;
-  await waitForServer(base);
-  browser = await chromium.launch({
-    executablePath: '/usr/bin/chromium',
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update'],
-  });
-});
-
-after(async () => {
-  if (browser) await browser.close();
-  if (server) server.kill();
-});
-
-async function openPage(url = base) {
-  const context = await browser.newContext({ viewport: { width: 1500, height: 1100 }, acceptDownloads: true });
-  const page = await context.newPage();
-  const problems = [];
-  page.on('pageerror', (e) => problems.push(e.message));
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-  page.problems = problems;
-  await page.goto(url);
-  await page.waitForFunction(() => window.hobsharpTimings && window.hobsharpTimings.results > 0, null, { timeout: 20000 });
-  return page;
-}
-
-const count = (page, what) => page.evaluate((w) => window.hobsharpTimings[w], what);
-
-// Waits for the next result (or refusal) after `action`.
-async function after_(page, what, action) {
-  const n = await count(page, what);
-  await action();
-  await page.waitForFunction(([w, k]) => window.hobsharpTimings[w] > k, [what, n], { timeout: 20000 });
-}
-const afterResult = (page, action) => after_(page, 'results', action);
-const afterError = (page, action) => after_(page, 'errors', action);
-
-async function plotted(page) {
-  await page.waitForFunction(() => window.hobsharpTimings.draws > 0, null, { timeout: 30000 });
-  await page.waitForTimeout(300);
-}
-
-// How many distinct colours a rendered element shows: a plot that draws nothing has a handful.
-async function colours(page, selector) {
-  const png = await page.locator(selector).screenshot();
-  return page.evaluate(async (b64) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${b64}`;
-    await img.decode();
-    const c = document.createElement('canvas');
-    c.width = img.width; c.height = img.height;
-    const g = c.getContext('2d');
-    g.drawImage(img, 0, 0);
-    const d = g.getImageData(0, 0, c.width, c.height).data;
-    const seen = new Set();
-    for (let i = 0; i < d.length; i += 4) seen.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
-    return seen.size;
-  }, png.toString('base64'));
-}
-
-async function tab2(page, set) {
-  const out = {};
-  for (const a of ['X', 'Y', 'Z', 'A', 'B']) out[a] = (await page.textContent(`#tab2 td[data-set="${set}"][data-axis="${a}"]`)).trim();
-  return out;
-}
+useBrowser();
 
 // How fast it opens is measured by ./hobsharp.sh bench (tests/benchmark-page.mjs), not asserted here.
 test('the page opens with the paper example and shows Tab. 2 (left)', async () => {
@@ -275,6 +185,10 @@ test('a shared link reopens the same job', async () => {
 test('the page also works opened from disk', async () => {
   const page = await openPage(pathToFileURL(path.join(site, 'index.html')).href);
   assert.equal((await tab2(page, 'nominal')).X, '22.4003 + 139.5089 φ₁');
+  await plotted(page);
+  for (const id of ['#plot-axes', '#plot-before-3d', '#plot-before-2d', '#sens-24']) {
+    assert.ok(await colours(page, id) > 30, `${id} draws something`);
+  }
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

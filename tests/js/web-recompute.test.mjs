@@ -1,0 +1,101 @@
+// The store and the recompute (web/src/store.js, web/src/recompute.js) with a stand-in
+// calculator whose answers the test releases: the newest input wins, nothing waits on a timer,
+// and a measured grid the calculator refuses is not sent again.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { caseOf, createStore } from '../../web/src/store.js';
+import { startRecompute } from '../../web/src/recompute.js';
+
+function standIn() {
+  const calls = [];
+  return {
+    calls,
+    evaluate(caseObject) {
+      return new Promise((resolve, reject) => calls.push({ caseObject, resolve, reject }));
+    },
+  };
+}
+const settle = () => new Promise((resolve) => setImmediate(resolve));
+const form = (tilt) => ({ format: 'hobsharp-case/1', setup: { tilt } });
+
+function watch(store) {
+  const seen = [];
+  for (const e of ['inputs', 'computing', 'result', 'refusal', 'aside']) store.on(e, (d) => seen.push([e, d]));
+  return seen;
+}
+
+test('an input is sent at once; while it computes, only the newest waits, and only its result shows', async () => {
+  const store = createStore();
+  const calc = standIn();
+  startRecompute(store, calc);
+  const seen = watch(store);
+  store.setInputs({ form: form(15) }, { source: 'form', at: 1 });
+  assert.equal(calc.calls.length, 1, 'sent without a wait');
+  store.setInputs({ form: form(16) }, { source: 'form' });
+  store.setInputs({ form: form(17) }, { source: 'form' });
+  assert.equal(calc.calls.length, 1, 'nothing more is sent while one computes');
+  calc.calls[0].resolve({ result: { tilt: 15 }, ms: 1 });
+  await settle();
+  assert.equal(calc.calls.length, 2);
+  assert.equal(calc.calls[1].caseObject.setup.tilt, 17, 'the newest input, not 16');
+  assert.equal(seen.filter(([e]) => e === 'result').length, 0, 'an answer overtaken by a newer input is not shown');
+  calc.calls[1].resolve({ result: { tilt: 17 }, ms: 1 });
+  await settle();
+  const results = seen.filter(([e]) => e === 'result');
+  assert.equal(results.length, 1);
+  assert.equal(results[0][1].caseObject.setup.tilt, 17);
+  assert.deepEqual(store.state.result, { tilt: 17 });
+  assert.equal(store.state.status.text, 'Computing…');  // the status view, not mounted here, words the result
+});
+
+test('an unchanged case is not sent again', async () => {
+  const store = createStore();
+  const calc = standIn();
+  startRecompute(store, calc);
+  store.setInputs({ form: form(15) });
+  calc.calls[0].resolve({ result: {}, ms: 1 });
+  await settle();
+  store.setInputs({ form: form(15) });
+  assert.equal(calc.calls.length, 1);
+  store.setInputs({ form: form(15) }, { force: true });
+  assert.equal(calc.calls.length, 2);
+});
+
+test('a refusal keeps the last good result and reports the field', async () => {
+  const store = createStore();
+  const calc = standIn();
+  startRecompute(store, calc);
+  const seen = watch(store);
+  store.setInputs({ form: form(15) });
+  calc.calls[0].resolve({ result: { good: true }, ms: 1 });
+  await settle();
+  store.setInputs({ form: form(95) });
+  calc.calls[1].reject(Object.assign(new Error('setup.tilt: too large'), { field: 'setup.tilt' }));
+  await settle();
+  const refusal = seen.find(([e]) => e === 'refusal')[1];
+  assert.equal(refusal.error.field, 'setup.tilt');
+  assert.equal(refusal.caseObject.setup.tilt, 95);
+  assert.deepEqual(store.state.result, { good: true });
+});
+
+test('a measured grid the calculator refuses is set aside and not sent with later edits', async () => {
+  const store = createStore();
+  const calc = standIn();
+  startRecompute(store, calc);
+  const seen = watch(store);
+  store.setInputs({ form: form(15), measured: [[1, 2]], lockedAxes: ['A'] });
+  assert.deepEqual(calc.calls[0].caseObject.measured, [[1, 2]]);
+  assert.deepEqual(calc.calls[0].caseObject.correction, { lockedAxes: ['A'], locked: [] });
+  calc.calls[0].reject(Object.assign(new Error('measured: must have 5 rows'), { field: 'measured' }));
+  await settle();
+  assert.equal(seen.filter(([e]) => e === 'aside').length, 1);
+  assert.equal(store.state.measured, null);
+  assert.equal(calc.calls.length, 2, 'the rest is computed at once');
+  assert.equal(calc.calls[1].caseObject.measured, undefined);
+  calc.calls[1].resolve({ result: {}, ms: 1 });
+  await settle();
+  store.setInputs({ form: form(16) });
+  assert.equal(calc.calls.length, 3);
+  assert.equal(calc.calls[2].caseObject.measured, undefined, 'a later edit does not send it again');
+  assert.equal(caseOf(store.state).correction, undefined);
+});

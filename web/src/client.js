@@ -1,0 +1,86 @@
+// The calculator client: starts the worker that runs the WebAssembly module and sends it cases.
+// A request that gets no answer within the watchdog's time ends the worker; a fresh one starts.
+
+// From worker.js when served; opened from disk (where a page may not start a worker from a file
+// URL), from a blob of the module's factory and hobsharpWorkerMain, loaded into the page for it.
+export function loadScript(src) {
+  return new Promise((resolve, reject) => {
+    const el = document.createElement('script');
+    el.src = src;
+    el.onload = resolve;
+    el.onerror = () => reject(new Error(`${src} did not load`));
+    document.head.append(el);
+  });
+}
+
+let blobSource = null;
+async function startWorker() {
+  if (location.protocol !== 'file:') return new Worker('worker.js');
+  if (!blobSource) {
+    await loadScript('hobsharp.js');
+    await loadScript('worker-main.js');
+    blobSource = URL.createObjectURL(new Blob([`var _scriptDir;\nvar HobSharpModule = ${self.HobSharpModule.toString()};\n` +
+      `(${self.hobsharpWorkerMain.toString()})(self, HobSharpModule);\n`], { type: 'text/javascript' }));
+  }
+  return new Worker(blobSource);
+}
+
+function failure(message, fields = {}) {
+  return Object.assign(new Error(message), fields);
+}
+
+// evaluate(case) resolves to {result, ms} or rejects with an Error carrying the module's .field
+// (and .code), or .code 'Timeout' when the watchdog ended the worker.
+export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = {}) {
+  const pending = new Map();
+  let nextId = 1;
+  let started;
+
+  const rejectAll = (error) => {
+    for (const p of pending.values()) { clearTimeout(p.timer); p.reject(error); }
+    pending.clear();
+  };
+  const start = () => {
+    started = startWorker();
+    started.then((w) => {
+      w.onmessage = (event) => {
+        const { id, ok, result, error, ms } = event.data;
+        const p = pending.get(id);
+        if (!p) return;
+        pending.delete(id);
+        clearTimeout(p.timer);
+        if (ok) p.resolve({ result, ms });
+        else p.reject(failure(error.message, { field: error.field, code: error.code }));
+      };
+      w.onerror = (event) => rejectAll(failure(`The calculator stopped: ${event.message || 'the worker failed to start'}`));
+    }, (e) => rejectAll(failure(`The calculator did not start: ${e.message}`)));
+  };
+  const restart = () => {
+    const seconds = (client.watchdogMs / 1000).toFixed(client.watchdogMs < 10000 ? 1 : 0);
+    started.then((w) => w.terminate(), () => {});
+    rejectAll(failure(`The calculator did not answer within ${seconds} s and was restarted.`, { code: 'Timeout' }));
+    start();
+    onRestart();
+  };
+  const send = (message) => {
+    const id = nextId++;
+    return new Promise((resolve, reject) => {
+      const timer = setTimeout(restart, client.watchdogMs);
+      pending.set(id, { resolve, reject, timer });
+      started.then((w) => w.postMessage({ id, ...message })).catch((e) => {
+        pending.delete(id);
+        clearTimeout(timer);
+        reject(failure(`The case cannot be sent to the calculator: ${e.message}`, { field: '' }));
+      });
+    });
+  };
+
+  start();
+  const client = {
+    watchdogMs,
+    evaluate: (caseObject) => send({ caseObject }),
+    // For the tests: the worker stops answering (it spins) until the watchdog ends it.
+    stall: () => send({ stall: true }),
+  };
+  return client;
+}

@@ -1,0 +1,40 @@
+// Formatting: every number on the page goes through these; nothing that is not finite is shown.
+import { superscript } from './limits.js';
+
+export function fmt(v, significant = 7) {
+  if (typeof v !== 'number' || !Number.isFinite(v)) return '—';
+  if (v === 0) return '0';
+  const a = Math.abs(v);
+  if (a < 1e-4 || a >= 1e7) return v.toExponential(Math.max(0, significant - 3));
+  return String(Number(v.toPrecision(significant)));
+}
+
+export function fixed(v, digits) {
+  return typeof v === 'number' && Number.isFinite(v) ? v.toFixed(digits) : '—';
+}
+
+export function signed(v, digits) {
+  return typeof v === 'number' && Number.isFinite(v) ? (v > 0 ? '+' : '') + v.toFixed(digits) : '—';
+}
+
+// The motion parameter: phi_1 in rad for a helical gash, s in mm for a straight one.
+export function motionUnit(result) { return result && result.setup.motionUnit === 'mm' ? 'mm' : 'rad'; }
+export function motionSymbol(result) { return motionUnit(result) === 'mm' ? 's' : 'φ₁'; }
+
+// a0 + a1 t + a2 t² ... as text, zero terms left out, with typographic minus signs.
+export function polynomialText(coefficients, symbol) {
+  const terms = [];
+  coefficients.forEach((c, k) => {
+    if (c === 0 && !(k === 0 && coefficients.every((x) => x === 0))) return;
+    const value = fmt(Math.abs(c), 7);
+    const sign = c < 0 ? '−' : '+';
+    const power = k === 0 ? '' : k === 1 ? ` ${symbol}` : ` ${symbol}${superscript(k)}`;
+    terms.push({ sign, text: `${value}${power}` });
+  });
+  return terms.map((t, i) => (i === 0 ? (t.sign === '−' ? '−' : '') : ` ${t.sign} `) + t.text).join('');
+}
+
+// Text for HTML: the page's own strings go into innerHTML only through this.
+export function escapeHtml(text) {
+  return String(text).replace(/[&<>"']/g, (ch) => `&#${ch.charCodeAt(0)};`);
+}

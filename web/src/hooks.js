@@ -1,0 +1,33 @@
+// For the browser tests, the benchmark and anyone curious, from the store's events only:
+// window.hobsharpTimings says when the page showed its first result and drew its plots (ms after
+// navigation), how many results, refusals and plot passes it has had, and how long each change
+// of an input took to show its numbers. window.hobsharpTest lets the tests stall the worker.
+
+export function installHooks(store, calculator) {
+  const t = {
+    opened: performance.now(), firstResult: undefined, plotted: undefined,
+    results: 0, errors: 0, draws: 0,
+    inputToNumbers: [],  // ms from a user's input event to its numbers in the page
+  };
+  let inputAt = null;
+  store.on('inputs', ({ at }) => { if (typeof at === 'number') inputAt = at; });
+  store.on('result', () => {
+    const now = performance.now();
+    if (t.firstResult === undefined) t.firstResult = now;
+    if (inputAt !== null) t.inputToNumbers.push(now - inputAt);
+    inputAt = null;
+    t.results += 1;
+  });
+  store.on('refusal', () => { t.errors += 1; });
+  store.on('plots', ({ at }) => {
+    if (t.plotted === undefined) t.plotted = at;
+    t.draws += 1;
+  });
+  window.hobsharpTimings = t;
+  window.hobsharpTest = {
+    stallWorker(watchdogMs) {
+      calculator.watchdogMs = watchdogMs;
+      calculator.stall().catch(() => {});
+    },
+  };
+}

@@ -1,0 +1,48 @@
+// The header's buttons: the paper example, a case saved and loaded as JSON, the link copied,
+// and the results as CSV.
+import { caseOf } from '../store.js';
+import { chosenFileText, download } from './files.js';
+import { resultsCsv } from './results-csv.js';
+
+const $ = (selector) => document.querySelector(selector);
+const MAX_CASE_BYTES = 40 * 1024 * 1024;
+
+export function mountCaseFiles(store, loader) {
+  $('#preset-paper').addEventListener('click', () => {
+    store.state.offsets = {};
+    loader.paper();
+  });
+  $('#save-case').addEventListener('click', () => {
+    download('hobsharp-case.json', JSON.stringify(caseOf(store.state), null, 2) + '\n', 'application/json');
+  });
+  $('#load-case').addEventListener('change', async (e) => {
+    let file;
+    try {
+      file = await chosenFileText(e.target, MAX_CASE_BYTES,
+        (name, bytes) => `${name} is ${(bytes / 1048576).toFixed(1)} MB: too large for a case file.`);
+    } catch (err) {
+      store.setNotice(`${err.message} Nothing was changed.`);
+      return;
+    }
+    if (!file) return;
+    let c;
+    try {
+      c = JSON.parse(file.text);
+    } catch (err) {
+      store.setNotice(`${file.name} is not a case file: ${err.message}. Nothing was changed.`);
+      return;
+    }
+    loader.file(c, file.name);
+  });
+  $('#copy-link').addEventListener('click', async () => {
+    try {
+      await navigator.clipboard.writeText(location.href);
+      store.setStatus('The link to this job is on the clipboard.', 'ok');
+    } catch (e) {
+      store.setStatus(`Copy this link: ${location.href}`, 'ok');
+    }
+  });
+  $('#download-results').addEventListener('click', () => {
+    if (store.state.result) download('hobsharp-results.csv', resultsCsv(store.state.result), 'text/csv');
+  });
+}

@@ -1,0 +1,44 @@
+// HobSharp's page: a store, the views that show it, and the io that fills it. Nothing here
+// computes geometry; every number shown comes from the module's evaluate(case), in a worker.
+import { createStore } from './store.js';
+import { createCalculator } from './client.js';
+import { startRecompute } from './recompute.js';
+import { loadPlotly, mountPlots } from './plots/passes.js';
+import { mountForm } from './form.js';
+import { installHooks } from './hooks.js';
+import { mountStatus } from './views/status.js';
+import { mountDerived } from './views/derived.js';
+import { mountAxes } from './views/axes.js';
+import { mountWheel } from './views/wheel.js';
+import { mountTopography } from './views/topography.js';
+import { mountSensitivities } from './views/sensitivities.js';
+import { mountMeasured } from './views/measured.js';
+import { mountWhatIf } from './views/what-if.js';
+import { mountCaseFiles } from './io/case-files.js';
+import { caseFromHash, mountLink } from './io/url.js';
+import { createLoader } from './load.js';
+
+const store = createStore();
+const calculator = createCalculator();
+loadPlotly().catch(() => {});  // in parallel with the calculator; a failure is reported when drawing
+
+installHooks(store, calculator);
+mountStatus(store);
+const form = mountForm(store);
+const plots = mountPlots(store);
+mountDerived(store);
+mountAxes(store, plots);
+mountWheel(store, plots);
+mountTopography(store, plots);
+mountSensitivities(store, plots);
+const measuredView = mountMeasured(store);
+mountWhatIf(store, calculator, measuredView);
+const loader = createLoader({ store, calculator, form, measuredView, paperCase: self.HOBSHARP_PAPER_CASE });
+mountCaseFiles(store, loader);
+mountLink(store);
+startRecompute(store, calculator);
+
+const fromLink = caseFromHash(location.hash);
+if (fromLink && fromLink.case !== undefined) loader.link(fromLink.case);
+else if (fromLink) loader.refused('The link', fromLink.error, 'paper');
+else loader.paper();

@@ -1,0 +1,47 @@
+// Every change of the inputs is sent at once; while a calculation runs, only the newest change
+// waits (older ones are dropped), and a result is shown only if no newer input is waiting.
+import { caseOf } from './store.js';
+
+const isMeasuredField = (field) => /^(measured|correction)/.test(field || '');
+
+export function startRecompute(store, calculator) {
+  let running = false;
+  let waiting = null;
+
+  const refused = (error, caseObject) => {
+    // A measured grid the calculator refuses (say, it no longer fits the grid) is set aside, so
+    // that it is not sent again with every edit; the user's text stays in the CSV box.
+    if (caseObject.measured && isMeasuredField(error.field) && store.state.measured) {
+      store.state.measured = null;
+      store.emit('aside', { error });
+      store.refuse(error, caseObject);
+      request();
+      return;
+    }
+    store.refuse(error, caseObject);
+  };
+
+  async function next() {
+    const caseObject = waiting;
+    waiting = null;
+    running = true;
+    store.setStatus('Computing…', 'busy');
+    store.emit('computing', { caseObject });
+    try {
+      const { result, ms } = await calculator.evaluate(caseObject);
+      if (!waiting) store.accept(result, caseObject, ms);
+    } catch (error) {
+      if (!waiting) refused(error, caseObject);
+    }
+    running = false;
+    if (waiting) next();
+  }
+
+  function request() {
+    waiting = caseOf(store.state);
+    if (!running) next();
+  }
+
+  store.on('inputs', request);
+  return { request };
+}

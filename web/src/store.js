@@ -1,0 +1,79 @@
+// The page's state and its events. Views subscribe to events; nothing else holds state.
+//
+// Events (the detail passed to listeners):
+//   inputs     the case's inputs changed (form, measured grid, locks): {source, at}
+//   computing  a case went to the calculator: {caseObject}
+//   result     a result arrived for the newest inputs: {result, caseObject, ms}
+//   refusal    an input was refused, by the calculator or by the page: {error, caseObject}
+//   aside      a measured grid the calculator refused was set aside: {error}
+//   status     state.status changed
+//   notice     state.notice changed (a message that stays until the user changes something)
+//   view       state.view changed (normal or circular deviation)
+//   plots      every plot shows the newest result: {at}
+import { CASE_FORMAT } from './limits.js';
+
+export function initialState() {
+  return {
+    form: { format: CASE_FORMAT },  // the case as the form gives it
+    measured: null,          // rows root to tip of values along the gash, µm, or null
+    locked: [],              // coefficients kept out of the correction: 'X a0' ...
+    lockedAxes: [],          // axes kept out of the correction: 'X' ...
+    offsets: {},             // the what-if machine error: axis -> offset per coefficient
+    result: null,            // the last good result
+    resultCase: null,        // the case it came from
+    status: { text: 'Loading the calculator…', kind: '' },
+    notice: null,            // {text, kind}
+    view: 'normal',
+  };
+}
+
+// The case sent to the calculator: the form, plus the measured grid and the locks.
+export function caseOf(state) {
+  const c = structuredClone(state.form);
+  if (state.measured) {
+    c.measured = state.measured;
+    c.correction = { lockedAxes: [...state.lockedAxes], locked: [...state.locked] };
+  }
+  return c;
+}
+
+export function createStore(state = initialState()) {
+  const listeners = new Map();
+  const store = {
+    state,
+    on(event, listener) {
+      if (!listeners.has(event)) listeners.set(event, new Set());
+      listeners.get(event).add(listener);
+      return () => listeners.get(event).delete(listener);
+    },
+    emit(event, detail = {}) {
+      for (const listener of [...(listeners.get(event) || [])]) listener(detail, state);
+    },
+    // Changes the inputs and asks for a recompute; an unchanged case asks for nothing.
+    setInputs(patch, detail = {}) {
+      const before = JSON.stringify(caseOf(state));
+      Object.assign(state, patch);
+      if (JSON.stringify(caseOf(state)) !== before || detail.force) store.emit('inputs', detail);
+    },
+    setStatus(text, kind = '') {
+      state.status = { text, kind };
+      store.emit('status');
+    },
+    setNotice(text, kind = 'error') {
+      state.notice = text ? { text, kind } : null;
+      store.emit('notice');
+    },
+    setView(view) {
+      state.view = view;
+      store.emit('view');
+    },
+    accept(result, caseObject, ms) {
+      Object.assign(state, { result, resultCase: caseObject });
+      store.emit('result', { result, caseObject, ms });
+    },
+    refuse(error, caseObject = null) {
+      store.emit('refusal', { error, caseObject });
+    },
+  };
+  return store;
+}

@@ -1,0 +1,82 @@
+// Measured data and correction: the CSV box (paste, upload, use, clear) with its message, the
+// grid's shape, and the correction's verdict.
+import { fmt, signed } from '../format.js';
+import { MAX_MEASURED_BYTES, parseMeasuredCsv, tooLargeMessage } from '../io/csv.js';
+import { chosenFileText } from '../io/files.js';
+
+const $ = (selector) => document.querySelector(selector);
+const isMeasuredField = (field) => /^(measured|correction)/.test(field || '');
+
+function renderVerdict(r) {
+  const v = $('#verdict');
+  if (!r.correction) { v.textContent = ''; delete v.dataset.sseBefore; delete v.dataset.sseAfter; return; }
+  const c = r.correction;
+  v.dataset.sseBefore = c.sseBefore;
+  v.dataset.sseAfter = c.sseAfter;
+  v.textContent = `${c.verdict} Sum of squares ${fmt(c.sseBefore, 6)} → ${fmt(c.sseAfter, 4)} µm²; ` +
+    `thickness ${signed(c.thicknessBefore, 3)} → ${signed(c.thicknessAfter, 3)} µm; ` +
+    `${c.rank} singular directions used${c.amplifyingDropped ? `, ${c.amplifyingDropped} left out as amplifying` : ''}.`;
+}
+
+// Text pasted or dropped into the box counts against the same limit as an uploaded file; over
+// it, nothing is inserted (a 100 MB paste would freeze the page).
+function guardSize(box, refuse) {
+  const guard = (event, text, what) => {
+    const kept = box.value.length - (box.selectionEnd - box.selectionStart);
+    if (kept + text.length <= MAX_MEASURED_BYTES) return;
+    event.preventDefault();
+    refuse(tooLargeMessage(what, text.length));
+  };
+  box.addEventListener('paste', (e) => guard(e, e.clipboardData ? e.clipboardData.getData('text/plain') : '', 'The pasted text'));
+  box.addEventListener('drop', (e) => guard(e, e.dataTransfer ? e.dataTransfer.getData('text/plain') : '', 'The dropped text'));
+}
+
+export function mountMeasured(store) {
+  const box = $('#measured-csv');
+  const message = $('#measured-error');
+  const show = (text) => { message.textContent = text; message.hidden = false; };
+  const refuse = (text) => store.refuse({ field: 'measured', message: text });
+
+  const use = (text) => {
+    const r = store.state.result;
+    if (!r) { refuse('Compute a setup first, so that the grid is known.'); return; }
+    try {
+      const measured = parseMeasuredCsv(text, r.topography.r.length, r.topography.x.length);
+      message.hidden = true;
+      store.setInputs({ measured }, { source: 'measured', force: true });
+    } catch (e) {
+      refuse(e.message);
+    }
+  };
+
+  guardSize(box, refuse);
+  $('#use-measured').addEventListener('click', () => use(box.value));
+  $('#clear-measured').addEventListener('click', () => {
+    box.value = '';
+    message.hidden = true;
+    store.setInputs({ measured: null }, { source: 'measured', force: true });
+  });
+  $('#measured-file').addEventListener('change', async (e) => {
+    let file;
+    try {
+      file = await chosenFileText(e.target, MAX_MEASURED_BYTES, tooLargeMessage);
+    } catch (err) {
+      refuse(err.message);
+      return;
+    }
+    if (!file) return;
+    box.value = file.text;
+    use(file.text);
+  });
+
+  store.on('refusal', ({ error }) => { if (isMeasuredField(error.field)) show(error.message); });
+  store.on('result', ({ result, caseObject }) => {
+    if (caseObject.measured) message.hidden = true;
+    $('#grid-shape').textContent = `${result.topography.r.length} rows × ${result.topography.x.length} values`;
+    renderVerdict(result);
+  });
+  return {
+    // The text of a measured grid that came with a loaded case (set aside or used).
+    setText(text) { box.value = text; message.hidden = true; },
+  };
+}

@@ -1,0 +1,29 @@
+// The status line (what the calculator is doing) and the notice, a message that stays on screen
+// until the user changes an input or closes it (a refused link, a grid set aside, a restart).
+const $ = (selector) => document.querySelector(selector);
+
+export function mountStatus(store) {
+  const status = $('#status');
+  const notice = $('#notice');
+  store.on('status', (_, state) => {
+    status.textContent = state.status.text;
+    status.className = state.status.kind;
+  });
+  store.on('notice', (_, state) => {
+    notice.hidden = !state.notice;
+    $('#notice-text').textContent = state.notice ? state.notice.text : '';
+  });
+  $('#notice-close').addEventListener('click', () => store.setNotice(null));
+
+  const kept = () => (store.state.result ? ' The results below are from the last good input.' : '');
+  store.on('result', ({ ms }) => store.setStatus(`Computed in ${ms.toFixed(1)} ms in a WebAssembly worker.`, 'ok'));
+  store.on('refusal', ({ error, caseObject }) => {
+    const what = caseObject ? 'Not computed' : 'Not used';
+    store.setStatus(`${what}: ${error.message}${kept()}`, 'error');
+    if (error.code === 'Timeout') store.setNotice(`${error.message}${kept()} Change an input to compute again.`);
+  });
+  store.on('aside', ({ error }) => store.setNotice(`The measured grid is set aside, not used: ${error.message} ` +
+    'Its text stays in the box under "Measured topography and correction": correct it there, or the grid, and press "Use this grid".'));
+  // A user's change ends the notice; loading a case does not.
+  store.on('inputs', ({ source }) => { if (store.state.notice && source !== 'load') store.setNotice(null); });
+}

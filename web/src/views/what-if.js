@@ -1,0 +1,71 @@
+// The machine-error what-if: offsets the machine adds to each coefficient, ground into a face
+// that is then taken as measured; and the locks that keep axes or coefficients out of the
+// correction.
+import { AXES, coefficientUnit } from '../limits.js';
+import { motionUnit } from '../format.js';
+import { gridToCsv } from '../io/csv.js';
+
+const $ = (selector) => document.querySelector(selector);
+
+function renderTable(r, state) {
+  const degree = r.axes.X.length - 1;
+  const per = motionUnit(r);
+  const head = ['<tr><th>axis</th><th>lock</th>'];
+  for (let k = 0; k <= degree; k++) head.push(`<th>a${k}</th>`);
+  $('#what-if thead').innerHTML = head.join('') + '</tr>';
+  $('#what-if tbody').innerHTML = AXES.map((a) => {
+    const offsets = state.offsets[a] || [];
+    const cells = [];
+    for (let k = 0; k <= degree; k++) {
+      const name = `${a} a${k}`;
+      const unit = coefficientUnit(a, k, per);
+      cells.push(`<td><input type="number" step="any" data-offset="${a} ${k}" value="${offsets[k] || ''}" placeholder="0"
+        title="offset of ${name}, ${unit}"><span class="unit">${unit}</span>
+        <label class="lock"><input type="checkbox" data-lock="${name}" ${state.locked.includes(name) ? 'checked' : ''}> lock</label></td>`);
+    }
+    return `<tr><th>${a}</th><td><input type="checkbox" data-lock-axis="${a}" ${state.lockedAxes.includes(a) ? 'checked' : ''} title="lock every coefficient of ${a}"></td>${cells.join('')}</tr>`;
+  }).join('');
+}
+
+const toggled = (list, item, on) => (on ? [...new Set([...list, item])] : list.filter((x) => x !== item));
+
+export function mountWhatIf(store, calculator, measuredView) {
+  // Drawn again only when what it shows changed, so that a tick keeps the keyboard's place.
+  let drawn = '';
+  const render = (force) => {
+    const s = store.state;
+    if (!s.result) return;
+    const key = JSON.stringify([s.result.axes.X.length, motionUnit(s.result), s.locked, s.lockedAxes, s.offsets]);
+    if (force || key !== drawn) { renderTable(s.result, s); drawn = key; }
+  };
+  store.on('result', () => render(false));
+
+  $('#what-if').addEventListener('change', (e) => {
+    const t = e.target;
+    const s = store.state;
+    if (t.dataset.offset) {
+      const [a, k] = t.dataset.offset.split(' ');
+      (s.offsets[a] = s.offsets[a] || [])[Number(k)] = t.value === '' ? 0 : Number(t.value);
+    } else if (t.dataset.lock) {
+      store.setInputs({ locked: toggled(s.locked, t.dataset.lock, t.checked) }, { source: 'locks' });
+    } else if (t.dataset.lockAxis) {
+      store.setInputs({ lockedAxes: toggled(s.lockedAxes, t.dataset.lockAxis, t.checked) }, { source: 'locks' });
+    }
+  });
+  $('#reset-error').addEventListener('click', () => { store.state.offsets = {}; render(true); });
+  $('#generate-error').addEventListener('click', async () => {
+    const s = store.state;
+    if (!s.result) return;
+    const axes = {};
+    for (const a of AXES) axes[a] = s.result.axes[a].map((v, k) => v + ((s.offsets[a] || [])[k] || 0));
+    store.setStatus('Grinding the face with the machine error…', 'busy');
+    try {
+      const { result } = await calculator.evaluate({ ...structuredClone(s.form), axes });
+      const measured = result.topography.normal;
+      measuredView.setText(gridToCsv(measured, 4));
+      store.setInputs({ measured }, { source: 'measured', force: true });
+    } catch (e) {
+      store.refuse({ field: 'measured', message: `The machine error cannot be ground: ${e.message}` });
+    }
+  });
+}
