@@ -150,7 +150,7 @@ test('a saved case loads back', async () => {
   const csv = readFileSync(await profile.path(), 'utf8').trim().split('\n');
   assert.equal(csv[1], 'r_mm,R_mm,Z_mm');
   assert.equal(csv.length, 2 + 41);
-  assert.ok(Math.abs(Number(csv[2].split(',')[1]) - 49.999828) < 1e-5, csv[2]);  // rim at the root (MODEL.md)
+  assert.ok(Math.abs(Number(csv[2].split(',')[1]) - 49.999828) < 1e-5, csv[2]);  // rim at the root (docs/conventions.md#reference-figures)
   const [results] = await Promise.all([page.waitForEvent('download'), page.click('#download-results')]);
   assert.match(readFileSync(await results.path(), 'utf8'), /^X a1,mm\/rad,139\.508856916/m);
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-case')]);

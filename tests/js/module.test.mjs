@@ -51,7 +51,7 @@ test('the paper example through the wasm module matches the native figures to 1e
   assertClose(w.topography.normal, n.topography.normal, 1e-6, 'topography.normal (µm)');
   assertClose(w.topography.circular, n.topography.circular, 1e-6, 'topography.circular (µm)');
   assertClose(w.sensitivities.normal, n.sensitivities.normal, 1e-6, 'sensitivities (µm per unit)');
-  // And the paper's own figures (Tab. 2 left, MODEL.md).
+  // And the paper's own figures (Tab. 2 left, docs/conventions.md#reference-figures).
   assertClose(w.axes.X.slice(0, 2), [22.400299, 139.508857], 1e-6, 'X');
   assertClose(w.axes.Y[0], 39.307568, 1e-6, 'Y a0');
   assertClose(w.axes.Z[0], -116.44596, 1e-6, 'Z a0');
