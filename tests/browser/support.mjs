@@ -1,0 +1,104 @@
+// What the browser tests share: the page in Debian's Chromium, driven by playwright-core, served
+// on localhost by python3; the store's hooks to wait on; a check that a plot draws something.
+// Screenshots go to test-output/browser/.
+import { before, after } from 'node:test';
+import { spawn } from 'node:child_process';
+import { mkdirSync } from 'node:fs';
+import net from 'node:net';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+
+export const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+export const site = process.env.HOBSHARP_SITE || path.join(root, 'build', 'wasm', 'site');
+export const shots = path.join(root, 'test-output', 'browser');
+mkdirSync(shots, { recursive: true });
+
+let server, browser;
+export let base;
+
+function freePort() {
+  return new Promise((resolve) => {
+    const s = net.createServer().listen(0, '127.0.0.1', () => { const { port } = s.address(); s.close(() => resolve(port)); });
+  });
+}
+
+async function waitForServer(url) {
+  for (let i = 0; i < 100; i++) {
+    try { if ((await fetch(url)).ok) return; } catch { /* not yet */ }
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  throw new Error(`the test server at ${url} did not start`);
+}
+
+// Starts the server and the browser for the test file that calls it.
+export function useBrowser() {
+  before(async () => {
+    const port = await freePort();
+    server = spawn('/usr/bin/python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', site],
+                   { stdio: 'ignore' });
+    base = `http://127.0.0.1:${port}/`;
+    await waitForServer(base);
+    browser = await chromium.launch({
+      executablePath: '/usr/bin/chromium',
+      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update'],
+    });
+  });
+
+  after(async () => {
+    if (browser) await browser.close();
+    if (server) server.kill();
+  });
+}
+
+export async function openPage(url = base, { viewport = { width: 1500, height: 1100 }, permissions = [] } = {}) {
+  const context = await browser.newContext({ viewport, acceptDownloads: true, permissions });
+  const page = await context.newPage();
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(e.message));
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+  page.problems = problems;
+  await page.goto(url);
+  await page.waitForFunction(() => window.hobsharpTimings && window.hobsharpTimings.results > 0, null, { timeout: 20000 });
+  return page;
+}
+
+export const count = (page, what) => page.evaluate((w) => window.hobsharpTimings[w], what);
+
+// Waits for the next result (or refusal) after `action`.
+export async function after_(page, what, action) {
+  const n = await count(page, what);
+  await action();
+  await page.waitForFunction(([w, k]) => window.hobsharpTimings[w] > k, [what, n], { timeout: 20000 });
+}
+export const afterResult = (page, action) => after_(page, 'results', action);
+export const afterError = (page, action) => after_(page, 'errors', action);
+
+export async function plotted(page) {
+  await page.waitForFunction(() => window.hobsharpTimings.draws > 0, null, { timeout: 30000 });
+  await page.waitForTimeout(300);
+}
+
+// How many distinct colours a rendered element shows: a plot that draws nothing has a handful.
+export async function colours(page, selector) {
+  const png = await page.locator(selector).screenshot();
+  return page.evaluate(async (b64) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${b64}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.width; c.height = img.height;
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0);
+    const d = g.getImageData(0, 0, c.width, c.height).data;
+    const seen = new Set();
+    for (let i = 0; i < d.length; i += 4) seen.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
+    return seen.size;
+  }, png.toString('base64'));
+}
+
+export async function tab2(page, set) {
+  const out = {};
+  for (const a of ['X', 'Y', 'Z', 'A', 'B']) out[a] = (await page.textContent(`#tab2 td[data-set="${set}"][data-axis="${a}"]`)).trim();
+  return out;
+}
