@@ -124,6 +124,7 @@ test('the page opens with the paper example and shows Tab. 2 (left)', async () =
   }
   await page.locator('#axes-section').screenshot({ path: path.join(shots, 'axes.png') });
   await page.locator('#wheel-section').screenshot({ path: path.join(shots, 'wheel-profile.png') });
+  await page.evaluate(() => window.scrollTo(0, 0));  // the sticky status bar at the top of the picture
   await page.screenshot({ path: path.join(shots, 'page.png'), fullPage: true });
   assert.deepEqual(page.problems, []);
   await page.context().close();
@@ -180,6 +181,7 @@ test('a generated machine error is corrected, the sum of squares dropping at lea
   await page.locator('#sensitivity-section').screenshot({ path: path.join(shots, 'sensitivities.png') });
   await page.check('input[name="view"][value="normal"]');
   await page.waitForTimeout(1000);
+  await page.evaluate(() => window.scrollTo(0, 0));  // the sticky status bar at the top of the picture
   await page.screenshot({ path: path.join(shots, 'page-corrected.png'), fullPage: true });
 
   // Locking A: X takes over its share, and the correction still works.
