@@ -14,6 +14,10 @@ useBrowser();
 test('the page opens with the paper example and shows Tab. 2 (left)', async () => {
   const page = await openPage();
   console.log(`first result ${(await page.evaluate(() => window.hobsharpTimings.firstResult)).toFixed(0)} ms after opening`);
+  // The example opens with gamma_m and E_t derived (tests/browser/derived.test.mjs); the paper's
+  // Tab. 2 follows from its rounded values, typed in.
+  await afterResult(page, () => page.fill('[data-field="setup.settingAngle"]', '12.626'));
+  await afterResult(page, () => page.fill('[data-field="setup.centerDistance"]', '69.446'));
   const t = await tab2(page, 'nominal');
   assert.equal(t.X, '22.4003 + 139.5089 φ₁');
   assert.equal(t.Y, '39.30757');
@@ -30,6 +34,7 @@ test('the page opens with the paper example and shows Tab. 2 (left)', async () =
   }
   await page.locator('#axes-section').screenshot({ path: path.join(shots, 'axes.png') });
   await page.locator('#wheel-section').screenshot({ path: path.join(shots, 'wheel-profile.png') });
+  await page.evaluate(() => window.scrollTo(0, 0));  // the sticky status bar at the top of the picture
   await page.screenshot({ path: path.join(shots, 'page.png'), fullPage: true });
   assert.deepEqual(page.problems, []);
   await page.context().close();
@@ -44,8 +49,10 @@ test('changing the tilt changes the numbers', async () => {
   assert.notEqual(now.Z, before.Z);
   assert.equal(now.X, before.X);  // X = L_t + K1 tan(gamma_m) does not depend on the tilt
   const rad = Math.PI / 180;
-  const z = -(100 / Math.cos(12.626 * rad) + 10) / Math.cos(16 * rad);  // Eq. 9
-  assert.equal(now.Z, `−${Math.abs(z).toFixed(3)}`);
+  const gammaM = Math.atan(31.25 / (876.56 / (2 * Math.PI)));  // derived: tan(gamma_m) = r_p / P_t
+  assert.ok(Math.abs(gammaM / rad - 12.626) < 5e-4);
+  const z = -(100 / Math.cos(gammaM) + 10) / Math.cos(16 * rad);  // Eq. 9
+  assert.equal(now.Z, `−${Number(Math.abs(z).toPrecision(7))}`);
   await page.context().close();
 });
 
@@ -84,6 +91,7 @@ test('a generated machine error is corrected, the sum of squares dropping at lea
   await page.locator('#sensitivity-section').screenshot({ path: path.join(shots, 'sensitivities.png') });
   await page.check('input[name="view"][value="normal"]');
   await page.waitForTimeout(1000);
+  await page.evaluate(() => window.scrollTo(0, 0));  // the sticky status bar at the top of the picture
   await page.screenshot({ path: path.join(shots, 'page-corrected.png'), fullPage: true });
 
   // Locking A: X takes over its share, and the correction still works.
@@ -133,7 +141,10 @@ test('a bad CSV is refused with a message and the old results stay', async () =>
 
   // A bad field: the message at the field, the results kept.
   await afterError(page, () => page.fill('[data-field="hob.pitchDiameter"]', '90'));
+  // In the label's words; the calculator's message, with the JSON paths, in the tooltip.
   assert.match(await page.textContent('label:has([data-field="hob.pitchDiameter"]) .field-message'),
+               /Pitch diameter dp must be smaller than the outer diameter da/);
+  assert.match(await page.getAttribute('label:has([data-field="hob.pitchDiameter"]) .field-message', 'title'),
                /hob.pitchDiameter: must be smaller than hob.outerDiameter/);
   assert.deepEqual(await tab2(page, 'nominal'), shown);
   await page.locator('form').screenshot({ path: path.join(shots, 'bad-field.png') });
@@ -150,7 +161,9 @@ test('a saved case loads back', async () => {
   const csv = readFileSync(await profile.path(), 'utf8').trim().split('\n');
   assert.equal(csv[1], 'r_mm,R_mm,Z_mm');
   assert.equal(csv.length, 2 + 41);
-  assert.ok(Math.abs(Number(csv[2].split(',')[1]) - 49.999828) < 1e-5, csv[2]);  // rim at the root (docs/conventions.md#reference-figures)
+  // The rim at the gash root: exactly, now that E_t is derived from it (49.999828 mm with
+  // the paper's rounded E_t = 69.446 mm).
+  assert.ok(Math.abs(Number(csv[2].split(',')[1]) - 50) < 1e-5, csv[2]);
   const [results] = await Promise.all([page.waitForEvent('download'), page.click('#download-results')]);
   assert.match(readFileSync(await results.path(), 'utf8'), /^X a1,mm\/rad,139\.508856916/m);
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-case')]);
@@ -184,7 +197,7 @@ test('a shared link reopens the same job', async () => {
 
 test('the page also works opened from disk', async () => {
   const page = await openPage(pathToFileURL(path.join(site, 'index.html')).href);
-  assert.equal((await tab2(page, 'nominal')).X, '22.4003 + 139.5089 φ₁');
+  assert.equal((await tab2(page, 'nominal')).X, '22.40001 + 139.5089 φ₁');  // gamma_m derived
   await plotted(page);
   for (const id of ['#plot-axes', '#plot-before-3d', '#plot-before-2d', '#sens-24']) {
     assert.ok(await colours(page, id) > 30, `${id} draws something`);

@@ -1,5 +1,6 @@
-// The case form (Tab. 1 and the grid): reads and writes the case, shows the gash fields that
-// apply, and shows a refused field's message at the field.
+// The case form (Tab. 1 and the grid): reads and writes the case, and shows the gash fields that
+// apply. Typing changes the inputs at once; a finished change (the field left, Enter, a choice)
+// is an undo step. A refused field's message: views/field-errors.js.
 import { CASE_FORMAT, DEGREE, GRID } from './limits.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -60,42 +61,16 @@ function showGashFields() {
   for (const el of $$('.by-angle')) el.hidden = !helical || byLead;
 }
 
-function clearFieldErrors() {
-  for (const el of $$('#inputs .invalid')) el.classList.remove('invalid');
-  for (const el of $$('#inputs .field-message')) el.remove();
-  $('#form-error').hidden = true;
-}
-
-function showFieldError(error) {
-  const field = error.field || '';
-  if (/^(measured|correction)/.test(field)) return;  // the measured view shows those
-  const input = field && $(`#inputs [data-field="${field}"]`);
-  if (input) {
-    input.classList.add('invalid');
-    const note = document.createElement('span');
-    note.className = 'field-message';
-    note.textContent = error.message;
-    input.closest('label').append(note);
-  } else {
-    $('#form-error').textContent = error.message;
-    $('#form-error').hidden = false;
-  }
-}
-
 export function mountForm(store) {
   applyLimits();
   const changed = (event) => {
     if (event.target.matches('[data-field="hob.gash"], #gash-by')) showGashFields();
     store.setInputs({ form: readForm() }, { source: 'form', at: event.timeStamp });
+    if (event.type === 'change') store.emit('commit');
   };
   $('#inputs').addEventListener('input', changed);
   $('#inputs').addEventListener('change', changed);
-  store.on('result', clearFieldErrors);
-  store.on('refusal', ({ error, caseObject }) => {
-    if (!caseObject) return;  // refused by the page before it reached the calculator
-    clearFieldErrors();
-    showFieldError(error);
-  });
+  store.on('restore', (_, state) => writeForm(state.form));
   return {
     // Puts a case into the form; the caller sets the rest of the inputs with it.
     write(c) { writeForm(c); return readForm(); },

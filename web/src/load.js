@@ -2,29 +2,49 @@
 // it reaches the form and the state. A refused case shows why, in a notice that stays; a link's
 // case is replaced by the paper example, a file leaves the page as it was. A measured grid (or
 // its locks) that alone is refused is set aside: the rest loads, its text goes into the CSV box.
+// Everything else the case holds is kept (io/case-state.js): the run axes, the correction's
+// thresholds, the what-if offsets of its page member.
 import { CASE_FORMAT } from './limits.js';
 import { measuredText } from './io/csv.js';
 import { MAX_CASE_DEPTH, nestingDepth } from './io/nesting.js';
+import { calculatorCase, inputsFromCase } from './io/case-state.js';
 
 const isPlainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 
+// The paper's example with the setting angle and the centre distance derived, as the paper
+// derives them (tests/data/tab1.json fixes them at the paper's rounded values, for the native
+// tests); paper: those values, for the note that the derived ones equal them.
+export function paperInputs(paperCase) {
+  const c = structuredClone(paperCase);
+  const paper = { settingAngle: c.setup.settingAngle, centerDistance: c.setup.centerDistance };
+  delete c.setup.settingAngle;
+  delete c.setup.centerDistance;
+  return { c, paper };
+}
+
 export function createLoader({ store, calculator, form, measuredView, paperCase }) {
-  // Puts a checked case into the form and the state; the recompute follows from 'inputs'.
-  function apply(c, { setAside = null } = {}) {
-    const formCase = form.write(c);
-    const measured = setAside ? null : (c.measured || null);
+  // Puts a checked case into the form and the state; the recompute follows from 'inputs'. The
+  // load is an undo step.
+  function apply(c, { setAside = null, paper = null } = {}) {
+    const inputs = inputsFromCase(c);
+    const formCase = form.write(inputs.formCase);
+    const measured = setAside ? null : inputs.measured;
     measuredView.setText(setAside ? measuredText(setAside) : measured ? measuredText(measured) : '');
-    const correction = (measured && c.correction) || {};
-    store.setInputs({
-      form: formCase, measured,
-      locked: [...(correction.locked || [])], lockedAxes: [...(correction.lockedAxes || [])],
-    }, { source: 'load', force: true });
+    const { locked, lockedAxes, tuning, axes, offsets } = inputs;
+    store.setInputs({ form: formCase, measured, locked, lockedAxes, tuning, axes, offsets, paper },
+      { source: 'load', force: true });
+    store.emit('commit');
   }
 
   function refused(where, message, fallback) {
     store.setNotice(`${where}: ${message} ${fallback === 'paper' ? 'The paper example is loaded instead.' : 'Nothing was changed.'}`);
     store.setStatus(`${where} was not loaded.`, 'error');
-    if (fallback === 'paper') apply(structuredClone(paperCase));
+    if (fallback === 'paper') loadPaper();
+  }
+
+  function loadPaper() {
+    const { c, paper } = paperInputs(paperCase);
+    apply(c, { paper });
   }
 
   // where: "The link" or the file's name; fallback: 'paper' (a link on opening) or 'keep'.
@@ -37,13 +57,19 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
       refused(where, `the case holds lists or objects nested more than ${MAX_CASE_DEPTH} deep; a case nests at most 3 deep (measured, a row, a value).`, fallback);
       return;
     }
+    try {
+      inputsFromCase(c);  // the page's own member
+    } catch (error) {
+      refused(where, error.message, fallback);
+      return;
+    }
     store.setStatus(`Checking ${where === 'The link' ? 'the link' : where}…`, 'busy');
     // A refused measured grid or correction is taken out and the rest checked again.
     let candidate = c, aside = null;
     const notes = [], refusals = [];
     for (;;) {
       try {
-        await calculator.evaluate(candidate);
+        await calculator.evaluate(calculatorCase(candidate));
         break;
       } catch (error) {
         const part = /^measured/.test(error.field || '') ? 'measured' : /^correction/.test(error.field || '') ? 'correction' : null;
@@ -70,7 +96,7 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
   }
 
   return {
-    paper: () => apply(structuredClone(paperCase)),
+    paper: loadPaper,
     link: (c) => load(c, 'The link', 'paper'),
     file: (c, name) => load(c, name, 'keep'),
     refused,

@@ -1,14 +1,17 @@
 // The page's state and its events. Views subscribe to events; nothing else holds state.
 //
 // Events (the detail passed to listeners):
-//   inputs     the case's inputs changed (form, measured grid, locks): {source, at}
+//   inputs     the case's inputs changed (form, measured grid, locks, run axes): {source, at}
+//   commit     the user finished a change of the inputs (an undo step): {}
+//   restore    the inputs were set from an undo step: views that show inputs show them again
 //   computing  a case went to the calculator: {caseObject}
 //   result     a result arrived for the newest inputs: {result, caseObject, ms}
 //   refusal    an input was refused, by the calculator or by the page: {error, caseObject}
 //   aside      a measured grid the calculator refused was set aside: {error}
 //   status     state.status changed
 //   notice     state.notice changed (a message that stays until the user changes something)
-//   view       state.view changed (normal or circular deviation)
+//   view       what the views show changed: state.view (normal or circular deviation), or
+//              state.pinned (a pinned result, whose difference the views then show)
 //   plots      every plot shows the newest result: {at}
 import { CASE_FORMAT } from './limits.js';
 
@@ -18,23 +21,34 @@ export function initialState() {
     measured: null,          // rows root to tip of values along the gash, µm, or null
     locked: [],              // coefficients kept out of the correction: 'X a0' ...
     lockedAxes: [],          // axes kept out of the correction: 'X' ...
+    tuning: {},              // the correction's thresholds a loaded case gave: truncation, amplification
+    axes: null,              // the run axes of a second pass (a loaded case's "axes"), or null
     offsets: {},             // the what-if machine error: axis -> offset per coefficient
+    paper: null,             // the paper's own gamma_m and E_t while its example is loaded as derived
     result: null,            // the last good result
     resultCase: null,        // the case it came from
     status: { text: 'Loading the calculator…', kind: '' },
     notice: null,            // {text, kind}
     view: 'normal',
+    pinned: null,            // a result the views compare with: {result, caseObject}
   };
 }
 
-// The case sent to the calculator: the form, plus the measured grid and the locks.
+// The case sent to the calculator: the form, the run axes, and the measured grid with the locks.
 export function caseOf(state) {
   const c = structuredClone(state.form);
+  if (state.axes) c.axes = structuredClone(state.axes);
   if (state.measured) {
     c.measured = state.measured;
-    c.correction = { lockedAxes: [...state.lockedAxes], locked: [...state.locked] };
+    c.correction = { ...state.tuning, lockedAxes: [...state.lockedAxes], locked: [...state.locked] };
   }
   return c;
+}
+
+// The inputs as one value, for undo and redo: everything the user gave.
+const INPUTS = ['form', 'measured', 'locked', 'lockedAxes', 'tuning', 'axes', 'offsets', 'paper'];
+export function inputsOf(state) {
+  return structuredClone(Object.fromEntries(INPUTS.map((k) => [k, state[k]])));
 }
 
 export function createStore(state = initialState()) {
@@ -55,6 +69,13 @@ export function createStore(state = initialState()) {
       Object.assign(state, patch);
       if (JSON.stringify(caseOf(state)) !== before || detail.force) store.emit('inputs', detail);
     },
+    // Puts back the inputs of an undo step, and recomputes if the case differs.
+    restore(inputs) {
+      const before = JSON.stringify(caseOf(state));
+      Object.assign(state, structuredClone(inputs));
+      store.emit('restore');
+      if (JSON.stringify(caseOf(state)) !== before) store.emit('inputs', { source: 'restore' });
+    },
     setStatus(text, kind = '') {
       state.status = { text, kind };
       store.emit('status');
@@ -65,6 +86,10 @@ export function createStore(state = initialState()) {
     },
     setView(view) {
       state.view = view;
+      store.emit('view');
+    },
+    pin(pinned) {
+      state.pinned = pinned;
       store.emit('view');
     },
     accept(result, caseObject, ms) {

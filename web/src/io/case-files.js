@@ -1,6 +1,7 @@
 // The header's buttons: the paper example, a case saved and loaded as JSON, the link copied,
-// and the results as CSV.
-import { caseOf } from '../store.js';
+// and the results as CSV. The paper example asks before it replaces what the user gave beyond
+// the form (a measured grid, run axes, offsets, locks); Undo brings it back as well.
+import { savedCase, userData } from './case-state.js';
 import { chosenFileText, download } from './files.js';
 import { resultsCsv } from './results-csv.js';
 
@@ -9,11 +10,13 @@ const MAX_CASE_BYTES = 40 * 1024 * 1024;
 
 export function mountCaseFiles(store, loader) {
   $('#preset-paper').addEventListener('click', () => {
-    store.state.offsets = {};
+    const losing = userData(store.state);
+    if (losing.length && !window.confirm(`Load the paper example? It replaces ${losing.join(', ')}. ` +
+      'Save the case first to keep them (Undo also brings them back).')) return;
     loader.paper();
   });
   $('#save-case').addEventListener('click', () => {
-    download('hobsharp-case.json', JSON.stringify(caseOf(store.state), null, 2) + '\n', 'application/json');
+    download('hobsharp-case.json', JSON.stringify(savedCase(store.state), null, 2) + '\n', 'application/json');
   });
   $('#load-case').addEventListener('change', async (e) => {
     let file;

@@ -2,24 +2,27 @@
 // the five axis motions over the motion range.
 import { AXES, AXIS_NAMES, AXIS_UNIT, coefficientUnit, isRotary } from '../limits.js';
 import { fmt, motionSymbol, motionUnit, polynomialText } from '../format.js';
+import { pinnedCoefficients, pinnedPolynomial } from './pin.js';
 
 const $ = (selector) => document.querySelector(selector);
 
-function renderTab2(r) {
+function renderTab2(r, state) {
   const symbol = motionSymbol(r);
   const corrected = r.correction && r.correction.axes;
   $('#tab2 tbody').innerHTML = AXES.map((a) => `<tr>
       <th>${AXIS_NAMES[a]} <span class="unit">(${AXIS_UNIT[a]})</span></th>
-      <td data-set="nominal" data-axis="${a}">${polynomialText(r.axes[a], symbol)}</td>
-      <td data-set="corrected" data-axis="${a}">${corrected ? polynomialText(corrected[a], symbol) : '—'}</td>
+      <td data-set="nominal" data-axis="${a}"><span class="poly">${polynomialText(r.axes[a], symbol)}</span>${pinnedPolynomial(state, 'nominal', a)}</td>
+      <td data-set="corrected" data-axis="${a}"><span class="poly">${corrected ? polynomialText(corrected[a], symbol) : '—'}</span>${pinnedPolynomial(state, 'corrected', a)}</td>
     </tr>`).join('');
 }
 
-function renderCoefficients(r) {
+function renderCoefficients(r, state) {
   const corrected = r.correction && r.correction.axes;
+  const pinned = pinnedCoefficients(state);
   const degree = r.axes.X.length - 1;
   const per = motionUnit(r);
-  $('#coefficients thead').innerHTML = '<tr><th>coefficient</th><th>unit</th><th>nominal</th><th>corrected</th><th>change</th></tr>';
+  $('#coefficients thead').innerHTML = '<tr><th>coefficient</th><th>unit</th><th>nominal</th><th>corrected</th><th>change</th>' +
+    `${pinned ? '<th>nominal, difference to pinned</th>' : ''}</tr>`;
   const rows = [];
   for (const a of AXES) {
     for (let k = 0; k <= degree; k++) {
@@ -27,7 +30,8 @@ function renderCoefficients(r) {
       rows.push(`<tr><td>${a} a${k}</td><td>${coefficientUnit(a, k, per)}</td>
         <td class="num" data-coef="nominal ${a} ${k}">${fmt(n, 9)}</td>
         <td class="num" data-coef="corrected ${a} ${k}">${corrected ? fmt(c, 9) : '—'}</td>
-        <td class="num">${corrected ? fmt(c - n, 6) : '—'}</td></tr>`);
+        <td class="num">${corrected ? fmt(c - n, 6) : '—'}</td>${pinned
+          ? `<td class="num pin-diff" data-pin-coef="${a} ${k}">${pinned.axes ? fmt(pinned.axes[a][k], 6) : '—'}</td>` : ''}</tr>`);
     }
   }
   $('#coefficients tbody').innerHTML = rows.join('');
@@ -59,6 +63,8 @@ function drawAxisPlot(Plotly, r) {
 }
 
 export function mountAxes(store, plots) {
-  store.on('result', ({ result }) => { renderTab2(result); renderCoefficients(result); });
+  const render = (state) => { renderTab2(state.result, state); renderCoefficients(state.result, state); };
+  store.on('result', (_, state) => render(state));
+  store.on('view', (_, state) => { if (state.result) render(state); });  // a result pinned or unpinned
   plots.add(({ Plotly, result }) => drawAxisPlot(Plotly, result), { plotly: true });
 }

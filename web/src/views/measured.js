@@ -1,7 +1,7 @@
 // Measured data and correction: the CSV box (paste, upload, use, clear) with its message, the
 // grid's shape, and the correction's verdict.
 import { fmt, signed } from '../format.js';
-import { MAX_MEASURED_BYTES, parseMeasuredCsv, tooLargeMessage } from '../io/csv.js';
+import { MAX_MEASURED_BYTES, measuredText, parseMeasuredCsv, tooLargeMessage } from '../io/csv.js';
 import { chosenFileText } from '../io/files.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -44,6 +44,7 @@ export function mountMeasured(store) {
       const measured = parseMeasuredCsv(text, r.topography.r.length, r.topography.x.length);
       message.hidden = true;
       store.setInputs({ measured }, { source: 'measured', force: true });
+      store.emit('commit');
     } catch (e) {
       refuse(e.message);
     }
@@ -55,6 +56,7 @@ export function mountMeasured(store) {
     box.value = '';
     message.hidden = true;
     store.setInputs({ measured: null }, { source: 'measured', force: true });
+    store.emit('commit');
   });
   $('#measured-file').addEventListener('change', async (e) => {
     let file;
@@ -70,6 +72,16 @@ export function mountMeasured(store) {
   });
 
   store.on('refusal', ({ error }) => { if (isMeasuredField(error.field)) show(error.message); });
+  // An undo step puts its grid into the box, if it has another grid than the one used now.
+  let used = null;
+  store.on('inputs', (_, state) => { used = state.measured; });
+  store.on('restore', (_, state) => {
+    if (JSON.stringify(state.measured) !== JSON.stringify(used)) {
+      box.value = state.measured ? measuredText(state.measured) : '';
+      message.hidden = true;
+    }
+    used = state.measured;
+  });
   store.on('result', ({ result, caseObject }) => {
     if (caseObject.measured) message.hidden = true;
     $('#grid-shape').textContent = `${result.topography.r.length} rows × ${result.topography.x.length} values`;

@@ -1,5 +1,8 @@
 // The status line (what the calculator is doing) and the notice, a message that stays on screen
 // until the user changes an input or closes it (a refused link, a grid set aside, a restart).
+// Both stay in view while scrolling (a sticky bar).
+import { worded } from './field-names.js';
+
 const $ = (selector) => document.querySelector(selector);
 
 export function mountStatus(store) {
@@ -18,8 +21,8 @@ export function mountStatus(store) {
   const kept = () => (store.state.result ? ' The results below are from the last good input.' : '');
   store.on('result', ({ ms }) => store.setStatus(`Computed in ${ms.toFixed(1)} ms in a WebAssembly worker.`, 'ok'));
   store.on('refusal', ({ error, caseObject }) => {
-    const what = caseObject ? 'Not computed' : 'Not used';
-    store.setStatus(`${what}: ${error.message}${kept()}`, 'error');
+    const what = caseObject ? 'Not computed' : 'Measured grid not used';
+    store.setStatus(`${what}: ${worded(error).text}${kept()}`, 'error');
     if (error.code === 'Timeout') store.setNotice(`${error.message}${kept()} Change an input to compute again.`);
   });
   store.on('aside', ({ error }) => store.setNotice(`The measured grid is set aside, not used: ${error.message} ` +

@@ -3,46 +3,53 @@
 import { fixed, fmt, signed } from '../format.js';
 import { DEVIATION_SCALE, colourRange } from '../plots/colours.js';
 import { clearSurface, drawSurface } from '../plots/surface.js';
+import { comparedToPinned } from './pin.js';
 
 const $ = (selector) => document.querySelector(selector);
 const AXIS_X = 'x, along the gash (mm)', AXIS_R = 'r, root → tip (mm)';
 
-function figuresText(sse, max, thickness) {
+function figuresText({ sse, max, thickness }) {
   return `Sum of squares ${fmt(sse, 6)} µm² · largest |deviation| ${fixed(max, 3)} µm · thickness error ${signed(thickness, 3)} µm`;
 }
 
-// What the two columns show for a result: the simulated face, or measured and after correction.
+// What the two columns show for a result: the simulated face, or measured and after correction
+// (with their figures as numbers, for a comparison with a pinned result).
 function topographyViews(r, caseObject, view) {
   const circular = view === 'circular';
   const viewName = circular ? 'circular deviation' : 'normal deviation';
   if (r.correction) {
     const c = r.correction;
+    const beforeNumbers = { sse: c.sseBefore, max: c.maxBefore, thickness: c.thicknessBefore };
+    const afterNumbers = { sse: c.sseAfter, max: c.maxAfter, thickness: c.thicknessAfter };
     return {
       beforeTitle: 'Measured',
       before: circular ? c.measuredCircular : caseObject.measured, beforeName: `Measured ${viewName}`,
-      beforeFigures: figuresText(c.sseBefore, c.maxBefore, c.thicknessBefore),
+      beforeNumbers, beforeFigures: figuresText(beforeNumbers),
       after: circular ? c.residualCircular : c.residual, afterName: `After correction, ${viewName}`,
-      afterFigures: figuresText(c.sseAfter, c.maxAfter, c.thicknessAfter),
+      afterNumbers, afterFigures: figuresText(afterNumbers),
     };
   }
   const t = r.topography;
   return {
     beforeTitle: 'Ground face (simulated for the axes run)',
     before: circular ? t.circular : t.normal, beforeName: `Simulated ${viewName}`,
-    beforeFigures: figuresText(t.sse, t.max, t.thickness),
+    beforeNumbers: t, beforeFigures: figuresText(t),
     after: null, afterFigures: 'No correction yet: give a measured topography below.',
   };
 }
 
+// What is shown: a result's own views, or, while a result is pinned, their difference to it.
+const shown = (state) => comparedToPinned(topographyViews(state.result, state.resultCase, state.view), state, topographyViews);
+
 function renderFigures(state) {
-  const v = topographyViews(state.result, state.resultCase, state.view);
+  const v = shown(state);
   $('#before-title').textContent = v.beforeTitle;
   $('#figures-before').textContent = v.beforeFigures;
   $('#figures-after').textContent = v.afterFigures;
 }
 
 function drawSurfaces({ result: r, state }) {
-  const v = topographyViews(r, state.resultCase, state.view);
+  const v = shown(state);
   const { x, r: radii } = r.topography;
   const surface = (id, z, title) => drawSurface($(id), {
     x, y: radii, z, range: colourRange(z), height: 380, title: `${title} (3D)`,
@@ -55,7 +62,7 @@ function drawSurfaces({ result: r, state }) {
 }
 
 function drawMaps({ Plotly, result: r, state }) {
-  const v = topographyViews(r, state.resultCase, state.view);
+  const v = shown(state);
   const map = (id, z, title) => {
     const range = colourRange(z);
     return Plotly.react(id, [{

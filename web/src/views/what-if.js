@@ -1,6 +1,6 @@
 // The machine-error what-if: offsets the machine adds to each coefficient, ground into a face
 // that is then taken as measured; and the locks that keep axes or coefficients out of the
-// correction.
+// correction. Each finished change is an undo step; the offsets are saved with the case.
 import { AXES, coefficientUnit } from '../limits.js';
 import { motionUnit } from '../format.js';
 import { gridToCsv } from '../io/csv.js';
@@ -39,6 +39,7 @@ export function mountWhatIf(store, calculator, measuredView) {
     if (force || key !== drawn) { renderTable(s.result, s); drawn = key; }
   };
   store.on('result', () => render(false));
+  store.on('restore', () => render(true));
 
   $('#what-if').addEventListener('change', (e) => {
     const t = e.target;
@@ -46,24 +47,29 @@ export function mountWhatIf(store, calculator, measuredView) {
     if (t.dataset.offset) {
       const [a, k] = t.dataset.offset.split(' ');
       (s.offsets[a] = s.offsets[a] || [])[Number(k)] = t.value === '' ? 0 : Number(t.value);
+      store.emit('commit');
     } else if (t.dataset.lock) {
       store.setInputs({ locked: toggled(s.locked, t.dataset.lock, t.checked) }, { source: 'locks' });
     } else if (t.dataset.lockAxis) {
       store.setInputs({ lockedAxes: toggled(s.lockedAxes, t.dataset.lockAxis, t.checked) }, { source: 'locks' });
     }
+    if (t.dataset.lock || t.dataset.lockAxis) store.emit('commit');
   });
-  $('#reset-error').addEventListener('click', () => { store.state.offsets = {}; render(true); });
+  $('#reset-error').addEventListener('click', () => { store.state.offsets = {}; render(true); store.emit('commit'); });
   $('#generate-error').addEventListener('click', async () => {
     const s = store.state;
     if (!s.result) return;
+    // The machine adds the offsets to the axes it is given: the run axes of a second pass, if any.
+    const given = s.result.runAxes || s.result.axes;
     const axes = {};
-    for (const a of AXES) axes[a] = s.result.axes[a].map((v, k) => v + ((s.offsets[a] || [])[k] || 0));
+    for (const a of AXES) axes[a] = given[a].map((v, k) => v + ((s.offsets[a] || [])[k] || 0));
     store.setStatus('Grinding the face with the machine error…', 'busy');
     try {
       const { result } = await calculator.evaluate({ ...structuredClone(s.form), axes });
       const measured = result.topography.normal;
       measuredView.setText(gridToCsv(measured, 4));
       store.setInputs({ measured }, { source: 'measured', force: true });
+      store.emit('commit');
     } catch (e) {
       store.refuse({ field: 'measured', message: `The machine error cannot be ground: ${e.message}` });
     }

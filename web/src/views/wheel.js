@@ -2,10 +2,15 @@
 import { fixed } from '../format.js';
 import { download } from '../io/files.js';
 import { profileCsv } from '../io/results-csv.js';
+import { pinnedProfile } from './pin.js';
 
-function drawWheel(Plotly, r) {
+function drawWheel(Plotly, r, state) {
   const p = r.wheelProfile;
-  return Plotly.react('plot-wheel', [{
+  const pinned = pinnedProfile(state);
+  const note = document.querySelector('#wheel-pin');
+  note.hidden = !pinned;
+  note.textContent = pinned ? pinned.text : '';
+  return Plotly.react('plot-wheel', [...(pinned ? [pinned.trace] : []), {
     x: p.Z, y: p.R, mode: 'lines+markers', marker: { size: 4 }, name: 'axial profile',
     text: p.r.map((v) => `tooth-face radius r = ${fixed(v, 3)} mm`),
     hovertemplate: 'Z = %{x:.4f} mm<br>R = %{y:.4f} mm<br>%{text}<extra></extra>',
@@ -17,7 +22,7 @@ function drawWheel(Plotly, r) {
 }
 
 export function mountWheel(store, plots) {
-  plots.add(({ Plotly, result }) => drawWheel(Plotly, result), { plotly: true });
+  plots.add(({ Plotly, result, state }) => drawWheel(Plotly, result, state), { plotly: true });
   document.querySelector('#download-profile').addEventListener('click', () => {
     if (store.state.result) download('hobsharp-wheel-profile.csv', profileCsv(store.state.result), 'text/csv');
   });

@@ -1,0 +1,81 @@
+// A case saved and loaded (web/src/io/case-state.js): everything the user gave comes back, the
+// page's own member is stripped before the calculator sees the case, and a malformed one is
+// refused naming it.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { calculatorCase, inputsFromCase, offsetsToSave, savedCase, userData } from '../../web/src/io/case-state.js';
+import { caseOf, initialState } from '../../web/src/store.js';
+
+const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
+const axes = { X: [22.4, 139.5, 0, 0, 0], Y: [39.3, 0, 0, 0, 0], Z: [-116.4, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.22, 0, 0, 0, 0] };
+
+function stateWith(patch) {
+  return Object.assign(initialState(), { form: structuredClone(paper) }, patch);
+}
+
+test('save then load gives back the form, the run axes, the offsets, the measured grid, the locks and the thresholds', () => {
+  const offsets = { Z: [-0.01], B: [0, 0, 0.001] };
+  const state = stateWith({
+    measured: [[1, 2], [3, 4]], locked: ['B a2'], lockedAxes: ['A'], tuning: { truncation: 1e-5 }, axes, offsets,
+  });
+  const saved = JSON.parse(JSON.stringify(savedCase(state)));
+  assert.deepEqual(saved.page, { whatIf: offsets });
+  assert.deepEqual(saved.correction, { truncation: 1e-5, lockedAxes: ['A'], locked: ['B a2'] });
+  const back = inputsFromCase(saved);
+  assert.deepEqual(back.formCase, paper);
+  assert.deepEqual(back.axes, axes);
+  assert.deepEqual(back.offsets, offsets);
+  assert.deepEqual(back.measured, [[1, 2], [3, 4]]);
+  assert.deepEqual([back.locked, back.lockedAxes, back.tuning], [['B a2'], ['A'], { truncation: 1e-5 }]);
+  // Loaded again into a state, it saves the same.
+  const again = stateWith({ form: back.formCase, measured: back.measured, locked: back.locked, lockedAxes: back.lockedAxes,
+    tuning: back.tuning, axes: back.axes, offsets: back.offsets });
+  assert.deepEqual(JSON.parse(JSON.stringify(savedCase(again))), saved);
+});
+
+test('the calculator gets the run axes and the thresholds, never the page member', () => {
+  const state = stateWith({ axes, offsets: { Y: [0.01] }, measured: [[1]], tuning: { amplification: 2 } });
+  const c = caseOf(state);
+  assert.deepEqual(c.axes, axes);
+  assert.deepEqual(c.correction, { amplification: 2, lockedAxes: [], locked: [] });
+  assert.equal('page' in c, false);
+  const saved = savedCase(state);
+  assert.ok('page' in saved);
+  const sent = calculatorCase(saved);
+  assert.equal('page' in sent, false);
+  assert.deepEqual(sent, c);
+  assert.equal(calculatorCase(paper), paper, 'a case without a page member goes as it is');
+});
+
+test('locks and thresholds without a measured grid are saved, not sent', () => {
+  const state = stateWith({ locked: ['X a1'] });
+  assert.equal(caseOf(state).correction, undefined);
+  assert.deepEqual(savedCase(state).correction, { lockedAxes: [], locked: ['X a1'] });
+  assert.equal(savedCase(stateWith({})).correction, undefined);
+  assert.equal(savedCase(stateWith({})).page, undefined, 'no offsets, no page member');
+});
+
+test('offsets are saved as plain lists: holes are zeros, trailing zeros and empty axes left out', () => {
+  const sparse = [];
+  sparse[2] = 0.5;
+  assert.deepEqual(offsetsToSave({ X: sparse, Y: [0, 0], Z: [NaN, 1, 0] }), { X: [0, 0, 0.5], Z: [0, 1] });
+});
+
+test('a malformed page member is refused, naming it', () => {
+  const bad = (page) => () => inputsFromCase({ ...paper, page });
+  assert.throws(bad(3), /^Error: page: must be an object/);
+  assert.throws(bad({ whatIf: [] }), /^Error: page\.whatIf: must be an object/);
+  assert.throws(bad({ whatIf: { W: [1] } }), /^Error: page\.whatIf\.W: unknown axis/);
+  assert.throws(bad({ whatIf: { X: [1, 'a'] } }), /^Error: page\.whatIf\.X: must be a list of at most 7 finite numbers/);
+  assert.throws(bad({ whatIf: { X: new Array(8).fill(0) } }), /page\.whatIf\.X/);
+  assert.throws(bad({ notes: 'x' }), /^Error: page\.notes: unknown field \(expected: whatIf\)/);
+  assert.deepEqual(inputsFromCase({ ...paper, page: {} }).offsets, {});
+});
+
+test('what loading another case would replace, in words', () => {
+  assert.deepEqual(userData(stateWith({})), []);
+  assert.deepEqual(userData(stateWith({ measured: [[1, 2, 3], [4, 5, 6]], axes, offsets: { Y: [0.01, 0.02] }, locked: ['X a0'] })),
+    ['the measured grid (2 × 3 values)', 'the run axes', '2 what-if offsets', '1 lock']);
+  assert.deepEqual(userData(stateWith({ offsets: { Y: [0] } })), [], 'zero offsets are nothing');
+});

@@ -1,0 +1,84 @@
+// A case as saved in a file or a link, and the page's inputs it holds. Nothing the user gave is
+// dropped: the form's case, the measured grid, the locks and the correction's thresholds (kept
+// even without a measured grid), the run axes of a second pass, and the what-if offsets.
+//
+// The offsets are the page's own: they travel in a "page" member, {"page": {"whatIf": {"Y":
+// [0.01, 0, ...]}}}. The C++ case reader refuses unknown top-level members (onlyKnown in
+// core/case_json.cpp), so calculatorCase() strips it before a case goes to the calculator.
+import { AXES } from '../limits.js';
+import { caseOf } from '../store.js';
+
+const isPlainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+
+// The offsets as plain lists (no holes, no trailing zeros); axes without an offset left out.
+export function offsetsToSave(offsets) {
+  const out = {};
+  for (const a of AXES) {
+    const list = Array.from(offsets[a] || [], (v) => (typeof v === 'number' && Number.isFinite(v) ? v : 0));
+    while (list.length && list[list.length - 1] === 0) list.pop();
+    if (list.length) out[a] = list;
+  }
+  return out;
+}
+
+export function savedCase(state) {
+  const c = caseOf(state);
+  const correction = { ...state.tuning, lockedAxes: [...state.lockedAxes], locked: [...state.locked] };
+  if (!c.correction && (state.locked.length || state.lockedAxes.length || Object.keys(state.tuning).length)) {
+    c.correction = correction;
+  }
+  const whatIf = offsetsToSave(state.offsets);
+  if (Object.keys(whatIf).length) c.page = { whatIf };
+  return c;
+}
+
+export function calculatorCase(c) {
+  if (!isPlainObject(c) || !('page' in c)) return c;
+  const { page, ...rest } = c;
+  return rest;
+}
+
+function readPage(page) {
+  if (page === undefined) return {};
+  if (!isPlainObject(page)) throw new Error('page: must be an object such as {"whatIf": {"Y": [0.01]}}.');
+  for (const key of Object.keys(page)) {
+    if (key !== 'whatIf') throw new Error(`page.${key}: unknown field (expected: whatIf).`);
+  }
+  const whatIf = page.whatIf === undefined ? {} : page.whatIf;
+  if (!isPlainObject(whatIf)) throw new Error('page.whatIf: must be an object of axis offsets such as {"Y": [0.01]}.');
+  const offsets = {};
+  for (const [axis, list] of Object.entries(whatIf)) {
+    if (!AXES.includes(axis)) throw new Error(`page.whatIf.${axis}: unknown axis (expected one of: ${AXES.join(', ')}).`);
+    if (!Array.isArray(list) || list.length > 7 || !list.every((v) => typeof v === 'number' && Number.isFinite(v))) {
+      throw new Error(`page.whatIf.${axis}: must be a list of at most 7 finite numbers (the offsets of a0, a1, ...).`);
+    }
+    offsets[axis] = [...list];
+  }
+  return offsets;
+}
+
+// The page's inputs from a case the calculator accepted (without its page member); throws an
+// Error naming the member when the page member is malformed.
+export function inputsFromCase(c) {
+  const offsets = readPage(c.page);
+  const { measured, correction = {}, axes, page, ...formCase } = c;
+  const { locked = [], lockedAxes = [], ...tuning } = correction;
+  return {
+    formCase, measured: measured === undefined ? null : measured,
+    locked: [...locked], lockedAxes: [...lockedAxes], tuning: { ...tuning },
+    axes: axes === undefined ? null : structuredClone(axes), offsets,
+  };
+}
+
+// What loading another case would replace that the user gave beyond the form, in words; empty
+// when nothing (then no need to ask).
+export function userData(state) {
+  const out = [];
+  if (state.measured) out.push(`the measured grid (${state.measured.length} × ${(state.measured[0] || []).length} values)`);
+  if (state.axes) out.push('the run axes');
+  const offsets = Object.values(offsetsToSave(state.offsets)).flat().filter((v) => v !== 0).length;
+  if (offsets) out.push(`${offsets} what-if offset${offsets > 1 ? 's' : ''}`);
+  const locks = state.locked.length + state.lockedAxes.length;
+  if (locks) out.push(`${locks} lock${locks > 1 ? 's' : ''}`);
+  return out;
+}
