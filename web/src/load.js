@@ -7,7 +7,7 @@
 import { CASE_FORMAT } from './limits.js';
 import { measuredText } from './io/csv.js';
 import { MAX_CASE_DEPTH, nestingDepth } from './io/nesting.js';
-import { calculatorCase, inputsFromCase } from './io/case-state.js';
+import { calculatorCase, inputsFromCase, readPage } from './io/case-state.js';
 
 const isPlainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 
@@ -58,7 +58,7 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
       return;
     }
     try {
-      inputsFromCase(c);  // the page's own member
+      readPage(c.page);  // the page's own member; the rest is the calculator's to check
     } catch (error) {
       refused(where, error.message, fallback);
       return;

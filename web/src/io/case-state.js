@@ -38,7 +38,7 @@ export function calculatorCase(c) {
   return rest;
 }
 
-function readPage(page) {
+export function readPage(page) {
   if (page === undefined) return {};
   if (!isPlainObject(page)) throw new Error('page: must be an object such as {"whatIf": {"Y": [0.01]}}.');
   for (const key of Object.keys(page)) {
