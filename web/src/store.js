@@ -1,6 +1,7 @@
 // The page's state and its events. Views subscribe to events; nothing else holds state.
 //
 // Events (the detail passed to listeners):
+//   limits     the module's limits arrived (web/src/limits.js holds them); a case loads after
 //   inputs     the case's inputs changed (form, measured grid, locks): {source, at}
 //   computing  a case went to the calculator: {caseObject}
 //   result     a result arrived for the newest inputs: {result, caseObject, ms}

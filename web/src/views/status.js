@@ -1,5 +1,7 @@
 // The status line (what the calculator is doing) and the notice, a message that stays on screen
 // until the user changes an input or closes it (a refused link, a grid set aside, a restart).
+import { updatedText } from '../words.js';
+
 const $ = (selector) => document.querySelector(selector);
 
 export function mountStatus(store) {
@@ -16,7 +18,7 @@ export function mountStatus(store) {
   $('#notice-close').addEventListener('click', () => store.setNotice(null));
 
   const kept = () => (store.state.result ? ' The results below are from the last good input.' : '');
-  store.on('result', ({ ms }) => store.setStatus(`Computed in ${ms.toFixed(1)} ms in a WebAssembly worker.`, 'ok'));
+  store.on('result', ({ ms }) => store.setStatus(updatedText(ms), 'ok'));
   store.on('refusal', ({ error, caseObject }) => {
     const what = caseObject ? 'Not computed' : 'Not used';
     store.setStatus(`${what}: ${error.message}${kept()}`, 'error');

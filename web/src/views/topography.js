@@ -2,12 +2,16 @@
 // the figures (sum of squares, largest deviation, thickness error), a 3D surface and a map.
 import { fixed, fmt, signed } from '../format.js';
 import { DEVIATION_SCALE, colourRange } from '../plots/colours.js';
+import { gridFigures } from '../figures.js';
 import { clearSurface, drawSurface } from '../plots/surface.js';
 
 const $ = (selector) => document.querySelector(selector);
 const AXIS_X = 'x, along the gash (mm)', AXIS_R = 'r, root → tip (mm)';
 
-function figuresText(sse, max, thickness) {
+// The circular view's sum of squares and largest deviation are of its own grid; the thickness
+// error is the same in both views (the circular deviation at the mean point).
+function figuresText(sse, max, thickness, circular) {
+  if (circular) ({ sse, max } = gridFigures(circular));
   return `Sum of squares ${fmt(sse, 6)} µm² · largest |deviation| ${fixed(max, 3)} µm · thickness error ${signed(thickness, 3)} µm`;
 }
 
@@ -20,16 +24,16 @@ function topographyViews(r, caseObject, view) {
     return {
       beforeTitle: 'Measured',
       before: circular ? c.measuredCircular : caseObject.measured, beforeName: `Measured ${viewName}`,
-      beforeFigures: figuresText(c.sseBefore, c.maxBefore, c.thicknessBefore),
+      beforeFigures: figuresText(c.sseBefore, c.maxBefore, c.thicknessBefore, circular && c.measuredCircular),
       after: circular ? c.residualCircular : c.residual, afterName: `After correction, ${viewName}`,
-      afterFigures: figuresText(c.sseAfter, c.maxAfter, c.thicknessAfter),
+      afterFigures: figuresText(c.sseAfter, c.maxAfter, c.thicknessAfter, circular && c.residualCircular),
     };
   }
   const t = r.topography;
   return {
     beforeTitle: 'Ground face (simulated for the axes run)',
     before: circular ? t.circular : t.normal, beforeName: `Simulated ${viewName}`,
-    beforeFigures: figuresText(t.sse, t.max, t.thickness),
+    beforeFigures: figuresText(t.sse, t.max, t.thickness, circular && t.circular),
     after: null, afterFigures: 'No correction yet: give a measured topography below.',
   };
 }
