@@ -1,4 +1,5 @@
 // Eq. 17: one correction step by truncated SVD, then re-simulation.
+#include <map>
 #include <cmath>
 
 #include "correction.h"
@@ -73,6 +74,24 @@ TEST(Correction, ReportsXAgainstAAsUnobservable) {
   EXPECT_EQ(degrees, (std::vector<int>{0, 1, 2, 3, 4}));
   // The correction stays out of the unobservable combinations: no X - A fight.
   for (int k = 0; k <= 4; ++k) EXPECT_LT(std::abs(c->change(k)), 0.05) << "X a" << k;
+}
+
+// The units in the sentences are written as the page and the verdict write them: rad/rad², never
+// rad/rad^2.
+TEST(Correction, UnobservableUnitsUseSuperscripts) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials& nominal = job.nominalAxes;
+  auto c = correctionStep(groundFaceOf(job, nominal), nominal,
+                          topographyFor(job, machineError(nominal)).normal, CorrectionOptions{});
+  ASSERT_TRUE(c.ok());
+  std::map<int, std::string> byDegree;
+  for (const UnobservableCombination& u : c->unobservable) byDegree[u.coefficients[0].degree] = u.description;
+  ASSERT_EQ(byDegree.size(), 5u);
+  for (const auto& [k, text] : byDegree) EXPECT_EQ(text.find('^'), std::string::npos) << text;
+  EXPECT_NE(byDegree[0].find("mm on X a0"), std::string::npos) << byDegree[0];
+  EXPECT_NE(byDegree[1].find("rad/rad on A a1"), std::string::npos) << byDegree[1];
+  EXPECT_NE(byDegree[2].find("rad/rad\u00b2 on A a2"), std::string::npos) << byDegree[2];
+  EXPECT_NE(byDegree[4].find("mm/rad\u2074 on X a4"), std::string::npos) << byDegree[4];
 }
 
 TEST(Correction, RadialSecondDegreeShapeStaysInTheResidual) {

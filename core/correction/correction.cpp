@@ -14,11 +14,21 @@ bool isLocked(const Coefficient& c, const CorrectionOptions& o) {
          std::find(o.locked.begin(), o.locked.end(), c) != o.locked.end();
 }
 
+// k >= 2 in superscript digits (UTF-8), as the page and the verdict write units: rad/rad².
+std::string superscript(int k) {
+  static const char* const kDigits[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                        "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  std::string s;
+  if (k > 1)
+    for (char d : std::to_string(k)) s += kDigits[d - '0'];
+  return s;
+}
+
 std::string unitOf(const Coefficient& c, bool helical) {
   std::string u = isRotary(c.axis) ? "rad" : "mm";
   if (c.degree == 0) return u;
   const std::string per = helical ? "rad" : "mm";
-  return u + "/" + per + (c.degree > 1 ? "^" + std::to_string(c.degree) : "");
+  return u + "/" + per + superscript(c.degree);
 }
 
 UnobservableCombination combination(const std::vector<Coefficient>& coefficients,

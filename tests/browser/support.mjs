@@ -51,8 +51,10 @@ export function useBrowser() {
   });
 }
 
-export async function openPage(url = base, { viewport = { width: 1500, height: 1100 }, permissions = [] } = {}) {
+// prepare(context), if given, runs before the page opens (to route a request, say).
+export async function openPage(url = base, { viewport = { width: 1500, height: 1100 }, permissions = [], prepare } = {}) {
   const context = await browser.newContext({ viewport, acceptDownloads: true, permissions });
+  if (prepare) await prepare(context);
   const page = await context.newPage();
   const problems = [];
   page.on('pageerror', (e) => problems.push(e.message));

@@ -11,6 +11,7 @@ test('a grid reads back from its CSV, with any separator, comments, blank lines 
   const text = ['# measured on the machine, µm', '', ...grid.map((row, i) => row.join([',', ';', '\t', ' ', ' , '][i]))].join('\r\n');
   assert.deepEqual(parseMeasuredCsv(text, 5, 9), grid);
   assert.equal(gridToCsv([[1.23456, -2]], 2), '1.23, -2.00');
+  assert.equal(gridToCsv([[-0.00001, -0, 1e-9]], 4), '0.0000, 0.0000, 0.0000', 'no -0.0000 in a generated grid');
 });
 
 test('a grid of the wrong shape is refused, naming rows and columns', () => {

@@ -2,7 +2,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { escapeHtml, fixed, fmt, motionSymbol, motionUnit, polynomialText, signed } from '../../web/src/format.js';
-import { coefficientUnit } from '../../web/src/limits.js';
+import { coefficientUnit, setModuleLimits } from '../../web/src/limits.js';
+import { loadHobSharp } from '../../wasm/hobsharp.mjs';
+
+setModuleLimits((await loadHobSharp()).limits());  // the axes' units, as the page has them once its calculator is ready
 
 test('fmt gives 7 significant digits, exponents for tiny and huge values, and a dash for what is not finite', () => {
   assert.equal(fmt(0), '0');

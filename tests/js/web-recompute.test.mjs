@@ -70,7 +70,7 @@ test('a refusal keeps the last good result and reports the field', async () => {
   calc.calls[0].resolve({ result: { good: true }, ms: 1 });
   await settle();
   store.setInputs({ form: form(95) });
-  calc.calls[1].reject(Object.assign(new Error('setup.tilt: too large'), { field: 'setup.tilt' }));
+  calc.calls[1].reject(Object.assign(new Error('setup.tilt: too large'), { code: 'InvalidInput', field: 'setup.tilt' }));
   await settle();
   const refusal = seen.find(([e]) => e === 'refusal')[1];
   assert.equal(refusal.error.field, 'setup.tilt');
@@ -86,7 +86,7 @@ test('a measured grid the calculator refuses is set aside and not sent with late
   store.setInputs({ form: form(15), measured: [[1, 2]], lockedAxes: ['A'] });
   assert.deepEqual(calc.calls[0].caseObject.measured, [[1, 2]]);
   assert.deepEqual(calc.calls[0].caseObject.correction, { lockedAxes: ['A'], locked: [] });
-  calc.calls[0].reject(Object.assign(new Error('measured: must have 5 rows'), { field: 'measured' }));
+  calc.calls[0].reject(Object.assign(new Error('measured: must have 5 rows'), { code: 'InvalidInput', field: 'measured' }));
   await settle();
   assert.equal(seen.filter(([e]) => e === 'aside').length, 1);
   assert.equal(store.state.measured, null);

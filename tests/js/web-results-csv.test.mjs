@@ -5,9 +5,11 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { profileCsv, resultsCsv } from '../../web/src/io/results-csv.js';
+import { setModuleLimits } from '../../web/src/limits.js';
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
 const hobsharp = await loadHobSharp();
+setModuleLimits(hobsharp.limits());  // as the page does once its calculator is ready
 const numbers = (line) => line.split(',').slice(1).map(Number);
 
 test('the results CSV holds every coefficient with its unit, and each grid row by row', () => {

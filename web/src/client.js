@@ -29,8 +29,17 @@ function failure(message, fields = {}) {
   return Object.assign(new Error(message), fields);
 }
 
-// evaluate(case) resolves to {result, ms} or rejects with an Error carrying the module's .field
-// (and .code), or .code 'Timeout' when the watchdog ended the worker.
+// The page's Error for what the worker posts: a refusal keeps its code and field; anything else
+// is a fault of the calculator (code 'Internal', no field).
+export function workerError({ message, code, field }) {
+  const refusal = code === 'InvalidInput' || code === 'Unsolvable';
+  return failure(message, refusal ? { code, field: field || '' } : { code: 'Internal' });
+}
+
+// evaluate(case) resolves to {result, ms}; limits() to the module's limits(). Either rejects with
+// an Error whose .code is the module's ('InvalidInput' or 'Unsolvable', a refusal, with its
+// .field; 'Internal', a fault: the worker took a fresh module), or 'Timeout' when the watchdog
+// ended the worker.
 export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = {}) {
   const pending = new Map();
   let nextId = 1;
@@ -50,10 +59,10 @@ export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = 
         pending.delete(id);
         clearTimeout(p.timer);
         if (ok) p.resolve({ result, ms });
-        else p.reject(failure(error.message, { field: error.field, code: error.code }));
+        else p.reject(workerError(error));
       };
-      w.onerror = (event) => rejectAll(failure(`The calculator stopped: ${event.message || 'the worker failed to start'}`));
-    }, (e) => rejectAll(failure(`The calculator did not start: ${e.message}`)));
+      w.onerror = (event) => rejectAll(failure(`The calculator stopped: ${event.message || 'the worker failed to start'}`, { code: 'Internal' }));
+    }, (e) => rejectAll(failure(`The calculator did not start: ${e.message}`, { code: 'Internal' })));
   };
   const restart = () => {
     const seconds = (client.watchdogMs / 1000).toFixed(client.watchdogMs < 10000 ? 1 : 0);
@@ -70,7 +79,7 @@ export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = 
       started.then((w) => w.postMessage({ id, ...message })).catch((e) => {
         pending.delete(id);
         clearTimeout(timer);
-        reject(failure(`The case cannot be sent to the calculator: ${e.message}`, { field: '' }));
+        reject(failure(`The case cannot be sent to the calculator: ${e.message}`, { code: 'Internal' }));
       });
     });
   };
@@ -79,6 +88,7 @@ export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = 
   const client = {
     watchdogMs,
     evaluate: (caseObject) => send({ caseObject }),
+    limits: () => send({ limits: true }).then(({ result }) => result),
     // For the tests: the worker stops answering (it spins) until the watchdog ends it.
     stall: () => send({ stall: true }),
   };

@@ -19,7 +19,7 @@ function getPath(object, path) {
 // The limits the core sets, on the inputs they bound.
 function applyLimits() {
   const degree = $('[data-field="degree"]');
-  Object.assign(degree, { min: DEGREE.min, max: DEGREE.max });
+  Object.assign(degree, { min: DEGREE.min, max: DEGREE.max, placeholder: DEGREE.default });
   $('[data-limit="degree"]').textContent = `${DEGREE.min} to ${DEGREE.max}`;
   for (const [field, placeholder] of [['grid.radial', GRID.radial], ['grid.axial', GRID.axial]]) {
     Object.assign($(`[data-field="${field}"]`), { min: GRID.min, max: GRID.max, placeholder });
@@ -62,7 +62,7 @@ function showGashFields() {
 }
 
 export function mountForm(store) {
-  applyLimits();
+  store.on('limits', applyLimits);  // the module's, once the calculator is ready
   const changed = (event) => {
     if (event.target.matches('[data-field="hob.gash"], #gash-by')) showGashFields();
     store.setInputs({ form: readForm() }, { source: 'form', at: event.timeStamp });

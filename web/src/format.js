@@ -9,12 +9,17 @@ export function fmt(v, significant = 7) {
   return String(Number(v.toPrecision(significant)));
 }
 
+// v with `digits` decimals; a value that rounds to zero is "0.000", never "-0.000".
 export function fixed(v, digits) {
-  return typeof v === 'number' && Number.isFinite(v) ? v.toFixed(digits) : '—';
+  if (typeof v !== 'number' || !Number.isFinite(v)) return '—';
+  const text = v.toFixed(digits);
+  return Number(text) === 0 ? (0).toFixed(digits) : text;
 }
 
+// The same with a + on a positive value (one that does not round to zero).
 export function signed(v, digits) {
-  return typeof v === 'number' && Number.isFinite(v) ? (v > 0 ? '+' : '') + v.toFixed(digits) : '—';
+  const text = fixed(v, digits);
+  return text !== '—' && v > 0 && Number(text) !== 0 ? `+${text}` : text;
 }
 
 // The motion parameter: phi_1 in rad for a helical gash, s in mm for a straight one.

@@ -1,24 +1,45 @@
-// Names, units and limits that the C++ core owns, copied here in one place (and nowhere else in
-// the page), so that they can be read from the module instead once it exports them.
+// Names, units and limits. Those the C++ core owns (the case format, the grid limit, the degree
+// range, the default grid, the axes with their kinds and units) come from the module's limits()
+// once the calculator is ready: setModuleLimits fills the bindings below, in place, before the
+// page loads a case. Only the page's own words (the axes' descriptions) are written here.
 
-export const CASE_FORMAT = 'hobsharp-case/1';
+export let CASE_FORMAT;                  // 'hobsharp-case/1'
+export const AXES = [];                  // 'X' .. 'B', in the module's order
+export const AXIS_UNIT = {};             // axis -> 'mm' or 'rad'
+export const DEGREE = {};                // {min, max, default}
+// {min, max, radial, axial}: lines in each direction; a grid has at least its two ends.
+export const GRID = { min: 2 };
+let rotary = new Set();
+export const isRotary = (axis) => rotary.has(axis);
 
-// The five CNC axes (Eq. 9): three slides in mm, two rotations in rad.
-export const AXES = ['X', 'Y', 'Z', 'A', 'B'];
-export const AXIS_UNIT = { X: 'mm', Y: 'mm', Z: 'mm', A: 'rad', B: 'rad' };
-export const AXIS_NAMES = {
+// The page's descriptions of the module's axes (Eq. 9); an axis without one shows its name.
+const AXIS_WORDS = {
   X: 'C<sub>x</sub> horizontal stroke', Y: 'C<sub>y</sub> radial infeed', Z: 'C<sub>z</sub> wheel axial',
   A: 'ψ<sub>a</sub> hob rotation', B: 'ψ<sub>b</sub> wheel swivel',
 };
-export const isRotary = (axis) => AXIS_UNIT[axis] === 'rad';
+export const AXIS_NAMES = {};
 
-// Polynomial degree and measuring grid (lines in each direction), with the defaults the core
-// uses when a field is left out.
-export const DEGREE = { min: 1, max: 6 };
-export const GRID = { min: 2, max: 201, radial: 5, axial: 9 };
+// limits: what Module.limits() returns (README "The JS API"). Refuses a shape it cannot use.
+export function setModuleLimits(limits) {
+  const { format, maxGridLines, degree, defaultGrid, axes } = limits || {};
+  if (typeof format !== 'string' || !(maxGridLines >= GRID.min) || !degree || !defaultGrid || !Array.isArray(axes)) {
+    throw new Error('The calculator gave no limits the page can use.');
+  }
+  CASE_FORMAT = format;
+  Object.assign(DEGREE, { min: degree.min, max: degree.max, default: degree.default });
+  Object.assign(GRID, { max: maxGridLines, radial: defaultGrid.radial, axial: defaultGrid.axial });
+  AXES.splice(0, AXES.length, ...axes.map((a) => a.name));
+  for (const key of Object.keys(AXIS_UNIT)) delete AXIS_UNIT[key];
+  for (const a of axes) {
+    AXIS_UNIT[a.name] = a.unit;
+    AXIS_NAMES[a.name] = AXIS_WORDS[a.name] || a.name;
+  }
+  rotary = new Set(axes.filter((a) => a.kind === 'rotary').map((a) => a.name));
+}
 
-const SUPERSCRIPT = ['', '', '²', '³', '⁴', '⁵', '⁶'];
-export const superscript = (k) => SUPERSCRIPT[k] ?? `^${k}`;
+const SUPERSCRIPT = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+// k as a superscript (k ≥ 2; 1 is written without one): ², ³, ..., ¹⁰.
+export const superscript = (k) => (k <= 1 ? '' : String(k).split('').map((d) => SUPERSCRIPT[d]).join(''));
 
 // The unit of coefficient a_k of an axis, per (motion unit)^k: mm or rad per rad^k (helical gash)
 // or per mm^k (straight gash).

@@ -73,7 +73,7 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
         break;
       } catch (error) {
         const part = /^measured/.test(error.field || '') ? 'measured' : /^correction/.test(error.field || '') ? 'correction' : null;
-        if (!part || error.code === 'Timeout' || !(part in candidate)) {
+        if (error.code !== 'InvalidInput' || !part || !(part in candidate)) {  // a fault, a timeout: not the part
           refused(where, error.message, fallback);
           return;
         }

@@ -20,15 +20,18 @@ import { mountPaperNote } from './views/paper-note.js';
 import { mountRunAxes } from './views/run-axes.js';
 import { mountPin } from './views/pin.js';
 import { mountUndo } from './views/undo.js';
+import { mountAccess } from './views/access.js';
 import { mountCaseFiles } from './io/case-files.js';
 import { caseFromHash, mountLink } from './io/url.js';
 import { createLoader } from './load.js';
+import { setModuleLimits } from './limits.js';
 
 const store = createStore();
 const calculator = createCalculator();
 loadPlotly().catch(() => {});  // in parallel with the calculator; a failure is reported when drawing
 
 installHooks(store, calculator);
+mountAccess();
 mountStatus(store);
 const form = mountForm(store);
 mountFieldErrors(store);
@@ -50,7 +53,20 @@ mountCaseFiles(store, loader);
 mountLink(store);
 startRecompute(store, calculator);
 
-const fromLink = caseFromHash(location.hash);
-if (fromLink && fromLink.case !== undefined) loader.link(fromLink.case);
-else if (fromLink) loader.refused('The link', fromLink.error, 'paper');
-else loader.paper();
+// The module's limits first (the form's bounds, the axes, the case format), then the case.
+function openCase() {
+  const fromLink = caseFromHash(location.hash);
+  if (fromLink && fromLink.case !== undefined) loader.link(fromLink.case);
+  else if (fromLink) loader.refused('The link', fromLink.error, 'paper');
+  else loader.paper();
+}
+(function ready() {
+  calculator.limits().then((limits) => {
+    setModuleLimits(limits);
+    store.emit('limits');
+    openCase();
+  }).catch((e) => {
+    store.setStatus(e.message, 'error');
+    if (e.code === 'Timeout') ready();  // a fresh worker was started: ask it
+  });
+})();

@@ -2,7 +2,9 @@
 // waits (older ones are dropped), and a result is shown only if no newer input is waiting.
 import { caseOf } from './store.js';
 
-const isMeasuredField = (field) => /^(measured|correction)/.test(field || '');
+// The calculator refused the measured grid or its locks: an input error (code InvalidInput)
+// that names them. A fault (Internal) or a timeout says nothing about the grid.
+const refusesMeasured = (error) => error.code === 'InvalidInput' && /^(measured|correction)/.test(error.field || '');
 
 export function startRecompute(store, calculator) {
   let running = false;
@@ -11,7 +13,7 @@ export function startRecompute(store, calculator) {
   const refused = (error, caseObject) => {
     // A measured grid the calculator refuses (say, it no longer fits the grid) is set aside, so
     // that it is not sent again with every edit; the user's text stays in the CSV box.
-    if (caseObject.measured && isMeasuredField(error.field) && store.state.measured) {
+    if (caseObject.measured && refusesMeasured(error) && store.state.measured) {
       store.state.measured = null;
       store.emit('aside', { error });
       store.refuse(error, caseObject);

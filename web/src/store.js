@@ -1,6 +1,7 @@
 // The page's state and its events. Views subscribe to events; nothing else holds state.
 //
 // Events (the detail passed to listeners):
+//   limits     the module's limits arrived (web/src/limits.js holds them); a case loads after
 //   inputs     the case's inputs changed (form, measured grid, locks, run axes): {source, at}
 //   commit     the user finished a change of the inputs (an undo step): {}
 //   restore    the inputs were set from an undo step: views that show inputs show them again

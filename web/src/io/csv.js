@@ -1,6 +1,7 @@
 // Measured grids as CSV text: rows root to tip, values along the gash, µm; blank lines and lines
 // starting with # are skipped; commas, semicolons, tabs or spaces separate the values.
 import { GRID } from '../limits.js';
+import { fixed } from '../format.js';
 import { MAX_CASE_DEPTH, nestingDepth } from './nesting.js';
 
 // The largest measured text the page takes, pasted or uploaded: a grid of at most 201 x 201
@@ -33,9 +34,10 @@ export function parseMeasuredCsv(text, rows, cols) {
   return grid;
 }
 
-// A grid as the CSV box shows it; `digits` rounds the values (for a generated grid).
+// A grid as the CSV box shows it; `digits` rounds the values (for a generated grid), a value that
+// rounds to zero to 0.0000, never -0.0000.
 export function gridToCsv(grid, digits) {
-  const cell = (v) => (digits === undefined ? String(v) : v.toFixed(digits));
+  const cell = (v) => (digits === undefined ? String(v) : fixed(v, digits));
   return grid.map((row) => row.map(cell).join(', ')).join('\n');
 }
 

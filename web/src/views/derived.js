@@ -1,6 +1,7 @@
 // The derived values beside the form's fields: what the calculator used where a field was left
 // empty, and the lead or helix angle that goes with the other.
 import { fixed, fmt } from '../format.js';
+import { settingAngleNote } from '../words.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -11,7 +12,7 @@ export function mountDerived(store) {
     out('rakeAngle', `rake angle γc = ${fixed(s.rakeAngle, 4)}°`);
     out('gashHelixAngle', s.gashHelixAngle !== undefined ? `helix angle βc = ${fixed(s.gashHelixAngle, 4)}°` : '');
     out('gashLead', s.gashLead !== undefined ? `lead Lc = ${fixed(s.gashLead, 3)} mm` : '');
-    out('settingAngle', s.settingAngleDerived ? `auto: ${fixed(s.settingAngle, 4)}° (gash helix angle, by hand)` : `used: ${fmt(s.settingAngle)}°`);
+    out('settingAngle', settingAngleNote(s));
     out('centerDistance', s.centerDistanceDerived ? `auto: ${fixed(s.centerDistance, 6)} mm (wheel rim at the gash root)` : `used: ${fmt(s.centerDistance)} mm`);
     out('screwParameter', s.motionUnit === 'mm' ? 's (mm): straight gash, the hob travels along its axis'
       : `${fixed(s.screwParameter, 4)} φ₁ mm (P_t = L_c / 2π = ${fixed(s.screwParameter, 4)} mm/rad)`);

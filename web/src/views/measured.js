@@ -1,6 +1,6 @@
 // Measured data and correction: the CSV box (paste, upload, use, clear) with its message, the
 // grid's shape, and the correction's verdict.
-import { fmt, signed } from '../format.js';
+import { verdictText } from '../words.js';
 import { MAX_MEASURED_BYTES, measuredText, parseMeasuredCsv, tooLargeMessage } from '../io/csv.js';
 import { chosenFileText } from '../io/files.js';
 
@@ -13,9 +13,7 @@ function renderVerdict(r) {
   const c = r.correction;
   v.dataset.sseBefore = c.sseBefore;
   v.dataset.sseAfter = c.sseAfter;
-  v.textContent = `${c.verdict} Sum of squares ${fmt(c.sseBefore, 6)} → ${fmt(c.sseAfter, 4)} µm²; ` +
-    `thickness ${signed(c.thicknessBefore, 3)} → ${signed(c.thicknessAfter, 3)} µm; ` +
-    `${c.rank} singular directions used${c.amplifyingDropped ? `, ${c.amplifyingDropped} left out as amplifying` : ''}.`;
+  v.textContent = verdictText(c);
 }
 
 // Text pasted or dropped into the box counts against the same limit as an uploaded file; over

@@ -2,6 +2,7 @@
 // until the user changes an input or closes it (a refused link, a grid set aside, a restart).
 // Both stay in view while scrolling (a sticky bar).
 import { worded } from './field-names.js';
+import { updatedText } from '../words.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -19,7 +20,7 @@ export function mountStatus(store) {
   $('#notice-close').addEventListener('click', () => store.setNotice(null));
 
   const kept = () => (store.state.result ? ' The results below are from the last good input.' : '');
-  store.on('result', ({ ms }) => store.setStatus(`Computed in ${ms.toFixed(1)} ms in a WebAssembly worker.`, 'ok'));
+  store.on('result', ({ ms }) => store.setStatus(updatedText(ms), 'ok'));
   store.on('refusal', ({ error, caseObject }) => {
     const what = caseObject ? 'Not computed' : 'Measured grid not used';
     store.setStatus(`${what}: ${worded(error).text}${kept()}`, 'error');

@@ -2,11 +2,17 @@
 // the figures (sum of squares, largest deviation, thickness error), a 3D surface and a map.
 import { fixed, fmt, signed } from '../format.js';
 import { DEVIATION_SCALE, colourRange } from '../plots/colours.js';
+import { gridFigures } from '../figures.js';
 import { clearSurface, drawSurface } from '../plots/surface.js';
 import { comparedToPinned } from './pin.js';
 
 const $ = (selector) => document.querySelector(selector);
 const AXIS_X = 'x, along the gash (mm)', AXIS_R = 'r, root → tip (mm)';
+
+// The circular view's sum of squares and largest deviation are of its own grid; the thickness
+// error is the same in both views (the circular deviation at the mean point).
+const numbersOf = (sse, max, thickness, circularGrid) =>
+  (circularGrid ? { ...gridFigures(circularGrid), thickness } : { sse, max, thickness });
 
 function figuresText({ sse, max, thickness }) {
   return `Sum of squares ${fmt(sse, 6)} µm² · largest |deviation| ${fixed(max, 3)} µm · thickness error ${signed(thickness, 3)} µm`;
@@ -19,8 +25,8 @@ function topographyViews(r, caseObject, view) {
   const viewName = circular ? 'circular deviation' : 'normal deviation';
   if (r.correction) {
     const c = r.correction;
-    const beforeNumbers = { sse: c.sseBefore, max: c.maxBefore, thickness: c.thicknessBefore };
-    const afterNumbers = { sse: c.sseAfter, max: c.maxAfter, thickness: c.thicknessAfter };
+    const beforeNumbers = numbersOf(c.sseBefore, c.maxBefore, c.thicknessBefore, circular && c.measuredCircular);
+    const afterNumbers = numbersOf(c.sseAfter, c.maxAfter, c.thicknessAfter, circular && c.residualCircular);
     return {
       beforeTitle: 'Measured',
       before: circular ? c.measuredCircular : caseObject.measured, beforeName: `Measured ${viewName}`,
@@ -30,10 +36,11 @@ function topographyViews(r, caseObject, view) {
     };
   }
   const t = r.topography;
+  const beforeNumbers = numbersOf(t.sse, t.max, t.thickness, circular && t.circular);
   return {
     beforeTitle: 'Ground face (simulated for the axes run)',
     before: circular ? t.circular : t.normal, beforeName: `Simulated ${viewName}`,
-    beforeNumbers: t, beforeFigures: figuresText(t),
+    beforeNumbers, beforeFigures: figuresText(beforeNumbers),
     after: null, afterFigures: 'No correction yet: give a measured topography below.',
   };
 }

@@ -20,10 +20,11 @@ function renderTable(r, state) {
       const name = `${a} a${k}`;
       const unit = coefficientUnit(a, k, per);
       cells.push(`<td><input type="number" step="any" data-offset="${a} ${k}" value="${offsets[k] || ''}" placeholder="0"
-        title="offset of ${name}, ${unit}"><span class="unit">${unit}</span>
-        <label class="lock"><input type="checkbox" data-lock="${name}" ${state.locked.includes(name) ? 'checked' : ''}> lock</label></td>`);
+        title="offset of ${name}, ${unit}" aria-label="Offset of ${name} (${unit})"><span class="unit">${unit}</span>
+        <label class="lock"><input type="checkbox" data-lock="${name}" ${state.locked.includes(name) ? 'checked' : ''}
+          aria-label="Lock ${name} (${unit})"> lock</label></td>`);
     }
-    return `<tr><th>${a}</th><td><input type="checkbox" data-lock-axis="${a}" ${state.lockedAxes.includes(a) ? 'checked' : ''} title="lock every coefficient of ${a}"></td>${cells.join('')}</tr>`;
+    return `<tr><th>${a}</th><td><input type="checkbox" data-lock-axis="${a}" ${state.lockedAxes.includes(a) ? 'checked' : ''} title="lock every coefficient of ${a}" aria-label="Lock every coefficient of ${a}"></td>${cells.join('')}</tr>`;
   }).join('');
 }
 

@@ -1,0 +1,74 @@
+// The page's words and figures (web/src/words.js, web/src/figures.js, web/src/format.js): what an
+// engineer trying the page tripped on, said in the engineer's words.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { fixed, signed } from '../../web/src/format.js';
+import { gridFigures } from '../../web/src/figures.js';
+import { settingAngleNote, updatedText, verdictText } from '../../web/src/words.js';
+import { loadHobSharp } from '../../wasm/hobsharp.mjs';
+
+const hobsharp = await loadHobSharp();
+const paper = () => JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
+
+test('a value that rounds to zero has no sign: 0.000 µm, never −0.000 µm', () => {
+  for (const v of [-0.0004, -1e-12, -0, 0, 0.0004]) {
+    assert.equal(fixed(v, 3), '0.000', String(v));
+    assert.equal(signed(v, 3), '0.000', String(v));
+  }
+  assert.equal(fixed(-0.0005001, 3), '-0.001');
+  assert.equal(signed(-0.0005001, 3), '-0.001');
+  assert.equal(signed(0.0005001, 3), '+0.001');
+});
+
+test('the status after a calculation says that the numbers are updated and how long it took', () => {
+  assert.equal(updatedText(3.14), 'Updated — 3 ms');
+  assert.equal(updatedText(40.6), 'Updated — 41 ms');
+  assert.equal(updatedText(0.3), 'Updated — under 1 ms');
+  assert.doesNotMatch(updatedText(3.14), /WebAssembly|worker|Computed/);
+});
+
+test('the derived setting angle names the hand of a helical gash, and no hand for a straight one', () => {
+  const c = paper();
+  delete c.setup.settingAngle;
+  const right = hobsharp.evaluate(c).setup;
+  assert.equal(right.settingAngleDerived, true);
+  assert.match(settingAngleNote(right), /^auto: 12\.62\d\d° \(the gash helix angle, right hand\)$/);
+  c.hob.hand = 'left';
+  assert.match(settingAngleNote(hobsharp.evaluate(c).setup), /^auto: -12\.62\d\d° \(the gash helix angle, left hand\)$/);
+  c.hob.gash = 'straight';
+  delete c.hob.gashLead;
+  delete c.hob.hand;
+  delete c.setup.centerDistance;
+  const straight = hobsharp.evaluate(c).setup;
+  assert.equal(straight.settingAngleDerived, true);
+  assert.equal(settingAngleNote(straight), 'auto: 0.0000° (straight gash: no helix to follow)');
+  assert.doesNotMatch(settingAngleNote(straight), /hand/);
+  assert.equal(settingAngleNote({ settingAngle: 12.5, settingAngleDerived: false }), 'used: 12.5°');
+});
+
+test('the verdict says what the left-out combinations are, not "left out as amplifying"', () => {
+  const c = {
+    verdict: 'Partly uncorrectable: 40 % of the sum of squares is a shape no axis polynomial produces.',
+    sseBefore: 1234.5, sseAfter: 456.2, thicknessBefore: -0.0001, thicknessAfter: 2.5, rank: 10, amplifyingDropped: 10,
+  };
+  const text = verdictText(c);
+  assert.doesNotMatch(text, /amplif/);
+  assert.match(text, /^Partly uncorrectable: .* Sum of squares 1234\.5 → 456\.2 µm²; thickness 0\.000 → \+2\.500 µm\. /);
+  assert.match(text, /The correction changes 10 independent combinations of the coefficients; 10 combinations are left unchanged, because they would need large axis moves for little gain\.$/);
+  assert.match(verdictText({ ...c, rank: 1, amplifyingDropped: 1 }), /changes 1 independent combination of the coefficients; 1 combination is left unchanged, because it would need/);
+  assert.match(verdictText({ ...c, amplifyingDropped: 0 }), /combinations of the coefficients\.$/);
+});
+
+test('a grid\'s figures: the sum of squares and the largest deviation, NaN (a dash) if any value is not', () => {
+  assert.deepEqual(gridFigures([[1, -2], [0.5, 0]]), { sse: 5.25, max: 2 });
+  assert.deepEqual(gridFigures([[1, NaN]]), { sse: NaN, max: NaN });
+  // The module's own figures of the normal deviation are those of its grid.
+  const t = hobsharp.evaluate(paper()).topography;
+  const f = gridFigures(t.normal);
+  assert.ok(Math.abs(f.sse - t.sse) <= 1e-9 * t.sse);
+  assert.equal(f.max, t.max);
+  // The circular grid differs from the normal one, so do its figures.
+  const circular = gridFigures(t.circular);
+  assert.ok(Math.abs(circular.sse - t.sse) > 1e-3 * t.sse);
+});
