@@ -6,6 +6,10 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { calculatorCase, inputsFromCase, offsetsToSave, savedCase, userData } from '../../web/src/io/case-state.js';
 import { caseOf, initialState } from '../../web/src/store.js';
+import { setModuleLimits } from '../../web/src/limits.js';
+import { loadHobSharp } from '../../wasm/hobsharp.mjs';
+
+setModuleLimits((await loadHobSharp()).limits());  // the axes, as the page has them once its calculator is ready
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
 const axes = { X: [22.4, 139.5, 0, 0, 0], Y: [39.3, 0, 0, 0, 0], Z: [-116.4, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.22, 0, 0, 0, 0] };

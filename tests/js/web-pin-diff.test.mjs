@@ -3,6 +3,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { axesDifference, changedInputs, figuresDifference, gridDifference, profileDifference } from '../../web/src/pin-diff.js';
+import { setModuleLimits } from '../../web/src/limits.js';
+import { loadHobSharp } from '../../wasm/hobsharp.mjs';
+
+setModuleLimits((await loadHobSharp()).limits());  // the axes, as the page has them once its calculator is ready
 
 const result = (unit, r = [19, 40], x = [-70, 0, 70]) => ({ setup: { motionUnit: unit }, topography: { r, x } });
 const axes = (y) => ({ X: [1, 2], Y: [y, 0], Z: [0, 0], A: [0, 1], B: [0.2, 0] });
