@@ -17,7 +17,7 @@ function drawWheel(Plotly, r) {
 }
 
 export function mountWheel(store, plots) {
-  plots.add(({ Plotly, result }) => drawWheel(Plotly, result), { plotly: true });
+  plots.add(({ Plotly, result }) => drawWheel(Plotly, result));
   document.querySelector('#download-profile').addEventListener('click', () => {
     if (store.state.result) download('hobsharp-wheel-profile.csv', profileCsv(store.state.result), 'text/csv');
   });
