@@ -81,22 +81,57 @@ export async function plotted(page) {
   await page.waitForTimeout(300);
 }
 
-// How many distinct colours a rendered element shows: a plot that draws nothing has a handful.
-export async function colours(page, selector) {
-  const png = await page.locator(selector).screenshot();
-  return page.evaluate(async (b64) => {
+// Decodes a PNG in the page and, for each box (CSS px from the image's top left; the whole image
+// if none), tells how many distinct colours it shows, the share of its pixels that are not white
+// (inked) and how many pixels of its outer `border` px are not white (something cut off there).
+async function stats(page, png, boxes, border) {
+  return page.evaluate(async ([b64, boxes, border]) => {
     const img = new Image();
     img.src = `data:image/png;base64,${b64}`;
     await img.decode();
     const c = document.createElement('canvas');
     c.width = img.width; c.height = img.height;
-    const g = c.getContext('2d');
+    const g = c.getContext('2d', { willReadFrequently: true });
     g.drawImage(img, 0, 0);
-    const d = g.getImageData(0, 0, c.width, c.height).data;
-    const seen = new Set();
-    for (let i = 0; i < d.length; i += 4) seen.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
-    return seen.size;
-  }, png.toString('base64'));
+    return (boxes || [{ x: 0, y: 0, width: img.width, height: img.height }]).map((b) => {
+      const [x0, y0] = [Math.max(0, Math.round(b.x)), Math.max(0, Math.round(b.y))];
+      const [w, h] = [Math.min(img.width - x0, Math.round(b.width)), Math.min(img.height - y0, Math.round(b.height))];
+      const d = g.getImageData(x0, y0, w, h).data;
+      const seen = new Set();
+      let inked = 0, edge = 0;
+      for (let i = 0; i < d.length; i += 4) {
+        seen.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
+        const ink = d[i] < 245 || d[i + 1] < 245 || d[i + 2] < 245;
+        const p = i / 4, x = p % w, y = Math.floor(p / w);
+        if (ink) inked += 1;
+        if (ink && (x < border || y < border || x >= w - border || y >= h - border)) edge += 1;
+      }
+      return { colours: seen.size, inked: inked / (w * h), edge };
+    });
+  }, [png.toString('base64'), boxes, border]);
+}
+
+// How many distinct colours a rendered element shows: a plot that draws nothing has a handful.
+export async function colours(page, selector) {
+  const [s] = await stats(page, await page.locator(selector).screenshot(), null, 0);
+  return s.colours;
+}
+
+// The same for boxes within an element (relative to its top left).
+export async function regions(page, selector, boxes, border = 0) {
+  return stats(page, await page.locator(selector).screenshot(), boxes, border);
+}
+
+// Every heatmap of the sensitivity gallery (one Plotly figure) drawn: 25 images, each filled.
+export async function galleryDrawn(page) {
+  const boxes = await page.evaluate(() => {
+    const at = document.querySelector('#gallery').getBoundingClientRect();
+    return [...document.querySelectorAll('#gallery .hm image')].map((e) => {
+      const r = e.getBoundingClientRect();
+      return { x: r.x - at.x + 1, y: r.y - at.y + 1, width: r.width - 2, height: r.height - 2 };
+    });
+  });
+  return regions(page, '#gallery', boxes);
 }
 
 export async function tab2(page, set) {

@@ -1,8 +1,9 @@
 // When the plots are drawn. After every result (or a switch of view), once the numbers are on
-// screen: first the plots drawn on a canvas of our own, then the Plotly ones, once the plotting
-// library (plotly.min.js: Plotly's core with the heatmap and bar traces), which loads in parallel
-// with the calculator, is there. A newer result stops a pass under way; 'plots' is emitted when a
-// pass has drawn every plot.
+// screen and the plotting library (plotly.min.js: Plotly's core with the surface, heatmap and bar
+// traces), which loads in parallel with the calculator, is there: first the quick plots (axis
+// motions, wheel, maps, singular values), then, after the browser has shown them, the slow ones
+// (the 3D surfaces when they are open, the sensitivity gallery). A newer result stops a pass
+// under way; 'plots' is emitted when a pass has drawn every plot.
 import { loadScript } from '../client.js';
 
 let loading = null;
@@ -22,9 +23,10 @@ export function mountPlots(store) {
     const current = () => mine === generation;
     await nextFrame();
     try {
-      for (const plotly of [false, true]) {
-        const Plotly = plotly ? await loadPlotly() : null;
-        for (const d of drawers.filter((x) => x.plotly === plotly)) {
+      const Plotly = await loadPlotly();
+      for (const later of [false, true]) {
+        if (later) await nextFrame();
+        for (const d of drawers.filter((x) => x.later === later)) {
           if (!current() || !store.state.result) return;
           await d.draw({ Plotly, result: store.state.result, state: store.state, current });
         }
@@ -39,8 +41,11 @@ export function mountPlots(store) {
   store.on('result', pass);
   store.on('view', pass);
   return {
-    // draw({Plotly, result, state, current}) draws one view's plots (Plotly is there only for
-    // those added with {plotly: true}); current() turns false once a newer pass has started.
-    add(draw, { plotly }) { drawers.push({ draw, plotly }); },
+    // draw({Plotly, result, state, current}) draws one view's plots; those added with
+    // {later: true} are drawn after the others have shown. current() turns false once a newer
+    // pass has started.
+    add(draw, { later = false } = {}) { drawers.push({ draw, later }); },
+    // A view that shows a plot it did not show before (the 3D surfaces) asks for a pass.
+    redraw() { if (store.state.result) pass(); },
   };
 }

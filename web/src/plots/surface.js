@@ -1,65 +1,30 @@
-// A deviation topography as a 3D surface, drawn on a 2D canvas (WebGL in software rendering took
-// seconds per surface). Drag or the arrow keys turn it, a double click resets the view, and the
-// pointer shows the nearest grid point's values.
-import { hover } from './canvas.js';
-import { renderSurface } from './surface-render.js';
+// A deviation topography as a 3D surface: Plotly's surface trace (WebGL). Dragging turns it, the
+// wheel zooms, and the pointer shows the grid point's r, x and deviation with their units.
+import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
 
-const VIEW = { az: -35, el: 28 };
+export const AXIS_TITLES = { x: 'x along the gash (mm)', y: 'r root to tip (mm)', z: 'deviation (µm)' };
 
-// spec: {x, y, z (rows along y of values along x), range, height, title,
-//        axes: {x, y, z} titles, hover: (i, j) => text}
-export function drawSurface(el, spec) {
-  if (!el.hobsharpSurface) el.hobsharpSurface = mount(el);
-  el.hobsharpSurface.show(spec);
-}
+// The box is 1.4 : 1 : 0.6, seen from far enough that the axis titles stay inside the plot.
+const SCENE = {
+  aspectmode: 'manual', aspectratio: { x: 1.4, y: 1, z: 0.6 },
+  camera: { eye: { x: 1.75, y: -2.55, z: 1.3 }, center: { x: 0, y: 0, z: -0.12 } },
+};
 
-export function clearSurface(el) {
-  if (el.hobsharpSurface) el.hobsharpSurface.clear();
-}
+const axis = (title, extra = {}) => ({ title: { text: title, font: { size: 12 } }, tickfont: { size: 11 }, nticks: 5, ...extra });
 
-function mount(el) {
-  el.replaceChildren();
-  el.classList.add('surface');
-  const base = document.createElement('canvas');
-  const overlay = document.createElement('canvas');
-  overlay.tabIndex = 0;
-  overlay.setAttribute('role', 'img');
-  el.append(base, overlay);
-  const view = { ...VIEW };
-  let spec = null, frame = null, points = [];
-
-  const draw = () => {
-    frame = null;
-    if (!spec) return;
-    points = renderSurface(base, overlay, el.clientWidth || 600, spec, view);
-  };
-  const redraw = () => { if (!frame) frame = requestAnimationFrame(draw); };
-  const turn = (daz, del) => {
-    view.az += daz;
-    view.el = Math.min(90, Math.max(-10, view.el + del));
-    redraw();
-  };
-  let drag = null;
-  overlay.addEventListener('pointerdown', (e) => { drag = { x: e.clientX, y: e.clientY }; overlay.setPointerCapture(e.pointerId); });
-  overlay.addEventListener('pointerup', () => { drag = null; });
-  overlay.addEventListener('pointermove', (e) => {
-    if (drag) {
-      turn((e.clientX - drag.x) * 0.5, (e.clientY - drag.y) * 0.5);
-      drag = { x: e.clientX, y: e.clientY };
-    } else if (spec) {
-      const r = overlay.getBoundingClientRect();
-      hover(overlay, points, e.clientX - r.left, e.clientY - r.top, spec);
-    }
-  });
-  overlay.addEventListener('pointerleave', () => hover(overlay, [], 0, 0, spec));
-  overlay.addEventListener('dblclick', () => { Object.assign(view, VIEW); redraw(); });
-  overlay.addEventListener('keydown', (e) => {
-    const step = { ArrowLeft: [-5, 0], ArrowRight: [5, 0], ArrowUp: [0, -5], ArrowDown: [0, 5] }[e.key];
-    if (step) { e.preventDefault(); turn(...step); }
-  });
-  new ResizeObserver(redraw).observe(el);
-  return {
-    show(next) { spec = next; el.hidden = false; overlay.setAttribute('aria-label', `${next.title}: 3D surface; arrow keys turn it`); draw(); },
-    clear() { spec = null; points = []; el.hidden = true; for (const c of [base, overlay]) c.getContext('2d').clearRect(0, 0, c.width, c.height); },
-  };
+// spec: {x (along the gash), y (radii), z (rows along y of values along x), range (± of the colour
+// scale and of the z axis, shared with the plot it is compared with), title}
+export function drawSurface(Plotly, el, { x, y, z, range, title }) {
+  return Plotly.react(el, [{
+    type: 'surface', x, y, z, cmin: -range, cmax: range, colorscale: DEVIATION_SCALE,
+    colorbar: deviationColourBar(),
+    hovertemplate: 'r = %{y:.2f} mm<br>x = %{x:.2f} mm<br>deviation %{z:.3f} µm<extra></extra>',
+  }], {
+    title: { text: `${title} (3D)`, font: { size: 14 } }, height: 400, margin: { t: 36, r: 10, b: 0, l: 0 },
+    scene: {
+      ...SCENE,
+      xaxis: axis(AXIS_TITLES.x), yaxis: axis(AXIS_TITLES.y),
+      zaxis: axis(AXIS_TITLES.z, { range: [-range, range] }),
+    },
+  }, { responsive: true, displaylogo: false });
 }

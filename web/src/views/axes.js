@@ -1,8 +1,9 @@
 // The axis polynomials: Tab. 2 (nominal and corrected), the coefficients with their units, and
-// the five axis motions over the motion range.
-import { AXES, AXIS_NAMES, AXIS_UNIT, coefficientUnit, isRotary } from '../limits.js';
+// the axis motions over the motion range (web/src/plots/axis-motion.js).
+import { AXES, AXIS_NAMES, AXIS_UNIT, coefficientUnit } from '../limits.js';
 import { fmt, motionSymbol, motionUnit, polynomialText } from '../format.js';
 import { pinnedCoefficients, pinnedPolynomial } from './pin.js';
+import { drawAxisMotion } from '../plots/axis-motion.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -37,34 +38,9 @@ function renderCoefficients(r, state) {
   $('#coefficients tbody').innerHTML = rows.join('');
 }
 
-const polyAt = (c, t) => c.reduceRight((acc, a) => acc * t + a, 0);
-
-function drawAxisPlot(Plotly, r) {
-  const n = 121, lo = r.motion.min, hi = r.motion.max;
-  const t = Array.from({ length: n }, (_, i) => lo + ((hi - lo) * i) / (n - 1));
-  const traces = [];
-  const add = (axes, dash, label) => {
-    for (const a of AXES) {
-      traces.push({
-        x: t, y: t.map((v) => polyAt(axes[a], v)), name: `${a} ${label}`, mode: 'lines',
-        yaxis: isRotary(a) ? 'y2' : 'y', line: { dash },
-      });
-    }
-  };
-  add(r.axes, 'solid', '(nominal)');
-  if (r.correction) add(r.correction.axes, 'dot', '(corrected)');
-  return Plotly.react('plot-axes', traces, {
-    title: { text: 'Axis motions over the motion range' }, margin: { t: 40, r: 60, b: 50, l: 60 }, height: 320,
-    xaxis: { title: { text: `${motionSymbol(r)} (${motionUnit(r)})` } },
-    yaxis: { title: { text: 'X, Y, Z (mm)' } },
-    yaxis2: { title: { text: 'A, B (rad)' }, overlaying: 'y', side: 'right' },
-    legend: { orientation: 'h', y: -0.25 },
-  }, { responsive: true, displaylogo: false });
-}
-
 export function mountAxes(store, plots) {
   const render = (state) => { renderTab2(state.result, state); renderCoefficients(state.result, state); };
   store.on('result', (_, state) => render(state));
   store.on('view', (_, state) => { if (state.result) render(state); });  // a result pinned or unpinned
-  plots.add(({ Plotly, result }) => drawAxisPlot(Plotly, result), { plotly: true });
+  plots.add(({ Plotly, result }) => drawAxisMotion(Plotly, 'plot-axes', result));
 }

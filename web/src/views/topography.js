@@ -1,13 +1,14 @@
 // The deviation topography of the rake face, before and after correction, normal or circular:
-// the figures (sum of squares, largest deviation, thickness error), a 3D surface and a map.
+// the figures (sum of squares, largest deviation, thickness error), a map and, on demand, a 3D
+// surface.
 import { fixed, fmt, signed } from '../format.js';
-import { DEVIATION_SCALE, colourRange } from '../plots/colours.js';
+import { colourRange } from '../plots/colours.js';
+import { drawMap } from '../plots/maps.js';
+import { drawSurface } from '../plots/surface.js';
 import { gridFigures } from '../figures.js';
-import { clearSurface, drawSurface } from '../plots/surface.js';
 import { comparedToPinned } from './pin.js';
 
 const $ = (selector) => document.querySelector(selector);
-const AXIS_X = 'x, along the gash (mm)', AXIS_R = 'r, root → tip (mm)';
 
 // The circular view's sum of squares and largest deviation are of its own grid; the thickness
 // error is the same in both views (the circular deviation at the mean point).
@@ -55,34 +56,37 @@ function renderFigures(state) {
   $('#figures-after').textContent = v.afterFigures;
 }
 
-function drawSurfaces({ result: r, state }) {
+// The 3D surfaces are drawn only while "3D surfaces" is ticked: Plotly's WebGL surface takes
+// seconds in a browser without a graphics card, so the maps come first and alone by default.
+const show3d = () => $('#show-3d').checked;
+
+// Measured and after correction share one colour range (and z range), so that they compare.
+function drawSurfaces({ Plotly, result: r, state }) {
   const v = shown(state);
-  const { x, r: radii } = r.topography;
-  const surface = (id, z, title) => drawSurface($(id), {
-    x, y: radii, z, range: colourRange(z), height: 380, title: `${title} (3D)`,
-    axes: { x: AXIS_X, y: AXIS_R, z: 'deviation (µm)' },
-    hover: (i, j) => [`x = ${fixed(x[j], 2)} mm along the gash`, `r = ${fixed(radii[i], 2)} mm`, `deviation ${fixed(z[i][j], 3)} µm`],
-  });
-  surface('#plot-before-3d', v.before, v.beforeName);
-  if (v.after) surface('#plot-after-3d', v.after, v.afterName);
-  else clearSurface($('#plot-after-3d'));
+  const [before, after] = [$('#plot-before-3d'), $('#plot-after-3d')];
+  if (!show3d()) return;
+  const range = colourRange(v.before, v.after);
+  const spec = (z, title) => ({ x: r.topography.x, y: r.topography.r, z, range, title });
+  after.hidden = !v.after;
+  return Promise.all([drawSurface(Plotly, before, spec(v.before, v.beforeName)),
+    v.after ? drawSurface(Plotly, after, spec(v.after, v.afterName)) : Plotly.purge(after)]);
 }
 
 function drawMaps({ Plotly, result: r, state }) {
   const v = shown(state);
-  const map = (id, z, title) => {
-    const range = colourRange(z);
-    return Plotly.react(id, [{
-      type: 'heatmap', x: r.topography.x, y: r.topography.r, z,
-      colorscale: DEVIATION_SCALE, zmin: -range, zmax: range, colorbar: { title: { text: 'µm' } },
-      hovertemplate: 'x = %{x:.2f} mm<br>r = %{y:.2f} mm<br>%{z:.3f} µm<extra></extra>',
-    }], {
-      title: { text: `${title} (map)` }, height: 300, margin: { t: 40, r: 10, b: 50, l: 60 },
-      xaxis: { title: { text: AXIS_X } }, yaxis: { title: { text: AXIS_R } },
-    }, { responsive: true, displaylogo: false });
-  };
-  return Promise.all([map('plot-before-2d', v.before, v.beforeName),
-    v.after ? map('plot-after-2d', v.after, v.afterName) : Plotly.purge('plot-after-2d')]);
+  const range = colourRange(v.before, v.after);
+  const spec = (z, title) => ({ x: r.topography.x, y: r.topography.r, z, range, title });
+  return Promise.all([drawMap(Plotly, 'plot-before-2d', spec(v.before, v.beforeName)),
+    v.after ? drawMap(Plotly, 'plot-after-2d', spec(v.after, v.afterName)) : Plotly.purge('plot-after-2d')]);
+}
+
+function mount3dSwitch(store, plots) {
+  $('#show-3d').addEventListener('change', () => {
+    const [before, after] = [$('#plot-before-3d'), $('#plot-after-3d')];
+    before.hidden = after.hidden = !show3d();
+    if (show3d()) plots.redraw();
+    else if (self.Plotly) { self.Plotly.purge(before); self.Plotly.purge(after); }  // frees their WebGL
+  });
 }
 
 export function mountTopography(store, plots) {
@@ -91,6 +95,7 @@ export function mountTopography(store, plots) {
   for (const input of document.querySelectorAll('input[name="view"]')) {
     input.addEventListener('change', () => store.setView(input.value));
   }
-  plots.add(drawSurfaces, { plotly: false });
-  plots.add(drawMaps, { plotly: true });
+  mount3dSwitch(store, plots);
+  plots.add(drawMaps);
+  plots.add(drawSurfaces, { later: true });
 }

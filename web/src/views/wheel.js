@@ -22,7 +22,7 @@ function drawWheel(Plotly, r, state) {
 }
 
 export function mountWheel(store, plots) {
-  plots.add(({ Plotly, result, state }) => drawWheel(Plotly, result, state), { plotly: true });
+  plots.add(({ Plotly, result, state }) => drawWheel(Plotly, result, state));
   document.querySelector('#download-profile').addEventListener('click', () => {
     if (store.state.result) download('hobsharp-wheel-profile.csv', profileCsv(store.state.result), 'text/csv');
   });

@@ -1,0 +1,33 @@
+// The sensitivity gallery: one Plotly figure of small heatmaps, one per coefficient, each with a
+// two-line title and its own colour range (one newPlot for all of them is many times faster than
+// a figure each). As many columns as fit, up to 5.
+import { DEVIATION_SCALE } from './colours.js';
+
+const ROW = 150, TITLE = 32, GAP = 8;  // px: a thumbnail's row, its title above it, the gap below
+
+// items: [{z (rows root to tip of values along the gash), range, title: [line, line]}]
+export function drawGallery(Plotly, el, x, y, items) {
+  const columns = Math.max(2, Math.min(5, Math.floor((el.clientWidth || 950) / 190)));
+  const rows = Math.ceil(items.length / columns);
+  const height = rows * ROW;
+  const layout = {
+    height, margin: { t: 0, r: 0, b: 0, l: 0 }, showlegend: false, annotations: [],
+    font: { size: 11 },
+  };
+  const traces = items.map(({ z, range, title }, k) => {
+    const row = Math.floor(k / columns), col = k % columns, n = k + 1;
+    const xd = [col / columns + 0.01, (col + 1) / columns - 0.01];
+    const yd = [1 - ((row + 1) * ROW - GAP) / height, 1 - (row * ROW + TITLE) / height];
+    layout[`xaxis${n}`] = { domain: xd, anchor: `y${n}`, visible: false, fixedrange: true };
+    layout[`yaxis${n}`] = { domain: yd, anchor: `x${n}`, visible: false, fixedrange: true };
+    layout.annotations.push({
+      text: title.join('<br>'), xref: 'paper', yref: 'paper', x: (xd[0] + xd[1]) / 2,
+      y: 1 - (row * ROW + 1) / height, xanchor: 'center', yanchor: 'top', showarrow: false,
+    });
+    return {
+      type: 'heatmap', x, y, z, xaxis: `x${n}`, yaxis: `y${n}`, zmin: -range, zmax: range,
+      colorscale: DEVIATION_SCALE, showscale: false, name: title[0],
+    };
+  });
+  return Plotly.react(el, traces, layout, { staticPlot: true, responsive: true });
+}
