@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "result_model.h"
 #include "test_support.h"
 
 namespace hobsharp::test {
@@ -17,15 +18,11 @@ using Json = nlohmann::json;
 
 Json paperJson() { return Json::parse(readFile("tab1.json")); }
 
-// Runs the whole pipeline; returns the first error, or an empty Error when all went through.
+// Runs the whole pipeline as the module and the CLI do (evaluateCase); returns the first error, or
+// an empty Error when all went through.
 Error firstError(const std::string& text) {
-  auto in = parseCase(text);
-  if (!in) return in.error();
-  auto job = resolveJob(*in);
-  if (!job) return job.error();
-  auto e = evaluate(*job);
-  if (!e) return e.error();
-  return Error{};
+  auto e = evaluateCase(text);
+  return e ? Error{} : e.error();
 }
 Error firstError(const Json& j) { return firstError(j.dump()); }
 
