@@ -1,9 +1,15 @@
 // The plotting library as the page loads it (plotly.min.js, bundled by the site target): Plotly's
-// core, which brings the scatter trace, and the surface (3D), heatmap and bar traces; nothing else.
-import Plotly from 'plotly.js/lib/core';
-import bar from 'plotly.js/lib/bar';
-import heatmap from 'plotly.js/lib/heatmap';
-import surface from 'plotly.js/lib/surface';
+// core, which brings the scatter trace, the heatmap and bar traces, and the surface (3D) trace.
+// The surface trace (and the WebGL code under it) is in the file but evaluated only when
+// plotlySurface() is first called: evaluating it takes longer than the rest of Plotly together,
+// and the 3D surfaces are drawn only on demand.
+const Plotly = require('plotly.js/lib/core');
 
-Plotly.register([surface, heatmap, bar]);
+Plotly.register([require('plotly.js/lib/heatmap'), require('plotly.js/lib/bar')]);
+let surface = false;
+self.plotlySurface = () => {
+  if (!surface) Plotly.register([require('plotly.js/lib/surface')]);
+  surface = true;
+  return Plotly;
+};
 self.Plotly = Plotly;

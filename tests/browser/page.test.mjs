@@ -6,7 +6,7 @@ import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { afterError, afterResult, after_, base, colours, galleryDrawn, openPage, plotted, shots, site, tab2, useBrowser } from './support.mjs';
+import { afterError, afterResult, after_, base, colours, galleryDrawn, galleryTitles, openPage, plotted, shots, site, tab2, useBrowser } from './support.mjs';
 import { surfacesDrawn } from './surfaces.mjs';
 
 useBrowser();
@@ -16,6 +16,15 @@ async function assertGallery(page) {
   const thumbs = await galleryDrawn(page);
   assert.equal(thumbs.length, 25);
   thumbs.forEach((t, k) => assert.ok(t.inked > 0.95, `sensitivity map ${k} is drawn (${t.inked})`));
+  // Each map's two-line title (coefficient and step; colour range) sits just above it, centred.
+  const titles = await galleryTitles(page);
+  assert.equal(titles.length, 25);
+  titles.forEach(({ title, lines, map }, k) => {
+    assert.match(lines[0], /^[XYZAB] a\d \+ /, `title ${k}`);
+    assert.match(lines[1], /^±\d+\.\d\d µm$/, `title ${k}`);
+    assert.ok(title.bottom <= map.top + 1 && title.top >= map.top - 40, `title ${k} is just above its map`);
+    assert.ok(Math.abs(title.centre - map.centre) < 3, `title ${k} is centred over its map`);
+  });
 }
 
 // How fast it opens is measured by ./hobsharp.sh bench (tests/benchmark-page.mjs), not asserted here.

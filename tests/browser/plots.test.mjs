@@ -23,11 +23,14 @@ async function correct(page) {
 const overlap = (a, b) => a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
 const box = (page, selector) => page.locator(selector).boundingBox();
 
-test('the plot bundle registers the surface, heatmap, bar and scatter traces, and each plot uses its own', async () => {
+// The surface trace is in the bundle but registered only when the first 3D surface is drawn.
+test('the plot bundle registers the heatmap, bar and scatter traces, the surface on demand, and each plot uses its own', async () => {
   const page = await openPage(undefined, { viewport });
   await plotted(page);
-  const traces = await page.evaluate(() => Object.keys(window.Plotly.PlotSchema.get().traces).sort());
-  assert.deepEqual(traces, ['bar', 'heatmap', 'scatter', 'surface']);
+  const traces = () => page.evaluate(() => Object.keys(window.Plotly.PlotSchema.get().traces).sort());
+  assert.deepEqual(await traces(), ['bar', 'heatmap', 'scatter']);
+  await page.evaluate(() => window.plotlySurface());
+  assert.deepEqual(await traces(), ['bar', 'heatmap', 'scatter', 'surface']);
   const types = await page.evaluate(() => Object.fromEntries(['plot-axes', 'plot-wheel', 'plot-before-2d', 'gallery']
     .map((id) => [id, [...new Set(document.getElementById(id)._fullData.map((t) => t.type))]])));
   assert.deepEqual(types, { 'plot-axes': ['scatter'], 'plot-wheel': ['scatter'], 'plot-before-2d': ['heatmap'], gallery: ['heatmap'] });

@@ -134,6 +134,18 @@ export async function galleryDrawn(page) {
   return regions(page, '#gallery', boxes);
 }
 
+// The gallery's titles (HTML over the figure): for each map, its title's box and lines, and the
+// map's box, in page pixels.
+export async function galleryTitles(page) {
+  return page.evaluate(() => {
+    const box = (e) => { const r = e.getBoundingClientRect(); return { top: r.top, bottom: r.bottom, centre: (r.left + r.right) / 2 }; };
+    const maps = [...document.querySelectorAll('#gallery .hm image')].map(box);
+    return [...document.querySelectorAll('#gallery-titles div')].map((e, k) => ({
+      title: box(e), lines: e.innerText.split('\n'), map: maps[k],
+    }));
+  });
+}
+
 export async function tab2(page, set) {
   const out = {};
   for (const a of ['X', 'Y', 'Z', 'A', 'B']) out[a] = (await page.textContent(`#tab2 td[data-set="${set}"][data-axis="${a}"]`)).trim();

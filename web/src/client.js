@@ -20,7 +20,7 @@ async function startWorker() {
     await loadScript('hobsharp.js');
     await loadScript('worker-main.js');
     blobSource = URL.createObjectURL(new Blob([`var _scriptDir;\nvar HobSharpModule = ${self.HobSharpModule.toString()};\n` +
-      `(${self.hobsharpWorkerMain.toString()})(self, HobSharpModule);\n`], { type: 'text/javascript' }));
+      `(${self.hobsharpWorkerMain.toString()})(self, HobSharpModule, ${JSON.stringify(self.HOBSHARP_PAPER_CASE || null)});\n`], { type: 'text/javascript' }));
   }
   return new Worker(blobSource);
 }

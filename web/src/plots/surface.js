@@ -14,7 +14,9 @@ const axis = (title, extra = {}) => ({ title: { text: title, font: { size: 12 } 
 
 // spec: {x (along the gash), y (radii), z (rows along y of values along x), range (± of the colour
 // scale and of the z axis, shared with the plot it is compared with), title}
+// The surface trace is registered on first use (see plotly-bundle.js).
 export function drawSurface(Plotly, el, { x, y, z, range, title }) {
+  self.plotlySurface();
   return Plotly.react(el, [{
     type: 'surface', x, y, z, cmin: -range, cmax: range, colorscale: DEVIATION_SCALE,
     colorbar: deviationColourBar(),
