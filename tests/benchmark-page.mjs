@@ -7,8 +7,11 @@
 //                   rendered in headless Chromium; not part of "plots drawn", which counts the
 //                   plots the page shows on opening);
 //   and the plotting library's size (target at most 2 MB).
+// For reference, the same 7 cold opens of tests/bench/plotly-alone.html: the plotting library
+// alone on an empty page drawing figures like the page's, with no calculator: the least that
+// "plots drawn" can be with this library in this browser on this machine.
 import { spawn } from 'node:child_process';
-import { readFileSync } from 'node:fs';
+import { copyFileSync, readFileSync, rmSync } from 'node:fs';
 import { loadavg } from 'node:os';
 import { gzipSync } from 'node:zlib';
 import net from 'node:net';
@@ -40,7 +43,9 @@ async function until(page, what, above) {
   await page.waitForFunction(([w, n]) => window.hobsharpTimings && window.hobsharpTimings[w] > n, [what, above], { timeout: 60000 });
 }
 
-const first = [], plotted = [], typed = [], surfaces = [];
+const first = [], plotted = [], typed = [], surfaces = [], alone = [];
+const aloneFile = path.join(site, 'bench-plotly-alone.html');
+copyFileSync(path.join(root, 'tests', 'bench', 'plotly-alone.html'), aloneFile);
 try {
   for (let i = 0; i < runs; i++) {
     const context = await browser.newContext();
@@ -67,8 +72,15 @@ try {
     await until(page, 'draws', draws);
     surfaces.push(await page.evaluate(() => performance.now() - window.benchClickAt));
     await context.close();
+    const reference = await browser.newContext();
+    const empty = await reference.newPage();
+    await empty.goto(`${url}bench-plotly-alone.html`);
+    await empty.waitForFunction(() => window.plotlyAlone, null, { timeout: 60000 });
+    alone.push(await empty.evaluate(() => window.plotlyAlone));
+    await reference.close();
   }
 } finally {
+  rmSync(aloneFile, { force: true });
   await browser.close();
   server.kill();
 }
@@ -80,6 +92,7 @@ const app = readFileSync(path.join(site, 'app.js'));
 console.log(`\nthe page, ${runs} cold opens in headless Chromium (ms after navigation; load average ${loadBefore.toFixed(1)} before, ${loadavg()[0].toFixed(1)} after):`);
 line('first numbers (Tab. 2 on screen):', first, '< 1000');
 line('plots drawn (every plot):', plotted, '< 1000');
+line('reference, Plotly alone (empty page):', alone, 'none');
 console.log(`the page, ${typed.length} keystrokes in a field (${keystrokes} per open), ms:`);
 line('keystroke -> numbers:', typed, '< 100');
 console.log(`the page, "3D surfaces" ticked once per open, ms:`);
