@@ -122,6 +122,13 @@ test('the 3D surfaces: drawn on demand, one scale, titles inside the plot, hover
   assert.deepEqual(ranges[0], ranges[1], 'measured and after correction share the colour and z ranges');
   const titles = await page.evaluate(() => ['xaxis', 'yaxis', 'zaxis'].map((a) => document.getElementById('plot-before-3d')._fullLayout.scene[a].title.text));
   assert.deepEqual(titles, ['x along the gash (mm)', 'r root to tip (mm)', 'deviation (µm)']);
+  // No spike or zero lines standing out of the surface; the title on the left, where the mode bar is not.
+  const [spikes, titleX] = await page.evaluate(() => {
+    const l = document.getElementById('plot-before-3d')._fullLayout;
+    return [['xaxis', 'yaxis', 'zaxis'].map((a) => l.scene[a].showspikes || l.scene[a].zeroline), l.title.x];
+  });
+  assert.deepEqual(spikes, [false, false, false]);
+  assert.ok(titleX < 0.1, `the 3D title starts at the left (x ${titleX})`);
   // The pointer over the surface: the hover label names r, x and the deviation, with units.
   await page.locator('#plot-before-3d').scrollIntoViewIfNeeded();
   const scene = await page.locator('#plot-before-3d').boundingBox();

@@ -7,10 +7,13 @@ export const AXIS_TITLES = { x: 'x along the gash (mm)', y: 'r root to tip (mm)'
 // The box is 1.4 : 1 : 0.6, seen from far enough that the axis titles stay inside the plot.
 const SCENE = {
   aspectmode: 'manual', aspectratio: { x: 1.4, y: 1, z: 0.6 },
-  camera: { eye: { x: 1.75, y: -2.55, z: 1.3 }, center: { x: 0, y: 0, z: -0.12 } },
+  camera: { eye: { x: 2.0, y: -2.9, z: 1.5 }, center: { x: 0, y: 0, z: -0.12 } },
 };
 
-const axis = (title, extra = {}) => ({ title: { text: title, font: { size: 12 } }, tickfont: { size: 11 }, nticks: 5, ...extra });
+// No zero lines (they stood out of the surface as stray vertical lines) and no spike lines.
+const axis = (title, extra = {}) => ({
+  title: { text: title, font: { size: 12 } }, tickfont: { size: 11 }, nticks: 5, zeroline: false, showspikes: false, ...extra,
+});
 
 // spec: {x (along the gash), y (radii), z (rows along y of values along x), range (± of the colour
 // scale and of the z axis, shared with the plot it is compared with), title}
@@ -22,7 +25,8 @@ export function drawSurface(Plotly, el, { x, y, z, range, title }) {
     colorbar: deviationColourBar(),
     hovertemplate: 'r = %{y:.2f} mm<br>x = %{x:.2f} mm<br>deviation %{z:.3f} µm<extra></extra>',
   }], {
-    title: { text: `${title} (3D)`, font: { size: 14 } }, height: 400, margin: { t: 36, r: 10, b: 0, l: 0 },
+    // The title on the left, clear of the mode bar.
+    title: { text: `${title} (3D)`, font: { size: 14 }, x: 0.02, xanchor: 'left' }, height: 400, margin: { t: 36, r: 10, b: 0, l: 0 },
     scene: {
       ...SCENE,
       xaxis: axis(AXIS_TITLES.x), yaxis: axis(AXIS_TITLES.y),
