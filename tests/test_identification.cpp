@@ -283,6 +283,9 @@ TEST(Identification, BadInputIsRefusedWithTheFieldNamed) {
       {[](CaseInput& c) { c.correction.probeNoise = INFINITY; }, "correction.probeNoise"},
       {[](CaseInput& c) { c.correction.resolution[0] = 0.0; }, "correction.resolution.X"},
       {[](CaseInput& c) { c.correction.resolution[4] = -1e-4; }, "correction.resolution.B"},
+      {[](CaseInput& c) { c.correction.probeNoise = 1e5; }, "correction.probeNoise"},
+      {[](CaseInput& c) { c.correction.resolution[1] = 1e-300; }, "correction.resolution.Y"},
+      {[](CaseInput& c) { c.correction.resolution[3] = 10.0; }, "correction.resolution.A"},
   };
   for (const Bad& b : bad) {
     CaseInput in = paperCase();
