@@ -3,6 +3,7 @@
 // deviations in µm. Optional fields are empty when the file leaves them out.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,10 @@ struct GridInput {
 };
 
 struct CorrectionInput {
+  std::optional<std::string> method;      // "nonlinear" (the default) or "linear"
+  std::optional<double> probeNoise;       // sigma, µm
+  // Per axis, as given: µm for X, Y, Z, degrees for A, B; the machine defaults where not given.
+  std::array<std::optional<double>, kAxisCount> resolution;
   std::optional<double> truncation;
   std::optional<double> amplification;
   std::vector<Axis> lockedAxes;
@@ -70,5 +75,8 @@ constexpr double kHelixAngleAgreement = 0.01;
 // The largest |measured deviation| taken, µm (10 mm): beyond any real grinding error or
 // what-if, and far below where the correction's squares and sums overflow (docs/case-format.md).
 constexpr double kMaxDeviation = 1e4;
+// The range of correction.resolution: µm for X, Y, Z and degrees for A, B.
+constexpr double kLeastLinearResolution = 1e-3, kMostLinearResolution = 1e3;
+constexpr double kLeastRotaryResolution = 1e-9, kMostRotaryResolution = 1;
 
 }  // namespace hobsharp
