@@ -64,6 +64,13 @@ test('measure, correct, use as next run, measure again; the history is saved and
   assert.deepEqual(rows.map((r) => [r[0], r[7]]), [['1', ''], ['2 (under way)', 'not measured yet']]);
   assert.equal(sseOf(rows[0], 'measured'), first, 'the kept pass, computed again from its axes and grid');
   const predicted = sseOf(rows[1], 'predicted');
+  // Undo takes the step back (the grid in use again, no history), Redo makes it again.
+  await afterResult(page, () => page.click('#undo'));
+  const numbers = (text) => text.trim().split(/[\s,]+/).map(Number);
+  assert.deepEqual(numbers(await page.inputValue('#measured-csv')), numbers(csv));
+  assert.deepEqual((await table(page)).map((r) => r[0]), ['1 (under way)', '2 (next, predicted)']);
+  await afterResult(page, () => page.click('#redo'));
+  assert.deepEqual(await table(page), rows);
 
   // Measure again: the same machine, now with the corrected axes.
   await afterResult(page, () => page.click('#generate-error'));
