@@ -1,4 +1,4 @@
-// The WebAssembly half of ./hobsharp.sh bench: the same correction cycle and dense topography as
+// The WebAssembly half of ./hobsharp.sh bench: the same correction cycles and dense topography as
 // tests/benchmark.cpp, run under Node in the benchmark module (build/wasm/hobsharp-bench.js: the
 // page's module plus the timing hooks of wasm/bench_bindings.cpp), printed beside the native
 // figures that the native benchmark wrote to the JSON file given as the first argument.
@@ -27,6 +27,9 @@ const withError = (c, changes) => {
 const cycleError = [['Y', 0, 0.01], ['Z', 0, -0.01], ['Z', 1, 0.003], ['A', 0, 0.0002], ['B', 2, 0.001]];
 const measured = hobsharp.evaluate({ ...paper, axes: withError(paper, cycleError) }).topography.normal;
 const cycleCase = { ...paper, measured };
+// The same at degree 6 on 51 x 26 (51 along the gash, 26 radially).
+const big = { ...paper, degree: 6, grid: { ...paper.grid, radial: 26, axial: 51 } };
+const bigCase = { ...big, measured: hobsharp.evaluate({ ...big, axes: withError(big, cycleError) }).topography.normal };
 // The dense topography: 101 x 101 with its machine error.
 const dense = { ...paper, grid: { ...paper.grid, radial: 101, axial: 101 } };
 const denseCase = { ...dense, axes: withError(dense, [['Z', 0, -0.01], ['B', 2, 0.001]]) };
@@ -34,6 +37,7 @@ const denseCase = { ...dense, axes: withError(dense, [['Z', 0, -0.01], ['B', 2, 
 const best = (f, runs, repeats = 5) => Math.min(...Array.from({ length: repeats }, () => f(runs)));
 const wasm = {
   CorrectionCycle: best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(cycleCase), n), 200),
+  CorrectionCycle51x26Degree6: best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(bigCase), n), 5, 3),
   DenseTopography101: best((n) => hobsharp.timeTopography(JSON.stringify(denseCase), n), 10),
 };
 // End to end from JS, with the case in and the plain-JS result out (what the page's worker pays).
@@ -43,6 +47,7 @@ const endToEnd = (performance.now() - t0) / 100;
 
 const rows = [
   ['correction cycle (Tab. 1, 9 x 5, 25 coefficients)', 'CorrectionCycle', 1],
+  ['correction cycle (51 x 26, degree 6, 35 coefficients)', 'CorrectionCycle51x26Degree6', 50],
   ['dense 101 x 101 topography', 'DenseTopography101', 15],
 ];
 console.log('\nnative versus WebAssembly (Node ' + process.version + '), ms per run:');

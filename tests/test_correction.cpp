@@ -186,6 +186,7 @@ TEST(Correction, EvaluationWithMeasuredGivesTheCorrection) {
   CaseInput in = paperCase();
   const SharpeningJob nominalJob = jobOf(in);
   in.measured = topographyFor(nominalJob, machineError(nominalJob.nominalAxes)).normal;
+  in.correction.probeNoise = 1e-4;  // a simulated what-if: noise-free, declared as such
   auto e = evaluate(jobOf(in));
   ASSERT_TRUE(e.ok()) << e.error().message;
   ASSERT_TRUE(e->correction.has_value());

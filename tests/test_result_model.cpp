@@ -38,7 +38,8 @@ CaseInput measuredCase() {
 
 // The JSON's leaves as dotted paths, lists and axis objects counted as one field.
 void leaves(const Json& j, const std::string& path, std::set<std::string>* out) {
-  if (j.is_object() && !(j.contains("X") && j.contains("B"))) {
+  // An axes object {X: [a0..an], .., B: [..]} is one field; {X: number, ..} is five.
+  if (j.is_object() && !(j.contains("X") && j.contains("B") && j["X"].is_array())) {
     for (auto it = j.begin(); it != j.end(); ++it) leaves(*it, path.empty() ? it.key() : path + "." + it.key(), out);
   } else {
     out->insert(path);

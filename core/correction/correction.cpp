@@ -9,28 +9,6 @@
 namespace hobsharp {
 namespace {
 
-bool isLocked(const Coefficient& c, const CorrectionOptions& o) {
-  return std::find(o.lockedAxes.begin(), o.lockedAxes.end(), c.axis) != o.lockedAxes.end() ||
-         std::find(o.locked.begin(), o.locked.end(), c) != o.locked.end();
-}
-
-// k >= 2 in superscript digits (UTF-8), as the page and the verdict write units: rad/rad².
-std::string superscript(int k) {
-  static const char* const kDigits[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
-                                        "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
-  std::string s;
-  if (k > 1)
-    for (char d : std::to_string(k)) s += kDigits[d - '0'];
-  return s;
-}
-
-std::string unitOf(const Coefficient& c, bool helical) {
-  std::string u = isRotary(c.axis) ? "rad" : "mm";
-  if (c.degree == 0) return u;
-  const std::string per = helical ? "rad" : "mm";
-  return u + "/" + per + superscript(c.degree);
-}
-
 UnobservableCombination combination(const std::vector<Coefficient>& coefficients,
                                     const Eigen::VectorXd& scaledDirection,
                                     const Eigen::VectorXd& columnScale, bool helical, double listedShare) {
@@ -41,23 +19,7 @@ UnobservableCombination combination(const std::vector<Coefficient>& coefficients
     u.coefficients.push_back(coefficients[j]);
     u.amounts.push_back(scaledDirection(j) * columnScale(j));
   }
-  // Express the amounts per unit of the first coefficient.
-  const double first = u.amounts.front();
-  std::ostringstream s;
-  s.precision(6);
-  for (size_t i = 0; i < u.amounts.size(); ++i) {
-    u.amounts[i] /= first;
-    if (i > 0) s << (u.amounts[i] < 0 ? " - " : " + ");
-    else if (u.amounts[i] < 0) s << "-";
-    s << std::abs(u.amounts[i]) << " " << unitOf(u.coefficients[i], helical) << " on "
-      << u.coefficients[i].name();
-  }
-  s << (u.amounts.size() == 1 ? ": no effect on the face" : ": these changes cancel on the face");
-  if (u.amounts.size() == 2 && u.coefficients[0].axis == Axis::X && u.coefficients[1].axis == Axis::A &&
-      u.coefficients[0].degree == u.coefficients[1].degree)
-    s << " (an axial shift of a helicoid equals a turn of it)";
-  u.description = s.str();
-  return u;
+  return describedCombination(std::move(u.coefficients), std::move(u.amounts), helical);
 }
 
 }  // namespace
@@ -111,6 +73,7 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
   for (size_t k = 0; k < active.size(); ++k) B.col(k) = As.col(active[k]);
 
   c.change = Eigen::VectorXd::Zero(q);
+  c.changeCovariancePerNoise = Eigen::MatrixXd::Zero(q, q);
   if (!active.empty()) {
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(B, Eigen::ComputeThinU | Eigen::ComputeThinV);
     c.singularValues = svd.singularValues();
@@ -118,11 +81,14 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
     // See CorrectionOptions::amplification.
     const double limit = o.amplification * d.norm();
     Eigen::VectorXd y = Eigen::VectorXd::Zero(B.cols());
+    Eigen::MatrixXd covY = Eigen::MatrixXd::Zero(B.cols(), B.cols());
     for (int i = 0; i < c.singularValues.size(); ++i) {
       if (c.singularValues(i) > cut) {
         const double alpha = svd.matrixU().col(i).dot(-d) / c.singularValues(i);
         if (std::abs(alpha) <= limit) {
           y += svd.matrixV().col(i) * alpha;
+          covY += svd.matrixV().col(i) * svd.matrixV().col(i).transpose() /
+                  (c.singularValues(i) * c.singularValues(i));
           ++c.rank;
         } else {
           ++c.amplifyingDropped;
@@ -134,6 +100,10 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
       }
     }
     for (size_t k = 0; k < active.size(); ++k) c.change(active[k]) = y(k) * scale(active[k]);
+    c.changeCovariancePerNoise = Eigen::MatrixXd::Zero(q, q);
+    for (size_t k = 0; k < active.size(); ++k)
+      for (size_t l = 0; l < active.size(); ++l)
+        c.changeCovariancePerNoise(active[k], active[l]) = covY(k, l) * scale(active[k]) * scale(active[l]);
   }
 
   // Listed by degree, then axis, so that X a0 against A a0 comes first.

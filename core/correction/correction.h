@@ -1,58 +1,33 @@
-// The correction step of Eq. 17: the changes of the chosen polynomial coefficients that cancel a
-// measured topography in the least-squares sense, by a truncated SVD of the column-scaled
-// sensitivity matrix. The thickness error at the mean point is one more equation (Eq. 16).
+// The correction of a measured face. The paper's step of Eq. 17: the changes of the chosen
+// polynomial coefficients that cancel a measured topography in the least-squares sense, by a
+// truncated SVD of the column-scaled sensitivity matrix, with the thickness error at the mean
+// point as one more equation (Eq. 16). And the default: identify the machine error by nonlinear
+// least squares (machine_error.h), then run nominal - error.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "axis_polynomials.h"
+#include "correction_options.h"
 #include "ground_face.h"
 #include "outcome.h"
 #include "sensitivity_matrix.h"
+#include "sharpening_setup.h"
 #include "topography.h"
+#include "unobservable.h"
 
 namespace hobsharp {
 
-// How the correction step treats the sensitivity matrix. The ratios are dimensionless.
-struct CorrectionOptions {
-  // Singular values below truncation * (largest) are dropped; the combinations they belong to
-  // are reported as unobservable.
-  double truncation = 1e-6;
-  // With unit columns, one coefficient of size |data| makes a topography of size |data|. A singular
-  // direction whose step would exceed amplification * |data| is left out: the data there is a shape
-  // the axes make only with wild coefficients (a second-degree radial shape, say).
-  double amplification = 1;
-  // Before scaling, a column whose norm is below negligible * (largest) is unobservable on its own
-  // (moving along a straight gash, say), so that scaling does not blow noise up to unit norm.
-  double negligible = 1e-9;
-  // An unobservable combination is described by the coefficients whose share of its (scaled)
-  // direction is at least listedShare * (the largest share); the others are left out of the words.
-  double listedShare = 1e-3;
-  // The verdict is "correctable" when the predicted sum of squares is at most
-  // correctableShare * (the measured one).
-  double correctableShare = 1e-3;
-  // Coefficients left as they are. A locked axis is all of its coefficients.
-  std::vector<Coefficient> locked;
-  std::vector<Axis> lockedAxes;
-};
-
-// Coefficients whose effects on the face cancel: the combination sum(amount_i * coefficient_i),
-// in each coefficient's unit, changes nothing the grid can see.
-struct UnobservableCombination {
-  std::vector<Coefficient> coefficients;
-  std::vector<double> amounts;
-  std::string description;
-};
-
 struct Correction {
-  AxisPolynomials axes;                  // the axes that were run plus the correction (Tab. 2 right)
+  AxisPolynomials axes;                  // the proposal: run + change (linear), nominal - E (nonlinear)
   std::vector<Coefficient> coefficients; // the free coefficients
   Eigen::VectorXd change;                // their changes, in their units
   Topography before;                     // the measured topography
-  Topography after;                      // the predicted residual
+  Topography after;                      // the predicted face after the pass
   Eigen::VectorXd singularValues;        // of the scaled matrix, largest first
   int rank = 0;                          // directions used in the step
   int amplifyingDropped = 0;             // directions above the truncation left out (see options)
@@ -60,9 +35,38 @@ struct Correction {
   // The share of the sum of squares that no coefficient change can produce, 0..1.
   double uncorrectableShare = 0;
   std::string verdict;                   // one sentence for the engineer
+  // The linear step's covariance of `change` per unit probe variance (sigma = 1 µm).
+  Eigen::MatrixXd changeCovariancePerNoise;
+
+  // What the engineer reads (README, "Correction"), filled by correctMeasuredFace for either method.
+  CorrectionMethod method = CorrectionMethod::Linear;
+  LeastSquaresSummary summary;           // status, reason, iterations
+  AxisPolynomials identifiedError;       // E: the machine's actual axes minus the commanded ones
+  AxisPolynomials roundedAxes;           // `axes` rounded to the machine resolution
+  Topography afterRounded;               // the face predicted with roundedAxes, re-simulated
+  // Per axis, X Y Z A B, signed value of largest magnitude over the motion range: µm (X, Y, Z)
+  // or µrad (A, B).
+  std::array<double, kAxisCount> identifiedErrorSize{};
+  std::array<double, kAxisCount> axisChangeSize{};      // axes - run axes
+  std::array<double, kAxisCount> uncertainty{};         // standard uncertainty of the change, from sigma
+  // The precision demand: µm of face per µm or µrad of a constant axis error (largest over the
+  // grid), and µm or µrad of axis change per µm of probe noise.
+  std::array<double, kAxisCount> facePerAxisError{};
+  std::array<double, kAxisCount> changePerNoise{};
+  std::vector<bool> directionsUsed;      // per singular value: identified (true) or left out
+  int withinNoise = 0;                   // directions left out: within the probe noise (nonlinear)
 };
 
+// The paper's single linear step (Eq. 17), with the linear prediction in `after`.
 Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials& runAxes,
                                    const Eigen::MatrixXd& measured, const CorrectionOptions& options);
+
+// The correction of a measured face (measured: the face ground when `run` was commanded), by the
+// chosen method, with every figure the engineer reads: for the nonlinear method the axes are
+// nominal - E (machine_error.h); `after` and `afterRounded` are re-simulated with the nonlinear
+// model, plus the part of the measurement no axis makes.
+Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,
+                                        const AxisPolynomials& run, const GroundFace& runFace,
+                                        const Eigen::MatrixXd& measured, const CorrectionOptions& options);
 
 }  // namespace hobsharp

@@ -319,8 +319,15 @@ Outcome<std::vector<PassInput>> readPasses(const Json& p) {
 }
 
 Outcome<CorrectionInput> readCorrection(const Node& c) {
-  HOBSHARP_TRY(c.onlyKnown({"truncation", "amplification", "lockedAxes", "locked"}));
+  HOBSHARP_TRY(c.onlyKnown({"method", "probeNoise", "resolution", "truncation", "amplification", "lockedAxes",
+                            "locked"}));
   CorrectionInput out;
+  HOBSHARP_ASSIGN(out.method, c.choice("method", {"nonlinear", "linear"}));
+  HOBSHARP_ASSIGN(out.probeNoise, c.optionalNumber("probeNoise"));
+  auto resolution = c.object("resolution", false);
+  if (!resolution) return resolution.error();
+  HOBSHARP_TRY(resolution->onlyKnown({"X", "Y", "Z", "A", "B"}));
+  for (Axis a : kAxes) HOBSHARP_ASSIGN(out.resolution[static_cast<int>(a)], resolution->optionalNumber(axisName(a)));
   HOBSHARP_ASSIGN(out.truncation, c.optionalNumber("truncation"));
   HOBSHARP_ASSIGN(out.amplification, c.optionalNumber("amplification"));
   auto axisOf = [](const std::string& s, Axis* a) {

@@ -18,6 +18,22 @@ constexpr const char* kHelicalOnly = "helical gash only";
 constexpr const char* kWithMeasured = "only with `measured`";
 constexpr const char* kCoefficientUnit = "mm or rad per (rad or mm)^k";
 constexpr const char* kMotionUnit = "rad or mm";
+// The per-axis fields of the correction, as {X, Y, Z, A, B} objects.
+constexpr const char* kIdentified[] = {"correction.identifiedError.X", "correction.identifiedError.Y",
+                                       "correction.identifiedError.Z", "correction.identifiedError.A",
+                                       "correction.identifiedError.B"};
+constexpr const char* kChange[] = {"correction.axisChange.X", "correction.axisChange.Y", "correction.axisChange.Z",
+                                   "correction.axisChange.A", "correction.axisChange.B"};
+constexpr const char* kUncertainty[] = {"correction.uncertainty.X", "correction.uncertainty.Y",
+                                        "correction.uncertainty.Z", "correction.uncertainty.A",
+                                        "correction.uncertainty.B"};
+constexpr const char* kFacePerError[] = {
+    "correction.precision.facePerError.X", "correction.precision.facePerError.Y", "correction.precision.facePerError.Z",
+    "correction.precision.facePerError.A", "correction.precision.facePerError.B"};
+constexpr const char* kChangePerNoise[] = {
+    "correction.precision.changePerNoise.X", "correction.precision.changePerNoise.Y",
+    "correction.precision.changePerNoise.Z", "correction.precision.changePerNoise.A",
+    "correction.precision.changePerNoise.B"};
 
 void matrix(ResultVisitor& v, const ResultField& f, const Eigen::MatrixXd& m) {
   const RowMajor r = m;
@@ -224,31 +240,86 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
   if (e.correction || every) {
     static const Correction kNone;
     const Correction& c = e.correction ? *e.correction : kNone;
-    v.axes({"correction.axes", kCoefficientUnit, "the axes run plus the correction (Tab. 2 right)", kWithMeasured}, c.axes);
+    const double probeNoise = e.job.correction.probeNoise;
+    v.text({"correction.method", "", "\"nonlinear\" (identify the machine error, run nominal - error) or \"linear\" (Eq. 17 once)",
+            kWithMeasured}, c.method == CorrectionMethod::Linear ? "linear" : "nonlinear");
+    v.text({"correction.status", "", "\"converged\", \"notConverged\" (iterations ran out), \"stalled\" or \"failed\"",
+            kWithMeasured}, statusName(c.summary.status));
+    v.text({"correction.statusReason", "", "a sentence: which tolerance was met, or why the solve stopped", kWithMeasured},
+           c.summary.reason);
+    v.flag({"correction.usable", "", "the proposal may be used (every status but \"failed\")", kWithMeasured},
+           c.summary.IsSolutionUsable());
+    v.count({"correction.iterations", "", "solver iterations (Jacobian evaluations); 1 for the linear step", kWithMeasured},
+            c.summary.iterations);
+    v.number({"correction.probeNoise", "µm", "the probe noise sigma the correction assumed", kWithMeasured}, probeNoise);
+    v.axes({"correction.axes", kCoefficientUnit, "the exact proposal, the axes to run next: nominal minus the identified error (Tab. 2 right)",
+            kWithMeasured}, c.axes);
+    v.axes({"correction.roundedAxes", kCoefficientUnit, "correction.axes rounded to the machine resolution at the end of the motion range",
+            kWithMeasured}, c.roundedAxes);
     v.texts({"correction.coefficients", "", "the coefficients left free (not locked)", kWithMeasured}, names(c.coefficients));
-    eigenNumbers(v, {"correction.change", "coefficient units", "the changes of correction.coefficients, in order (Eq. 17)", kWithMeasured}, c.change);
-    matrix(v, {"correction.residual", "µm", "predicted normal deviation after the correction", kWithMeasured}, c.after.normal);
+    eigenNumbers(v, {"correction.change", "coefficient units", "the changes of correction.coefficients, in order: correction.axes minus the axes run", kWithMeasured}, c.change);
+    for (Axis a : kAxes) {
+      const int i = static_cast<int>(a);
+      const bool rot = isRotary(a);
+      v.number({kIdentified[i], rot ? "µrad" : "µm", "the identified machine error of the axis (actual minus commanded): largest over the motion range, signed",
+                kWithMeasured}, c.identifiedErrorSize[i]);
+    }
+    for (Axis a : kAxes) {
+      const int i = static_cast<int>(a);
+      v.number({kChange[i], isRotary(a) ? "µrad" : "µm", "the change proposed for the axis, correction.axes minus the axes run: largest over the motion range, signed",
+                kWithMeasured}, c.axisChangeSize[i]);
+    }
+    for (Axis a : kAxes) {
+      const int i = static_cast<int>(a);
+      v.number({kUncertainty[i], isRotary(a) ? "µrad" : "µm", "standard uncertainty of that change from the probe noise, largest over the motion range",
+                kWithMeasured}, c.uncertainty[i]);
+    }
+    for (Axis a : kAxes) {
+      const int i = static_cast<int>(a);
+      v.number({kFacePerError[i], isRotary(a) ? "µm per µrad" : "µm per µm", "precision demand: face deviation per unit of a constant error of the axis, largest over the grid",
+                kWithMeasured}, c.facePerAxisError[i]);
+    }
+    for (Axis a : kAxes) {
+      const int i = static_cast<int>(a);
+      v.number({kChangePerNoise[i], isRotary(a) ? "µrad per µm" : "µm per µm", "precision demand: standard uncertainty of the axis change per µm of probe noise",
+                kWithMeasured}, c.changePerNoise[i]);
+    }
+    matrix(v, {"correction.residual", "µm", "the face predicted after the pass: re-simulated with correction.axes and the identified error, plus the part no axis makes", kWithMeasured}, c.after.normal);
     matrix(v, {"correction.residualCircular", "µm", "the same along the circle about the hob axis", kWithMeasured},
            c.after.circular);
     matrix(v, {"correction.measuredCircular", "µm", "the measured deviation along the circle about the hob axis",
                kWithMeasured}, c.before.circular);
     v.number({"correction.sseBefore", "µm²", "sum of squares, measured", kWithMeasured}, c.before.sse);
-    v.number({"correction.sseAfter", "µm²", "sum of squares, predicted after the correction", kWithMeasured}, c.after.sse);
+    v.number({"correction.sseAfter", "µm²", "sum of squares of the face predicted after the pass (re-simulated)", kWithMeasured}, c.after.sse);
     v.number({"correction.maxBefore", "µm", "largest absolute deviation, measured", kWithMeasured}, c.before.max);
-    v.number({"correction.maxAfter", "µm", "largest absolute deviation after the correction", kWithMeasured}, c.after.max);
+    v.number({"correction.maxAfter", "µm", "largest absolute deviation predicted after the pass", kWithMeasured}, c.after.max);
     v.number({"correction.thicknessBefore", "µm", "thickness error at the mean point, measured", kWithMeasured},
              c.before.thickness);
-    v.number({"correction.thicknessAfter", "µm", "thickness error after the correction", kWithMeasured}, c.after.thickness);
-    eigenNumbers(v, {"correction.singularValues", "", "of the column-scaled sensitivity matrix, largest first", kWithMeasured},
+    v.number({"correction.thicknessAfter", "µm", "thickness error predicted after the pass", kWithMeasured}, c.after.thickness);
+    v.number({"correction.sseRounded", "µm²", "sum of squares predicted with correction.roundedAxes (re-simulated)", kWithMeasured},
+             c.afterRounded.sse);
+    v.number({"correction.maxRounded", "µm", "largest absolute deviation predicted with correction.roundedAxes", kWithMeasured},
+             c.afterRounded.max);
+    v.number({"correction.thicknessRounded", "µm", "thickness error predicted with correction.roundedAxes", kWithMeasured},
+             c.afterRounded.thickness);
+    eigenNumbers(v, {"correction.singularValues", "", "nonlinear: of the identifiable directions in µm of face per machine step; linear: of the column-scaled matrix; largest first", kWithMeasured},
                  c.singularValues);
-    v.count({"correction.rank", "", "singular directions used in the step", kWithMeasured}, c.rank);
-    v.count({"correction.amplifyingDropped", "", "directions above the truncation left out because they would amplify",
+    std::vector<double> used;
+    for (size_t i = 0; i < c.directionsUsed.size(); ++i)
+      if (c.directionsUsed[i]) used.push_back(static_cast<double>(i + 1));
+    if (c.method == CorrectionMethod::Linear)
+      for (int i = 0; i < c.rank; ++i) used.push_back(i + 1);
+    numbers(v, {"correction.usedDirections", "", "which of correction.singularValues the correction uses, 1-based", kWithMeasured}, used);
+    v.count({"correction.rank", "", "singular directions used in the correction", kWithMeasured}, c.rank);
+    v.count({"correction.amplifyingDropped", "", "directions left out because they would need wild axis moves for little gain (would amplify)",
              kWithMeasured}, c.amplifyingDropped);
+    v.count({"correction.withinNoise", "", "directions left out because the measurement shows them only within the probe noise (nonlinear)",
+             kWithMeasured}, c.withinNoise);
     std::vector<std::string> unobservable;
     for (const UnobservableCombination& u : c.unobservable) unobservable.push_back(u.description);
-    v.texts({"correction.unobservable", "", "sentences: coefficient combinations the grid cannot see", kWithMeasured},
+    v.texts({"correction.unobservable", "", "sentences: coefficient combinations the grid cannot see (left out of the error and the change)", kWithMeasured},
             unobservable);
-    v.number({"correction.uncorrectableShare", "", "share of the sum of squares no coefficient change can make, 0..1",
+    v.number({"correction.uncorrectableShare", "", "share of the measured sum of squares predicted to stay after the pass, 0..1",
               kWithMeasured}, c.uncorrectableShare);
     v.text({"correction.verdict", "", "one sentence for the engineer", kWithMeasured}, c.verdict);
   }

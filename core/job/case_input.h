@@ -3,6 +3,7 @@
 // deviations in µm. Optional fields are empty when the file leaves them out.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,10 @@ struct GridInput {
 };
 
 struct CorrectionInput {
+  std::optional<std::string> method;      // "nonlinear" (the default) or "linear"
+  std::optional<double> probeNoise;       // sigma, µm
+  // Per axis, as given: µm for X, Y, Z, degrees for A, B; the machine defaults where not given.
+  std::array<std::optional<double>, kAxisCount> resolution;
   std::optional<double> truncation;
   std::optional<double> amplification;
   std::vector<Axis> lockedAxes;

@@ -16,7 +16,7 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
   e.topography = topographyOf(e.groundFace);
   e.sensitivities = sensitivityMatrix(e.groundFace, allCoefficients(job.runAxes.degree()));
   if (job.input.measured) {
-    auto c = correctionStep(e.groundFace, job.runAxes, *job.input.measured, job.correction);
+    auto c = correctMeasuredFace(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction);
     if (!c) return c.error();
     e.correction = std::move(c).value();
   }

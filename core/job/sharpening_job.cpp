@@ -216,6 +216,25 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
     if (auto r = checkAxes(in.passes[i].axes, in.degree, pass + "axes"); !r) return r.error();
     if (auto r = checkMeasured(in.passes[i].measured, grid, pass + "measured"); !r) return r.error();
   }
+  if (in.correction.method) {
+    if (*in.correction.method == "linear") job.correction.method = CorrectionMethod::Linear;
+    else if (*in.correction.method == "nonlinear") job.correction.method = CorrectionMethod::Nonlinear;
+    else return refuse("correction.method", "must be \"nonlinear\" or \"linear\"; got \"" + *in.correction.method + "\".");
+  }
+  if (in.correction.probeNoise) {
+    if (!std::isfinite(*in.correction.probeNoise)) return refuse("correction.probeNoise", "must be a finite number.");
+    if (*in.correction.probeNoise <= 0)
+      return refuse("correction.probeNoise", "the probe's standard deviation must be positive; got " +
+                                                 num(*in.correction.probeNoise) + " µm.");
+    job.correction.probeNoise = *in.correction.probeNoise;
+  }
+  for (Axis a : kAxes) {
+    const std::optional<double>& r = in.correction.resolution[static_cast<int>(a)];
+    if (!r) continue;
+    const std::string field = std::string("correction.resolution.") + axisName(a);
+    if (auto ok = positive(field, *r, isRotary(a) ? "deg" : "µm"); !ok) return ok.error();
+    job.correction.resolution.step[static_cast<int>(a)] = *r;
+  }
   if (in.correction.truncation) {
     if (!(*in.correction.truncation > 0 && *in.correction.truncation < 1))
       return refuse("correction.truncation", "must lie between 0 and 1; got " + num(*in.correction.truncation) + ".");

@@ -1,0 +1,49 @@
+// The options and the summary of the nonlinear least-squares identification of the machine error,
+// in the manner of Ceres' Solver::Options and Solver::Summary. The solver is Eigen's
+// LevenbergMarquardt (MINPACK's lmder); each tolerance says what it tests.
+#pragma once
+
+#include <string>
+
+namespace hobsharp {
+
+struct LeastSquaresOptions {
+  // Iterations (Jacobian evaluations, each one re-simulated face with its sensitivities) before
+  // the solve stops as not converged.
+  int maxIterations = 50;
+  // Converged when both the actual and the predicted relative reductions of the sum of squares
+  // in one step are at most this (MINPACK's ftol).
+  double functionTolerance = 1e-10;
+  // Converged when the trust region, relative to the scaled parameters, is at most this: the
+  // steps have become negligible next to the estimate (MINPACK's xtol).
+  double parameterTolerance = 1e-10;
+  // Converged when the largest cosine between the residual and a Jacobian column is at most this:
+  // the residual is orthogonal to every direction the axes can move the face (MINPACK's gtol).
+  double gradientTolerance = 1e-12;
+  // The first trust region, times the scaled norm of the start (or this value itself when the
+  // start is zero), in µm of face (MINPACK's factor).
+  double initialTrustRegion = 1000;
+};
+
+enum class SolveStatus {
+  Converged,     // one of the tolerances above was met
+  NoConvergence, // maxIterations ran out; the best iterate is returned
+  Stalled,       // no step reduces the sum of squares further (the reason says why)
+  Failed,        // the solve could not start
+};
+
+const char* statusName(SolveStatus s);  // "converged", "notConverged", "stalled", "failed"
+
+struct LeastSquaresSummary {
+  SolveStatus status = SolveStatus::Converged;
+  std::string reason;        // a sentence: which tolerance was met, or why it stopped
+  int iterations = 0;        // Jacobian evaluations (0: nothing to identify)
+  int faceEvaluations = 0;   // re-simulated faces, trial steps included
+  double initialCost = 0;    // sum of squares at the start, µm²
+  double finalCost = 0;      // sum of squares at the best iterate, µm²
+
+  // As Ceres: the best iterate may be used unless the solve failed to start.
+  bool IsSolutionUsable() const { return status != SolveStatus::Failed; }
+};
+
+}  // namespace hobsharp

@@ -1,0 +1,46 @@
+// Identify, then compensate: the machine error E (its actual axes minus the commanded ones) that
+// made the measured face when `run` was commanded, by nonlinear least squares on the simulated
+// face: minimise |face(run + E) - measured|² over E, with the analytic Jacobian (Eqs. 13-16) at
+// the current estimate. E is sought only in the directions of the identifiable space
+// (structural_null_space.h) that the measurement shows above the probe noise, decided once,
+// before the solve, on the linearisation at E = 0.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "axis_polynomials.h"
+#include "correction_options.h"
+#include "ground_face.h"
+#include "least_squares_options.h"
+#include "outcome.h"
+#include "sharpening_setup.h"
+#include "structural_null_space.h"
+
+namespace hobsharp {
+
+struct MachineErrorEstimate {
+  IdentifiableSpace space;
+  AxisPolynomials error;  // E, coefficient by coefficient; zero where not identified
+  Eigen::VectorXd coefficientError;  // E of space.coefficients, in their units
+  // Covariance of coefficientError per unit probe variance (sigma = 1 µm): (J^T J)^-1 mapped to
+  // the coefficients, at the solution. Times sigma² it is the covariance.
+  Eigen::MatrixXd covariancePerNoise;
+  GroundFace face;            // face(run + E), with its sensitivities
+  Eigen::MatrixXd explained;  // its normal deviation, µm
+  Eigen::MatrixXd unexplained;  // measured - explained: noise and what no axis makes, µm
+  // The singular values of the identifiable space's Jacobian at E = 0, in µm of face per machine
+  // step, largest first, and which of them the measurement shows above the noise.
+  Eigen::VectorXd singularValues;
+  std::vector<bool> used;
+  int withinNoise = 0;  // directions of the space the measurement does not show above the noise
+  int amplifying = 0;   // directions left out because their step would be wild (spanAmplification)
+  LeastSquaresSummary summary;
+};
+
+Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup, const AxisPolynomials& run,
+                                                   const GroundFace& runFace, const Eigen::MatrixXd& measured,
+                                                   const CorrectionOptions& options);
+
+}  // namespace hobsharp

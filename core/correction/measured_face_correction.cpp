@@ -1,0 +1,158 @@
+// correctMeasuredFace (correction.h): either method, then the figures the engineer reads.
+#include <cmath>
+#include <sstream>
+
+#include "correction.h"
+#include "machine_error.h"
+
+namespace hobsharp {
+namespace {
+
+constexpr double kMicrometresPerMm = 1000.0;
+
+Eigen::MatrixXd normalOf(const GroundFace& f) {
+  Eigen::MatrixXd n(f.grid.rows(), f.grid.cols());
+  for (int i = 0; i < f.grid.rows(); ++i)
+    for (int j = 0; j < f.grid.cols(); ++j) n(i, j) = kMicrometresPerMm * f.envelope[i * f.grid.cols() + j].t;
+  return n;
+}
+
+AxisPolynomials plusError(AxisPolynomials axes, const AxisPolynomials& error) {
+  for (Axis a : kAxes)
+    for (size_t k = 0; k < axes[a].a.size(); ++k) axes[a].a[k] += error[a].coefficient(static_cast<int>(k));
+  return axes;
+}
+
+// The face the machine grinds when `commanded` is run and it adds `error`, plus the part of the
+// measurement no axis makes (which stays), on the probe grid.
+Outcome<Topography> predictedFace(const SharpeningSetup& setup, const GroundFace& runFace,
+                                  const AxisPolynomials& commanded, const AxisPolynomials& error,
+                                  const Eigen::MatrixXd& unexplained) {
+  auto f = simulateGroundFace(setup, plusError(commanded, error), runFace.grid, Sensitivities::Skip);
+  if (!f) return f.error();
+  return topographyFromNormal(runFace, normalOf(*f) + unexplained);
+}
+
+// Largest over the motion range of the standard deviation of each axis's curve, for a
+// covariance of the coefficients `cs` (coefficient units²), in µm or µrad.
+std::array<double, kAxisCount> curveDeviation(const std::vector<Coefficient>& cs, const Eigen::MatrixXd& cov,
+                                              const MotionRange& range) {
+  std::array<double, kAxisCount> out{};
+  constexpr int kSamples = 101;
+  const int q = static_cast<int>(cs.size());
+  for (int s = 0; s < kSamples && q > 0; ++s) {
+    const double w = range.min + (range.max - range.min) * s / (kSamples - 1);
+    for (Axis a : kAxes) {
+      Eigen::VectorXd g = Eigen::VectorXd::Zero(q);
+      for (int j = 0; j < q; ++j)
+        if (cs[j].axis == a) g(j) = std::pow(w, cs[j].degree);
+      const double sd = std::sqrt(std::max(0.0, g.dot(cov * g))) * displayFactor(a);
+      out[static_cast<int>(a)] = std::max(out[static_cast<int>(a)], sd);
+    }
+  }
+  return out;
+}
+
+std::string verdictOf(const Correction& c, const CorrectionOptions& o, int points) {
+  std::ostringstream v;
+  v.precision(3);
+  // Within the noise: the rms left is at most twice the probe's sigma.
+  const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
+  if (c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence) {
+    v << "Identification " << (c.summary.status == SolveStatus::Stalled ? "stalled" : "did not converge")
+      << "; the best estimate is proposed (predicted sum of squares " << c.after.sse << " µm², from "
+      << c.before.sse << " µm²). " << c.summary.reason;
+  } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
+    v << "Correctable: the axes can cancel the measured deviation"
+      << (withinNoise && c.uncorrectableShare > o.correctableShare ? " down to the probe noise" : "")
+      << " (predicted sum of squares " << c.after.sse << " µm², from " << c.before.sse << " µm²).";
+  } else {
+    v << "Partly uncorrectable: " << 100 * c.uncorrectableShare
+      << " % of the sum of squares is a shape no axis polynomial produces (such as a second-degree "
+         "shape along the radius); it stays in the residual. Correct the wheel profile to remove it.";
+  }
+  return v.str();
+}
+
+}  // namespace
+
+Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,
+                                        const AxisPolynomials& run, const GroundFace& runFace,
+                                        const Eigen::MatrixXd& measured, const CorrectionOptions& o) {
+  Correction c;
+  Eigen::MatrixXd unexplained;
+  Eigen::MatrixXd coefficientCov;  // of the change of c.coefficients per unit noise variance
+  if (o.method == CorrectionMethod::Linear) {
+    auto step = correctionStep(runFace, run, measured, o);
+    if (!step) return step.error();
+    c = std::move(step).value();
+    c.method = CorrectionMethod::Linear;
+    c.summary.status = SolveStatus::Converged;
+    c.summary.reason = "one linear step (Eq. 17).";
+    c.summary.iterations = 1;
+    // The step's error model: the machine added -change to what it was told.
+    c.identifiedError = run;
+    for (Axis a : kAxes) std::fill(c.identifiedError[a].a.begin(), c.identifiedError[a].a.end(), 0.0);
+    for (size_t j = 0; j < c.coefficients.size(); ++j)
+      c.identifiedError[c.coefficients[j].axis].a[c.coefficients[j].degree] = -c.change(static_cast<int>(j));
+    auto explained = simulateGroundFace(setup, plusError(run, c.identifiedError), runFace.grid, Sensitivities::Skip);
+    if (!explained) return explained.error();
+    unexplained = measured - normalOf(*explained);
+    coefficientCov = c.changeCovariancePerNoise;
+  } else {
+    auto m = identifyMachineError(setup, run, runFace, measured, o);
+    if (!m) return m.error();
+    c.method = CorrectionMethod::Nonlinear;
+    c.before = topographyFromNormal(runFace, measured);
+    c.coefficients = m->space.coefficients;
+    c.identifiedError = m->error;
+    c.summary = m->summary;
+    c.singularValues = m->singularValues;
+    c.directionsUsed = m->used;
+    c.rank = 0;
+    for (bool u : m->used) c.rank += u ? 1 : 0;
+    c.amplifyingDropped = m->amplifying;
+    c.withinNoise = m->withinNoise;
+    c.unobservable = m->space.structural;
+    unexplained = m->unexplained;
+    // nominal - E; a locked coefficient stays as run.
+    c.axes = run;
+    for (const Coefficient& k : c.coefficients)
+      c.axes[k.axis].a[k.degree] = nominal[k.axis].coefficient(k.degree) - m->error[k.axis].a[k.degree];
+    c.change.resize(static_cast<int>(c.coefficients.size()));
+    for (size_t j = 0; j < c.coefficients.size(); ++j)
+      c.change(static_cast<int>(j)) = c.axes[c.coefficients[j].axis].a[c.coefficients[j].degree] -
+                                      run[c.coefficients[j].axis].a[c.coefficients[j].degree];
+    coefficientCov = m->covariancePerNoise;
+  }
+  auto after = predictedFace(setup, runFace, c.axes, c.identifiedError, unexplained);
+  if (!after) return after.error();
+  c.after = *after;
+  const MotionRange range = motionRange(runFace);
+  const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
+  c.roundedAxes = roundToResolution(c.axes, o.resolution, reach);
+  auto rounded = predictedFace(setup, runFace, c.roundedAxes, c.identifiedError, unexplained);
+  if (!rounded) return rounded.error();
+  c.afterRounded = *rounded;
+  c.uncorrectableShare = c.before.sse > 0 ? std::min(1.0, c.after.sse / c.before.sse) : 0.0;
+
+  const SensitivityMatrix S = sensitivityMatrix(runFace, allCoefficients(run.degree()));
+  for (Axis a : kAxes) {
+    const int i = static_cast<int>(a);
+    c.identifiedErrorSize[i] = largestOverRange(c.identifiedError[a], a, range.min, range.max);
+    Polynomial change = c.axes[a];
+    for (size_t k = 0; k < change.a.size(); ++k) change.a[k] -= run[a].a[k];
+    c.axisChangeSize[i] = largestOverRange(change, a, range.min, range.max);
+    // The degree-0 column of the axis: µm of face per mm or rad, to per µm or per µrad.
+    c.facePerAxisError[i] = S.normal.col(i * (run.degree() + 1)).cwiseAbs().maxCoeff() / displayFactor(a);
+  }
+  const std::array<double, kAxisCount> perNoise = curveDeviation(c.coefficients, coefficientCov, range);
+  for (int i = 0; i < kAxisCount; ++i) {
+    c.changePerNoise[i] = perNoise[i];
+    c.uncertainty[i] = perNoise[i] * o.probeNoise;
+  }
+  c.verdict = verdictOf(c, o, runFace.grid.size());
+  return c;
+}
+
+}  // namespace hobsharp

@@ -1,0 +1,312 @@
+// Identify, then compensate (README "Correction"): the machine error found by nonlinear least
+// squares, the axes nominal - error, judged by re-simulating the face the machine then grinds,
+// on the probe grid and on a grid 4 times as dense between the probe points.
+#include <cmath>
+#include <string>
+
+#include "identification_cases.h"
+
+namespace hobsharp::test {
+namespace {
+
+struct Hob {
+  const char* name;
+  CaseInput (*make)();
+  double largest;  // the largest SSE0 tested, µm²
+};
+
+// The five hobs of the issue. The module-2 hob's face is 30 mm long and 6 mm deep: an error of
+// 1e6 µm² (136 µm rms) leaves it unground at the ends, and at 1e5 µm² one pass leaves 1.3e-4 µm²;
+// it is held to the target up to 5e4 µm² (the issue measured it at 2.3e4).
+const Hob kHobs[] = {
+    {"paper", paperCase, 1e6},
+    {"left hand, rake offset", leftHandRakeCase, 1e6},
+    {"module 2", module2Case, 5e4},
+    {"degree 6 on 11 x 21", degree6Case, 1e6},
+    {"straight gash", straightModule4Case, 1e6},
+};
+
+struct Pass {
+  Correction c;
+  Topography onGrid;  // the face ground with c.axes and the true error, on the probe grid
+  Topography dense;   // the same, 4 times as dense
+};
+
+Pass onePass(const SharpeningJob& job, const AxisPolynomials& run, const AxisPolynomials& error,
+             const Eigen::MatrixXd& noise, const CorrectionOptions& o, const Eigen::MatrixXd& shape = {}) {
+  Eigen::MatrixXd measured = topographyFor(job, withMachineError(run, error)).normal + noise;
+  if (shape.size() > 0) measured += shape;
+  auto c = correctMeasuredFace(job.setup, job.nominalAxes, run, groundFaceOf(job, run), measured, o);
+  EXPECT_TRUE(c.ok()) << c.error().message;
+  Pass p{c.value(), {}, {}};
+  p.onGrid = topographyFor(job, withMachineError(p.c.axes, error));
+  p.dense = denseFace(job, withMachineError(p.c.axes, error));
+  return p;
+}
+
+CorrectionOptions noiseFree(const SharpeningJob& job) {
+  CorrectionOptions o = job.correction;
+  o.probeNoise = 1e-4;  // a simulated what-if, declared as such
+  return o;
+}
+
+TEST(Identification, NoiseFreeOnePassLeavesBelow1e4OnFiveHobs) {
+  for (const Hob& hob : kHobs) {
+    const SharpeningJob job = jobOf(hob.make());
+    for (double sse : {1e2, 1e4, hob.largest}) {
+      SCOPED_TRACE(std::string(hob.name) + ", SSE0 " + std::to_string(sse));
+      const AxisPolynomials error = inSpanError(job, sse, 7);
+      const Pass p = onePass(job, job.nominalAxes, error, Eigen::MatrixXd::Zero(job.grid.rows(), job.grid.cols()),
+                             noiseFree(job));
+      EXPECT_NEAR(p.c.before.sse, sse, 1e-6 * sse);
+      EXPECT_EQ(p.c.summary.status, SolveStatus::Converged) << p.c.summary.reason;
+      EXPECT_TRUE(p.c.summary.IsSolutionUsable());
+      EXPECT_GT(p.c.summary.iterations, 0);
+      EXPECT_LT(p.onGrid.sse, 1e-4);
+      EXPECT_LT(rms(p.dense.normal), 2e-3);  // µm between the probe points
+      // The re-simulated prediction is the face the machine grinds.
+      EXPECT_NEAR(p.c.after.sse, p.onGrid.sse, 1e-4);
+      std::printf("[ figures  ] %-24s SSE0 %7.0e -> %.2e µm² (dense rms %.1e µm), %d iterations, rounded %.3f µm²"
+                  " (rank %d, %d within noise, %d amplifying)\n",
+                  hob.name, sse, p.onGrid.sse, rms(p.dense.normal), p.c.summary.iterations, p.c.afterRounded.sse,
+                  p.c.rank, p.c.withinNoise, p.c.amplifyingDropped);
+    }
+  }
+}
+
+// The paper's linear step, side by side: it leaves ~1.4e-11 SSE0² on the paper hob.
+TEST(Identification, LinearMethodStaysAvailableAndIsWorseForLargeErrors) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials error = inSpanError(job, 1e6, 7);
+  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(job.grid.rows(), job.grid.cols());
+  CorrectionOptions linear = noiseFree(job);
+  linear.method = CorrectionMethod::Linear;
+  const Pass l = onePass(job, job.nominalAxes, error, zero, linear);
+  const Pass n = onePass(job, job.nominalAxes, error, zero, noiseFree(job));
+  EXPECT_EQ(l.c.method, CorrectionMethod::Linear);
+  EXPECT_EQ(l.c.summary.iterations, 1);
+  EXPECT_GT(l.onGrid.sse, 1e-2);
+  EXPECT_LT(n.onGrid.sse, 1e-4);
+  // The linear step's sseAfter is re-simulated too: its own error model, not the linear prediction.
+  EXPECT_GT(l.c.after.sse, 0.0);
+  EXPECT_TRUE(std::isfinite(l.c.after.sse));
+}
+
+// Pure probe noise of sigma = 1 µm: nothing above the noise, nothing changed.
+TEST(Identification, NoiseOnlyLeavesAPerfectFaceWithinAThirdOfTheNoise) {
+  for (const Hob& hob : {kHobs[0], kHobs[4]}) {
+    const SharpeningJob job = jobOf(hob.make());
+    CorrectionOptions o = job.correction;
+    o.probeNoise = 1.0;
+    const AxisPolynomials none = times(job.nominalAxes, 0.0);
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+      SCOPED_TRACE(std::string(hob.name) + ", seed " + std::to_string(seed));
+      const Pass p = onePass(job, job.nominalAxes, none, probeNoise(job.grid.rows(), job.grid.cols(), 1.0, seed), o);
+      EXPECT_LE(rms(p.dense.normal), 0.3);
+      EXPECT_LE(rms(p.onGrid.normal), 0.3);
+      std::printf("[ figures  ] %-24s noise only, seed %u: dense rms after %.3f µm\n", hob.name, seed, rms(p.dense.normal));
+    }
+  }
+}
+
+// A 5 µm second-degree shape along the radius (the wheel's), with 0.5 µm noise: the axes take
+// what they can make with small moves and leave the rest, and say so.
+TEST(Identification, RadialShapeIsLeftToTheWheelWithoutWildMoves) {
+  for (const Hob& hob : {kHobs[0], kHobs[1], kHobs[4]}) {
+    SCOPED_TRACE(hob.name);
+    const SharpeningJob job = jobOf(hob.make());
+    CorrectionOptions o = job.correction;
+    o.probeNoise = 0.5;
+    const FaceGrid& g = job.grid;
+    Eigen::MatrixXd shape(g.rows(), g.cols());
+    for (int i = 0; i < g.rows(); ++i) shape.row(i).setConstant(radialShape(g, g.r[i], 5.0));
+    const Pass p = onePass(job, job.nominalAxes, times(job.nominalAxes, 0.0),
+                           probeNoise(g.rows(), g.cols(), 0.5, 3), o, shape);
+    // The face after the pass still has the wheel's shape: judge face + shape on the dense grid.
+    double before = 0, after = 0;
+    for (int i = 0; i < p.dense.normal.rows(); ++i)
+      for (int j = 0; j < p.dense.normal.cols(); ++j) {
+        const double s = radialShape(g, p.dense.grid.r[i], 5.0);
+        before += s * s;
+        after += std::pow(p.dense.normal(i, j) + s, 2);
+      }
+    EXPECT_LT(after, before);
+    EXPECT_LT(std::abs(p.c.axisChangeSize[static_cast<int>(Axis::B)]), 100.0);  // µrad
+    for (Axis a : {Axis::X, Axis::Y, Axis::Z}) EXPECT_LT(std::abs(p.c.axisChangeSize[static_cast<int>(a)]), 20.0);
+    EXPECT_NE(p.c.verdict.find("wheel profile"), std::string::npos) << p.c.verdict;
+    std::printf("[ figures  ] %-24s radial 5 µm: dense SSE %.0f -> %.0f µm², B %.1f µrad\n", hob.name, before, after,
+                p.c.axisChangeSize[static_cast<int>(Axis::B)]);
+  }
+}
+
+// Two passes with fresh noise: the second does not undo the first, and each leaves the face
+// within the noise level between the probe points.
+TEST(Identification, TwoPassesWithFreshNoiseStayWithinTheNoise) {
+  for (const Hob& hob : {kHobs[0], kHobs[4]}) {
+    SCOPED_TRACE(hob.name);
+    const SharpeningJob job = jobOf(hob.make());
+    const double sigma = 0.5;
+    CorrectionOptions o = job.correction;
+    o.probeNoise = sigma;
+    const AxisPolynomials error = inSpanError(job, 1e4, 11);
+    const int rows = job.grid.rows(), cols = job.grid.cols();
+    const Pass first = onePass(job, job.nominalAxes, error, probeNoise(rows, cols, sigma, 21), o);
+    const Pass second = onePass(job, first.c.axes, error, probeNoise(rows, cols, sigma, 22), o);
+    EXPECT_LE(rms(first.dense.normal), sigma);
+    EXPECT_LE(rms(second.dense.normal), sigma);
+    EXPECT_LE(rms(second.onGrid.normal), sigma);
+    // The second pass changes each axis by no more than a few standard uncertainties.
+    for (int i = 0; i < kAxisCount; ++i)
+      EXPECT_LE(std::abs(second.c.axisChangeSize[i]), 4 * second.c.uncertainty[i] + 1e-9) << axisName(kAxes[i]);
+    std::printf("[ figures  ] %-24s two passes, sigma 0.5: dense rms %.3f then %.3f µm\n", hob.name,
+                rms(first.dense.normal), rms(second.dense.normal));
+  }
+}
+
+// The structural null space, by construction: X against A on a helical gash, X, Y and B on a
+// straight one, and the locks.
+TEST(Identification, StructuralNullSpaceIsLeftOut) {
+  {
+    const SharpeningJob job = jobOf(straightModule4Case());
+    const Pass p = onePass(job, job.nominalAxes, inSpanError(job, 1e4, 5),
+                           Eigen::MatrixXd::Zero(job.grid.rows(), job.grid.cols()), noiseFree(job));
+    for (Axis a : {Axis::X, Axis::Y, Axis::B})
+      for (double v : p.c.identifiedError[a].a) EXPECT_EQ(v, 0.0) << axisName(a);
+    EXPECT_EQ(p.c.unobservable.size(), 3u * 6u);  // X, Y, B a0..a5, each alone
+  }
+  {
+    const SharpeningJob job = jobOf(paperCase());
+    const Pass p = onePass(job, job.nominalAxes, inSpanError(job, 1e4, 5),
+                           Eigen::MatrixXd::Zero(job.grid.rows(), job.grid.cols()), noiseFree(job));
+    ASSERT_EQ(p.c.unobservable.size(), 5u);
+    const double pitch = job.setup.face.screwParameter;
+    for (const UnobservableCombination& u : p.c.unobservable) {
+      ASSERT_EQ(u.coefficients.size(), 2u);
+      EXPECT_NEAR(u.amounts[1], 1 / pitch, 1e-12);
+      EXPECT_NE(u.description.find("helicoid"), std::string::npos);
+    }
+  }
+  {
+    const SharpeningJob job = jobOf(paperCase());
+    CorrectionOptions o = noiseFree(job);
+    o.lockedAxes = {Axis::A};
+    o.locked = {Coefficient{Axis::B, 2}};
+    AxisPolynomials error = times(job.nominalAxes, 0.0);
+    error[Axis::A].a[0] = 2e-4;
+    error[Axis::Z].a[1] = 3e-3;
+    const Pass p = onePass(job, job.nominalAxes, error, Eigen::MatrixXd::Zero(job.grid.rows(), job.grid.cols()), o);
+    for (int k = 0; k <= 4; ++k) EXPECT_EQ(p.c.axes[Axis::A].a[k], job.nominalAxes[Axis::A].a[k]);
+    EXPECT_EQ(p.c.axes[Axis::B].a[2], job.nominalAxes[Axis::B].a[2]);
+    EXPECT_TRUE(p.c.unobservable.empty());  // with A locked, X alone takes the helicoid's turn
+    EXPECT_LT(p.onGrid.sse, 1e-4);
+  }
+}
+
+// Rounded to the resolution at the end of the motion range, re-simulated beside the exact proposal.
+TEST(Identification, RoundedAxesAreWhatTheMachineCanRun) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials error = inSpanError(job, 1e4, 3);
+  const Pass p = onePass(job, job.nominalAxes, error, Eigen::MatrixXd::Zero(job.grid.rows(), job.grid.cols()),
+                         noiseFree(job));
+  const double reach = std::max(std::abs(motionRange(groundFaceOf(job, job.nominalAxes)).min),
+                                std::abs(motionRange(groundFaceOf(job, job.nominalAxes)).max));
+  for (Axis a : kAxes)
+    for (int k = 0; k <= 4; ++k) {
+      const double step = coefficientStep(job.correction.resolution, Coefficient{a, k}, reach);
+      const double n = p.c.roundedAxes[a].a[k] / step;
+      EXPECT_NEAR(n, std::round(n), 1e-6) << axisName(a) << " a" << k;
+      EXPECT_LE(std::abs(p.c.roundedAxes[a].a[k] - p.c.axes[a].a[k]), 0.5 * step * (1 + 1e-9));
+    }
+  const double rounded = topographyFor(job, withMachineError(p.c.roundedAxes, error)).sse;
+  EXPECT_NEAR(p.c.afterRounded.sse, rounded, 1e-6 + 1e-6 * rounded);
+  EXPECT_GT(p.c.afterRounded.sse, p.c.after.sse);
+  EXPECT_LT(p.c.afterRounded.sse, 2.0);  // 0.1 µm and 0.0001 deg cost little on this face
+}
+
+// The engineer's figures: identified error, change, uncertainty from sigma, precision demand.
+TEST(Identification, FiguresPerAxis) {
+  const SharpeningJob job = jobOf(paperCase());
+  AxisPolynomials error = times(job.nominalAxes, 0.0);
+  error[Axis::Z].a[0] = -0.01;  // 10 µm
+  error[Axis::B].a[0] = 2e-4;   // 200 µrad: about as many machine steps as Z
+  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(job.grid.rows(), job.grid.cols());
+  const Pass p = onePass(job, job.nominalAxes, error, zero, noiseFree(job));
+  const int Z = static_cast<int>(Axis::Z), B = static_cast<int>(Axis::B);
+  EXPECT_NEAR(p.c.identifiedErrorSize[Z], -10.0, 0.01);  // what the face shows above 3e-4 µm
+  EXPECT_NEAR(p.c.identifiedErrorSize[B], 200.0, 1.0);
+  for (int i = 0; i < kAxisCount; ++i) {
+    EXPECT_NEAR(p.c.axisChangeSize[i], -p.c.identifiedErrorSize[i], 1e-6) << axisName(kAxes[i]);  // run = nominal
+    EXPECT_GE(p.c.uncertainty[i], 0.0);
+    EXPECT_NEAR(p.c.uncertainty[i], 1e-4 * p.c.changePerNoise[i], 1e-12);
+    EXPECT_GT(p.c.facePerAxisError[i], 0.0);
+  }
+  // Z and B together are seen; X and A, whose constant parts are one helicoid turn, are not moved.
+  EXPECT_GT(p.c.changePerNoise[Z], 0.0);
+  EXPECT_GT(p.c.changePerNoise[B], 0.0);
+  // Z moves the face about 1:1 at some grid point; B with a lever of a few mm (µm per µrad).
+  EXPECT_GT(p.c.facePerAxisError[Z], 0.3);
+  EXPECT_LT(p.c.facePerAxisError[Z], 1.5);
+  EXPECT_GT(p.c.facePerAxisError[B], 1e-3);
+  EXPECT_LT(p.c.facePerAxisError[B], 0.1);
+  // With noise, the uncertainty is sigma times the change per µm of noise, and it grows with sigma.
+  CorrectionOptions noisy = job.correction;
+  noisy.probeNoise = 1.0;
+  const Pass q = onePass(job, job.nominalAxes, error, probeNoise(job.grid.rows(), job.grid.cols(), 1.0, 9), noisy);
+  for (int i = 0; i < kAxisCount; ++i) EXPECT_NEAR(q.c.uncertainty[i], q.c.changePerNoise[i], 1e-12);
+  EXPECT_GT(q.c.uncertainty[Z], p.c.uncertainty[Z]);
+}
+
+// A solve stopped by its iteration limit returns its status and its best iterate, finite.
+TEST(Identification, NonConvergingSolveReturnsItsBestIterate) {
+  const SharpeningJob job = jobOf(paperCase());
+  CorrectionOptions o = noiseFree(job);
+  o.solver.maxIterations = 1;
+  const AxisPolynomials error = inSpanError(job, 1e6, 7);
+  const Pass p = onePass(job, job.nominalAxes, error, Eigen::MatrixXd::Zero(job.grid.rows(), job.grid.cols()), o);
+  EXPECT_EQ(p.c.summary.status, SolveStatus::NoConvergence) << p.c.summary.reason;
+  EXPECT_TRUE(p.c.summary.IsSolutionUsable());
+  EXPECT_EQ(p.c.summary.iterations, 1);
+  EXPECT_TRUE(std::isfinite(p.c.after.sse));
+  EXPECT_LT(p.c.after.sse, p.c.before.sse);
+  EXPECT_NE(p.c.verdict.find("did not converge"), std::string::npos) << p.c.verdict;
+}
+
+TEST(Identification, BadInputIsRefusedWithTheFieldNamed) {
+  struct Bad {
+    void (*change)(CaseInput&);
+    const char* field;
+  };
+  const Bad bad[] = {
+      {[](CaseInput& c) { c.correction.probeNoise = 0.0; }, "correction.probeNoise"},
+      {[](CaseInput& c) { c.correction.probeNoise = -1.0; }, "correction.probeNoise"},
+      {[](CaseInput& c) { c.correction.probeNoise = std::nan(""); }, "correction.probeNoise"},
+      {[](CaseInput& c) { c.correction.probeNoise = INFINITY; }, "correction.probeNoise"},
+      {[](CaseInput& c) { c.correction.resolution[0] = 0.0; }, "correction.resolution.X"},
+      {[](CaseInput& c) { c.correction.resolution[4] = -1e-4; }, "correction.resolution.B"},
+  };
+  for (const Bad& b : bad) {
+    CaseInput in = paperCase();
+    b.change(in);
+    auto job = resolveJob(in);
+    ASSERT_FALSE(job.ok()) << b.field;
+    EXPECT_EQ(job.error().field, b.field);
+    EXPECT_EQ(job.error().message.rfind(std::string(b.field) + ":", 0), 0u) << job.error().message;
+  }
+  // And from the case file's text.
+  const std::string text = readFile("tab1.json");
+  const std::string head = text.substr(0, text.rfind('}'));
+  auto withCorrection = [&](const std::string& json) { return head + ", \"correction\": " + json + "}"; };
+  EXPECT_EQ(parseCase(withCorrection("{\"method\": \"quadratic\"}")).error().field, "correction.method");
+  EXPECT_EQ(parseCase(withCorrection("{\"resolution\": {\"C\": 1}}")).error().field, "correction.resolution.C");
+  EXPECT_EQ(parseCase(withCorrection("{\"probeNoise\": \"1\"}")).error().field, "correction.probeNoise");
+  auto ok = parseCase(withCorrection("{\"method\": \"linear\", \"probeNoise\": 2, \"resolution\": {\"A\": 0.001}}"));
+  ASSERT_TRUE(ok.ok()) << ok.error().message;
+  const SharpeningJob job = jobOf(*ok);
+  EXPECT_EQ(job.correction.method, CorrectionMethod::Linear);
+  EXPECT_EQ(job.correction.probeNoise, 2.0);
+  EXPECT_EQ(job.correction.resolution.step[3], 0.001);
+  EXPECT_EQ(job.correction.resolution.step[0], 0.1);  // the default where not given
+}
+
+}  // namespace
+}  // namespace hobsharp::test
