@@ -3,6 +3,8 @@
 #include <cmath>
 #include <optional>
 
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
 #include <Eigen/SVD>
 #include <unsupported/Eigen/LevenbergMarquardt>
 
@@ -175,10 +177,16 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
   for (int round = 0; round < kDecisionRounds; ++round) {
     if (q == 0 || m.space.basis.cols() == 0) break;
     const Eigen::MatrixXd Jz = sensitivityMatrix(current, cs).normal * m.space.step.asDiagonal() * m.space.basis;
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jz, Eigen::ComputeThinU | Eigen::ComputeThinV);
     const Eigen::VectorXd data = d - faceNormal(current) + Jz * zE;  // what E makes, linearised here
+    // The SVD of Jz through its QR (Jz = Q R, R = U S V^T): the data's components along the
+    // left singular vectors are U^T (Q^T data), without forming the p x m factor.
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Jz);
+    const int mm = static_cast<int>(Jz.cols());
+    const Eigen::MatrixXd R = qr.matrixQR().topRows(mm).triangularView<Eigen::Upper>();
+    const Eigen::VectorXd qtd = (qr.householderQ().transpose() * data).head(mm);
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
     const Eigen::VectorXd s = svd.singularValues();
-    const Eigen::VectorXd c = svd.matrixU().transpose() * data;
+    const Eigen::VectorXd c = svd.matrixU().transpose() * qtd;
     // The step the strongest direction needs to make the whole face: the yardstick of "wild".
     const double yardstick = data.norm() / s(0);
     std::vector<int> kept;
@@ -269,12 +277,12 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
   m.summary.finalCost = m.unexplained.squaredNorm();
   m.covariancePerNoise = Eigen::MatrixXd::Zero(q, q);
   if (P.cols() > 0) {
+    // (J^T J)^-1 in the identified directions, which the decision kept well conditioned.
     const Eigen::MatrixXd J = sensitivityMatrix(m.face, cs).normal * P;
-    const Eigen::JacobiSVD<Eigen::MatrixXd> js(J, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    Eigen::VectorXd inv = js.singularValues();
-    for (int i = 0; i < inv.size(); ++i) inv(i) = inv(i) > 0 ? 1.0 / (inv(i) * inv(i)) : 0.0;
-    const Eigen::MatrixXd covTheta = js.matrixV() * inv.asDiagonal() * js.matrixV().transpose();
-    m.covariancePerNoise = P * covTheta * P.transpose();
+    const Eigen::MatrixXd JtJ = J.transpose() * J;
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(JtJ);
+    const Eigen::MatrixXd covTheta = ldlt.solve(Eigen::MatrixXd::Identity(JtJ.rows(), JtJ.cols()));
+    if (covTheta.allFinite()) m.covariancePerNoise = P * covTheta * P.transpose();
   }
   return m;
 }

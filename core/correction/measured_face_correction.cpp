@@ -1,6 +1,8 @@
 // correctMeasuredFace (correction.h): either method, then the figures the engineer reads.
 #include <cmath>
+#include <limits>
 #include <sstream>
+#include <vector>
 
 #include "correction.h"
 #include "machine_error.h"
@@ -23,12 +25,24 @@ AxisPolynomials plusError(AxisPolynomials axes, const AxisPolynomials& error) {
   return axes;
 }
 
+// True when the two differ by no more than rounding in their last bits: the same face.
+bool sameAxes(const AxisPolynomials& a, const AxisPolynomials& b) {
+  for (Axis x : kAxes)
+    for (size_t k = 0; k < a[x].a.size(); ++k)
+      if (std::abs(a[x].a[k] - b[x].a[k]) > 8 * std::numeric_limits<double>::epsilon() * (1 + std::abs(b[x].a[k])))
+        return false;
+  return true;
+}
+
 // The face the machine grinds when `commanded` is run and it adds `error`, plus the part of the
-// measurement no axis makes (which stays), on the probe grid.
+// measurement no axis makes (which stays), on the probe grid. `known` is a face already
+// simulated for the axes `knownAxes` (the nominal ones, in a first pass: nominal - E + E).
 Outcome<Topography> predictedFace(const SharpeningSetup& setup, const GroundFace& runFace,
                                   const AxisPolynomials& commanded, const AxisPolynomials& error,
-                                  const Eigen::MatrixXd& unexplained) {
-  auto f = simulateGroundFace(setup, plusError(commanded, error), runFace.grid, Sensitivities::Skip);
+                                  const Eigen::MatrixXd& unexplained, const AxisPolynomials& knownAxes) {
+  const AxisPolynomials actual = plusError(commanded, error);
+  if (sameAxes(actual, knownAxes)) return topographyFromNormal(runFace, normalOf(runFace) + unexplained);
+  auto f = simulateGroundFace(setup, actual, runFace.grid, Sensitivities::Skip);
   if (!f) return f.error();
   return topographyFromNormal(runFace, normalOf(*f) + unexplained);
 }
@@ -40,17 +54,39 @@ std::array<double, kAxisCount> curveDeviation(const std::vector<Coefficient>& cs
   std::array<double, kAxisCount> out{};
   constexpr int kSamples = 101;
   const int q = static_cast<int>(cs.size());
-  for (int s = 0; s < kSamples && q > 0; ++s) {
-    const double w = range.min + (range.max - range.min) * s / (kSamples - 1);
-    for (Axis a : kAxes) {
-      Eigen::VectorXd g = Eigen::VectorXd::Zero(q);
-      for (int j = 0; j < q; ++j)
-        if (cs[j].axis == a) g(j) = std::pow(w, cs[j].degree);
-      const double sd = std::sqrt(std::max(0.0, g.dot(cov * g))) * displayFactor(a);
+  if (q == 0) return out;
+  // Each axis's block of the covariance, and the curve's basis phi^k at each sample.
+  for (Axis a : kAxes) {
+    std::vector<int> index;
+    for (int j = 0; j < q; ++j)
+      if (cs[j].axis == a) index.push_back(j);
+    if (index.empty()) continue;
+    const int n = static_cast<int>(index.size());
+    Eigen::MatrixXd block(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) block(i, j) = cov(index[i], index[j]);
+    Eigen::VectorXd g(n);
+    for (int s = 0; s < kSamples; ++s) {
+      const double w = range.min + (range.max - range.min) * s / (kSamples - 1);
+      for (int i = 0; i < n; ++i) {
+        g(i) = 1;
+        for (int k = 0; k < cs[index[i]].degree; ++k) g(i) *= w;
+      }
+      const double sd = std::sqrt(std::max(0.0, g.dot(block * g))) * displayFactor(a);
       out[static_cast<int>(a)] = std::max(out[static_cast<int>(a)], sd);
     }
   }
   return out;
+}
+
+// A sum of squares for a sentence: 3 digits, or "below 1e-6" where only rounding is left (which
+// the native and the WebAssembly builds round differently).
+std::string squares(double sse) {
+  if (sse < 1e-6) return "below 1e-6";
+  std::ostringstream s;
+  s.precision(3);
+  s << sse;
+  return s.str();
 }
 
 std::string verdictOf(const Correction& c, const CorrectionOptions& o, int points) {
@@ -60,12 +96,12 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
   const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
   if (c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence) {
     v << "Identification " << (c.summary.status == SolveStatus::Stalled ? "stalled" : "did not converge")
-      << "; the best estimate is proposed (predicted sum of squares " << c.after.sse << " µm², from "
-      << c.before.sse << " µm²). " << c.summary.reason;
+      << "; the best estimate is proposed (predicted sum of squares " << squares(c.after.sse) << " µm², from "
+      << squares(c.before.sse) << " µm²). " << c.summary.reason;
   } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
     v << "Correctable: the axes can cancel the measured deviation"
       << (withinNoise && c.uncorrectableShare > o.correctableShare ? " down to the probe noise" : "")
-      << " (predicted sum of squares " << c.after.sse << " µm², from " << c.before.sse << " µm²).";
+      << " (predicted sum of squares " << squares(c.after.sse) << " µm², from " << squares(c.before.sse) << " µm²).";
   } else {
     v << "Partly uncorrectable: " << 100 * c.uncorrectableShare
       << " % of the sum of squares is a shape no axis polynomial produces (such as a second-degree "
@@ -125,18 +161,20 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
                                       run[c.coefficients[j].axis].a[c.coefficients[j].degree];
     coefficientCov = m->covariancePerNoise;
   }
-  auto after = predictedFace(setup, runFace, c.axes, c.identifiedError, unexplained);
+  auto after = predictedFace(setup, runFace, c.axes, c.identifiedError, unexplained, run);
   if (!after) return after.error();
   c.after = *after;
   const MotionRange range = motionRange(runFace);
   const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
   c.roundedAxes = roundToResolution(c.axes, o.resolution, reach);
-  auto rounded = predictedFace(setup, runFace, c.roundedAxes, c.identifiedError, unexplained);
+  auto rounded = predictedFace(setup, runFace, c.roundedAxes, c.identifiedError, unexplained, run);
   if (!rounded) return rounded.error();
   c.afterRounded = *rounded;
   c.uncorrectableShare = c.before.sse > 0 ? std::min(1.0, c.after.sse / c.before.sse) : 0.0;
 
-  const SensitivityMatrix S = sensitivityMatrix(runFace, allCoefficients(run.degree()));
+  std::vector<Coefficient> constants;
+  for (Axis a : kAxes) constants.push_back(Coefficient{a, 0});
+  const SensitivityMatrix S = sensitivityMatrix(runFace, constants);
   for (Axis a : kAxes) {
     const int i = static_cast<int>(a);
     c.identifiedErrorSize[i] = largestOverRange(c.identifiedError[a], a, range.min, range.max);
@@ -144,7 +182,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     for (size_t k = 0; k < change.a.size(); ++k) change.a[k] -= run[a].a[k];
     c.axisChangeSize[i] = largestOverRange(change, a, range.min, range.max);
     // The degree-0 column of the axis: µm of face per mm or rad, to per µm or per µrad.
-    c.facePerAxisError[i] = S.normal.col(i * (run.degree() + 1)).cwiseAbs().maxCoeff() / displayFactor(a);
+    c.facePerAxisError[i] = S.normal.col(i).cwiseAbs().maxCoeff() / displayFactor(a);
   }
   const std::array<double, kAxisCount> perNoise = curveDeviation(c.coefficients, coefficientCov, range);
   for (int i = 0; i < kAxisCount; ++i) {

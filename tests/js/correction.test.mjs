@@ -54,9 +54,13 @@ test('the default correction identifies the machine error and proposes nominal m
   perAxis(k.uncertainty, 'uncertainty');
   perAxis(k.precision.facePerError, 'precision.facePerError');
   perAxis(k.precision.changePerNoise, 'precision.changePerNoise');
-  // Z: -10 µm at a0 and +3 µm/rad at a1: largest over the motion range about -11.5 µm.
-  assert.ok(k.identifiedError.Z < -10 && k.identifiedError.Z > -13, `Z error ${k.identifiedError.Z} µm`);
-  assert.ok(Math.abs(k.identifiedError.B - 500) < 300, `B error ${k.identifiedError.B} µrad`);
+  // The curves of the error over the motion range: Z = -10 + 3 phi µm, B = 500 + 1000 phi² µrad.
+  const ends = [r.motion.min, r.motion.max];
+  const zWorst = -10 + 3 * r.motion.min, bWorst = 500 + 1000 * Math.max(...ends.map((p) => p * p));
+  assert.ok(Math.abs(k.identifiedError.Z - zWorst) < 0.01, `Z error ${k.identifiedError.Z} µm, expected ${zWorst}`);
+  // B moves the face by only some 0.003 µm per µrad: a combination holding a few µrad of it stays
+  // below 3 sigma of face and is not identified.
+  assert.ok(Math.abs(k.identifiedError.B - bWorst) < 10, `B error ${k.identifiedError.B} µrad, expected ${bWorst}`);
   for (const a of AXES) assert.ok(Math.abs(k.axisChange[a] + k.identifiedError[a]) < 1e-6 || a === 'X' || a === 'A', a);
   // The exact proposal and the rounded one, both re-simulated.
   for (const a of AXES) {
@@ -88,7 +92,9 @@ test('the wasm module and the native build agree on the correction', () => {
   const c = measuredCase();
   const w = hobsharp.evaluate(c).correction, n = native(c).correction;
   for (const a of AXES) {
-    w.axes[a].forEach((v, i) => assert.ok(Math.abs(v - n.axes[a][i]) <= 1e-9 * (1 + Math.abs(v)), `axes.${a}[${i}]`));
+    // The weakest identified directions are fixed to the solver's tolerance: 1e-8 in coefficient
+    // units moves an axis by less than 1e-8 mm or rad over the motion range (|phi| < 1).
+    w.axes[a].forEach((v, i) => assert.ok(Math.abs(v - n.axes[a][i]) <= 1e-8, `axes.${a}[${i}]: ${v} vs ${n.axes[a][i]}`));
     assert.ok(Math.abs(w.identifiedError[a] - n.identifiedError[a]) < 1e-6, `identifiedError.${a}`);
   }
   assert.equal(w.status, n.status);

@@ -38,7 +38,8 @@ function measuredCase() {
   const run = structuredClone(nominal);
   run.Y[0] += 0.01; run.Z[0] -= 0.01; run.Z[1] += 0.003; run.A[0] += 0.0002; run.B[2] += 0.001;
   const measured = hobsharp.evaluate({ ...c, axes: run }).topography.normal;
-  return { ...c, measured };
+  // A simulated what-if is noise-free, and says so (README "Correction").
+  return { ...c, measured, correction: { probeNoise: 1e-4 } };
 }
 
 test('the paper example through the wasm module matches the native figures to 1e-9 mm', () => {
@@ -63,7 +64,8 @@ test('the correction through the wasm module matches the native one', () => {
   const c = measuredCase();
   const w = hobsharp.evaluate(c), n = native(c);
   assert.ok(w.correction, 'a measured topography gives a correction');
-  for (const k of ['X', 'Y', 'Z', 'A', 'B']) assertClose(w.correction.axes[k], n.correction.axes[k], 1e-9, `corrected ${k}`);
+  const range = Math.max(Math.abs(n.motion.min), Math.abs(n.motion.max));
+  for (const k of ['X', 'Y', 'Z', 'A', 'B']) assertSameCurves(w.correction.axes[k], n.correction.axes[k], `corrected ${k}`, range);
   assertClose(w.correction.residual, n.correction.residual, 1e-6, 'residual (µm)');
   assert.equal(w.correction.rank, n.correction.rank);
   assert.ok(w.correction.sseBefore > 1e3 && w.correction.sseAfter < 1e-3);
@@ -71,19 +73,38 @@ test('the correction through the wasm module matches the native one', () => {
   assert.match(w.correction.unobservable[0], /X a\d .* A a\d/);
 });
 
+// The correction's weakest identified directions are fixed only to rounding times their
+// conditioning, which differs in the last bits between the builds: the proposed axes are compared
+// by the curves they make over the motion range, to 1e-9 mm or rad, and a coefficient change by
+// its curve a_k phi^k.
+const weakCoefficients = /^result\.correction\.(axes|roundedAxes)\.[XYZAB]$|^result\.correction\.change$/;
+function assertSameCurves(w, n, where, range, degrees) {
+  n.forEach((x, i) => {
+    const k = degrees ? degrees[i] : i;
+    assert.ok(Math.abs(w[i] - x) * range ** k <= 1e-9 * Math.max(1, Math.abs(x) * range ** k),
+      `${where}[${i}]: wasm ${w[i]} vs native ${x} (a${k}, motion range ${range})`);
+  });
+}
+
 // Every field of the native result is in the module's, with the same shape, and every number agrees
 // to 1e-9 of its size (1e-9 absolute below 1): both come from the one result model.
-function assertSameResult(w, n, where) {
+function assertSameResult(w, n, where, root = n) {
+  if (weakCoefficients.test(where)) {
+    const range = Math.max(Math.abs(root.motion.min), Math.abs(root.motion.max));
+    const degrees = where.endsWith('change') ? root.correction.coefficients.map((c) => Number(c.slice(3))) : null;
+    assert.equal(w.length, n.length, `${where}: length`);
+    return assertSameCurves(w, n, where, range, degrees);
+  }
   if (typeof n === 'number') {
     assert.equal(typeof w, 'number', `${where}: a number`);
     assert.ok(Math.abs(w - n) <= 1e-9 * Math.max(1, Math.abs(n)), `${where}: wasm ${w} vs native ${n}`);
   } else if (Array.isArray(n)) {
     assert.ok(Array.isArray(w), `${where}: a list`);
     assert.equal(w.length, n.length, `${where}: length`);
-    n.forEach((x, i) => assertSameResult(w[i], x, `${where}[${i}]`));
+    n.forEach((x, i) => assertSameResult(w[i], x, `${where}[${i}]`, root));
   } else if (n && typeof n === 'object') {
     assert.deepEqual(Object.keys(w), Object.keys(n), `${where}: the same fields in the same order`);
-    for (const k of Object.keys(n)) assertSameResult(w[k], n[k], `${where}.${k}`);
+    for (const k of Object.keys(n)) assertSameResult(w[k], n[k], `${where}.${k}`, root);
   } else {
     assert.equal(w, n, where);
   }

@@ -24,12 +24,13 @@ test('every listed field is in the result of a measured case, and nothing else i
     const v = f.path.split('.').reduce((o, k) => (o === undefined ? undefined : o[k]), r);
     assert.notEqual(v, undefined, `${f.path} is in the result`);
   }
-  // The leaves of the result (an axes object counts as one field).
+  // The leaves of the result (an axes object {X: [a0..], .., B: [..]} counts as one field; a
+  // per-axis object {X: number, ..} as five).
   const found = [];
   const stack = [[r, '']];
   while (stack.length) {
     const [v, p] = stack.pop();
-    if (v && typeof v === 'object' && !Array.isArray(v) && !('X' in v && 'B' in v)) {
+    if (v && typeof v === 'object' && !Array.isArray(v) && !('X' in v && 'B' in v && Array.isArray(v.X))) {
       for (const [k, x] of Object.entries(v)) stack.push([x, p ? `${p}.${k}` : k]);
     } else found.push(p);
   }
