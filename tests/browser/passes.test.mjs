@@ -11,6 +11,17 @@ const desk = { viewport: { width: 1366, height: 900 } };
 // The machine's error: 10 µm along the wheel axis, and a wheel swivel of 1 mrad/rad² of motion.
 const machineError = { 'Z 0': '-0.01', 'B 2': '0.001' };
 
+// Measures the face the machine grinds now: ground with its error (the what-if), and pasted as
+// CSV, as a measured grid is (the correction then assumes the probe's noise, the same every pass).
+async function measure(page) {
+  await afterResult(page, () => page.click('#generate-error'));
+  const csv = await page.inputValue('#measured-csv');
+  await afterResult(page, () => page.click('#clear-measured'));
+  await page.fill('#measured-csv', csv);
+  await afterResult(page, () => page.click('#use-measured'));
+  return csv;
+}
+
 // The history table as rows of cell texts, once every kept pass's figures are in and plotted.
 async function table(page) {
   await page.waitForFunction(() => {
@@ -30,6 +41,29 @@ async function plotDrawn(page) {
   assert.ok(await colours(page, '#plot-passes') > 20, 'the plot is not blank');
 }
 
+// The machine error identified (issue 10, item 5): status and iterations, per axis the error,
+// its uncertainty and the change with units, the precision demand, the rounded axes.
+async function identification(page) {
+  assert.equal(await page.isVisible('#identification'), true);
+  assert.match(await page.textContent('#solver-status'), /^Solver \(nonlinear identification\): converged, \d+ iterations?\./);
+  const errors = await page.$$eval('#identified-error tbody tr', (rows) => rows.map((r) => [...r.children].map((c) => c.textContent.trim())));
+  assert.deepEqual(errors.map((r) => r[0]), ['X', 'Y', 'Z', 'A', 'B']);
+  for (const r of errors) {
+    const unit = ['A', 'B'].includes(r[0]) ? 'µrad' : 'µm';
+    assert.match(r[1], new RegExp(`^−?[\\d.e+-]+ ${unit}$`), r.join(' | '));
+    assert.match(r[2], new RegExp(`^± [\\d.e+-]+ ${unit}$`), r.join(' | '));
+    assert.match(r[3], new RegExp(`^−?[\\d.e+-]+ ${unit}$`), r.join(' | '));
+  }
+  const demand = await page.$$eval('#precision-demand tr', (rows) => rows.map((r) => [...r.children].map((c) => c.textContent.trim())));
+  assert.deepEqual(demand[0], ['axis', 'face per unit of axis error, largest over the grid', 'axis change per µm of probe noise']);
+  assert.match(demand[1].join(' | '), /^X \| [\d.e+-]+ µm\/µm \| [\d.e+-]+ µm\/µm$/);
+  assert.match(demand[5].join(' | '), /^B \| [\d.e+-]+ µm\/µrad \| [\d.e+-]+ µrad\/µm$/);
+  assert.equal(await page.locator('[data-rounded-axis]').count(), 5);
+  assert.match(await page.textContent('#rounded-sse'), /^Predicted with the rounded axes, re-simulated: sum of squares [\d.e+-]+ µm², largest \|deviation\| [\d.]+ µm, thickness error [+−-]?[\d.]+ µm\. With the exact proposal: sum of squares [\d.e+-]+ µm²/);
+  assert.doesNotMatch(await page.textContent('#identification'), /NaN|undefined|Infinity|—/);
+  await page.locator('#measured-section').screenshot({ path: path.join(shots, 'passes-identification.png') });
+}
+
 async function save(page) {
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-case')]);
   return { file: await download.path(), saved: JSON.parse(readFileSync(await download.path(), 'utf8')) };
@@ -43,11 +77,7 @@ test('measure, correct, use as next run, measure again; the history is saved and
     await page.fill(`[data-offset="${k}"]`, v);
     await page.dispatchEvent(`[data-offset="${k}"]`, 'change');
   }
-  await afterResult(page, () => page.click('#generate-error'));
-  const csv = await page.inputValue('#measured-csv');
-  await afterResult(page, () => page.click('#clear-measured'));
-  await page.fill('#measured-csv', csv);
-  await afterResult(page, () => page.click('#use-measured'));
+  const csv = await measure(page);
   // Correct: the pass under way, measured, and the next one predicted.
   let rows = await table(page);
   assert.deepEqual(rows.map((r) => r[0]), ['1 (under way)', '2 (next, predicted)']);
@@ -55,6 +85,7 @@ test('measure, correct, use as next run, measure again; the history is saved and
   assert.ok(first > 100, `pass 1 measured ${first} µm²`);
   assert.ok(sseOf(rows[1], 'predicted') < first / 100, 'the correction predicts a far better face');
   assert.equal(await page.isDisabled('#next-run'), false);
+  await identification(page);
 
   // Use as next run: pass 1 kept, the proposal runs, nothing measured yet.
   await afterResult(page, () => page.click('#next-run'));
@@ -73,7 +104,7 @@ test('measure, correct, use as next run, measure again; the history is saved and
   assert.deepEqual(await table(page), rows);
 
   // Measure again: the same machine, now with the corrected axes.
-  await afterResult(page, () => page.click('#generate-error'));
+  await measure(page);
   rows = await table(page);
   assert.deepEqual(rows.map((r) => r[0]), ['1', '2 (under way)', '3 (next, predicted)']);
   const second = sseOf(rows[1], 'measured');
