@@ -52,6 +52,19 @@ Json measuredRows(int rows, int cols) {
   return m;
 }
 
+// Two passes of the paper case (5 x 9 grid, degree 4): the nominal axes, then a changed run.
+Json twoPasses() {
+  const Json nominal = {{"X", {22.4003, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}},
+                        {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}};
+  Json second = nominal;
+  second["Y"][0] = 39.3071;
+  second["B"][2] = -1.25e-5;
+  Json first = {{"axes", nominal}, {"measured", measuredRows(5, 9)}}, next = {{"axes", second}, {"measured", measuredRows(5, 9)}};
+  first["measured"][2][3] = 7.125;
+  next["measured"][4][8] = -0.0625;
+  return Json::array({first, next});
+}
+
 const Rule kRules[] = {
     // A missing required field, a wrong type, NaN or infinity, an unknown format.
     {"MissingField", [](Json& j) { j["hob"].erase("pitchDiameter"); }, "hob.pitchDiameter", "is missing"},
@@ -116,6 +129,16 @@ const Rule kRules[] = {
     {"LockedUnknown", [](Json& j) { j["correction"] = {{"locked", {"Q a0"}}}; }, "correction.locked", "write a coefficient as"},
     {"LockedBeyondDegree", [](Json& j) { j["correction"] = {{"locked", {"X a6"}}}; }, "correction.locked", "beyond the polynomial degree"},
     {"TruncationOutOfRange", [](Json& j) { j["correction"] = {{"truncation", 2}}; }, "correction.truncation", "between 0 and 1"},
+    // A pass history whose shapes do not match its grid or degree (docs/case-format.md, passes).
+    {"PassesNotAList", [](Json& j) { j["passes"] = 3; }, "passes", "must be a list of passes"},
+    {"PassNotAnObject", [](Json& j) { j["passes"] = {twoPasses()[0], 7}; }, "passes[1]", "must be an object"},
+    {"PassMeasuredTooFewRows", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["measured"] = measuredRows(4, 9); }, "passes[1].measured", "needs grid.radial = 5 rows of grid.axial = 9 values; got 4 x 9"},
+    {"PassMeasuredShortRow", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["measured"][2].erase(8); }, "passes[0].measured[2]", "has 8 values"},
+    {"PassMeasuredBeyond10mm", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["measured"][4][8] = 2e4; }, "passes[1].measured[4][8]", "must lie within ±10000 µm"},
+    {"PassMeasuredMissing", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0].erase("measured"); }, "passes[0].measured", "is missing"},
+    {"PassAxesWrongDegree", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["axes"]["B"].erase(4); }, "passes[1].axes.B", "needs 5 coefficients"},
+    {"PassAxesMissing", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0].erase("axes"); }, "passes[0].axes", "is missing"},
+    {"PassUnknownField", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["predicted"] = 1; }, "passes[0].predicted", "unknown field"},
 };
 
 INSTANTIATE_TEST_SUITE_P(CaseFile, BadInput, ::testing::ValuesIn(kRules),
@@ -391,6 +414,42 @@ TEST(CaseFile, AxesAndMeasuredAreRead) {
   ASSERT_TRUE(e.ok()) << e.error().message;
   ASSERT_TRUE(e->correction.has_value());
   EXPECT_EQ(e->correction->coefficients.size(), 19u);
+}
+
+// The pass history round-trips: every value read is the value written, a case without passes
+// and the same case with them give the same result (the calculation does not use them), and
+// the page's empty history ([]) reads as none.
+TEST(CaseFile, PassesRoundTrip) {
+  Json j = paperJson();
+  j["passes"] = twoPasses();
+  auto in = parseCase(j.dump());
+  ASSERT_TRUE(in.ok()) << in.error().message;
+  ASSERT_EQ(in->passes.size(), 2u);
+  for (std::size_t p = 0; p < 2; ++p) {
+    const Json& written = j["passes"][p];
+    const PassInput& read = in->passes[p];
+    for (Axis a : kAxes) EXPECT_EQ(Json(read.axes[a].a), written["axes"][axisName(a)]) << "pass " << p << " " << axisName(a);
+    ASSERT_EQ(read.measured.rows(), 5);
+    ASSERT_EQ(read.measured.cols(), 9);
+    for (int r = 0; r < 5; ++r)
+      for (int c = 0; c < 9; ++c) EXPECT_EQ(read.measured(r, c), written["measured"][r][c].get<double>());
+  }
+  EXPECT_EQ(in->passes[0].measured(2, 3), 7.125);
+  EXPECT_EQ(in->passes[1].measured(4, 8), -0.0625);
+  EXPECT_EQ(in->passes[1].axes[Axis::B].a[2], -1.25e-5);
+
+  auto with = evaluateCase(j.dump());
+  ASSERT_TRUE(with.ok()) << with.error().message;
+  j.erase("passes");
+  auto without = evaluateCase(j.dump());
+  ASSERT_TRUE(without.ok()) << without.error().message;
+  EXPECT_EQ(with->topography.sse, without->topography.sse);
+  EXPECT_EQ(with->topography.normal, without->topography.normal);
+
+  j["passes"] = Json::array();
+  auto empty = parseCase(j.dump());
+  ASSERT_TRUE(empty.ok()) << empty.error().message;
+  EXPECT_TRUE(empty->passes.empty());
 }
 
 // Random damage to the paper's case: every variant is either accepted or refused with a message,

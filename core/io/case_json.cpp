@@ -270,25 +270,50 @@ Outcome<AxisPolynomials> readAxes(const Node& a) {
   return axes;
 }
 
-Outcome<Eigen::MatrixXd> readMeasured(const Json& m) {
-  if (!m.is_array()) return refuse("measured", std::string("must be a list of rows; got ") + typeName(m) + ".");
-  if (m.empty()) return refuse("measured", "is empty; it needs one row per radial grid line.");
+// A grid of measured deviations; `name` is its field ("measured", "passes[1].measured").
+Outcome<Eigen::MatrixXd> readMeasured(const Json& m, const std::string& name = "measured") {
+  if (!m.is_array()) return refuse(name, std::string("must be a list of rows; got ") + typeName(m) + ".");
+  if (m.empty()) return refuse(name, "is empty; it needs one row per radial grid line.");
   const std::size_t cols = m[0].is_array() ? m[0].size() : 0;
   // Every row's shape before the matrix is allocated: its size then follows from the text's.
   for (std::size_t i = 0; i < m.size(); ++i) {
-    const std::string row = "measured[" + std::to_string(i) + "]";
+    const std::string row = name + "[" + std::to_string(i) + "]";
     if (!m[i].is_array()) return refuse(row, std::string("must be a list of values; got ") + typeName(m[i]) + ".");
     if (m[i].size() != cols)
       return refuse(row, "has " + std::to_string(m[i].size()) + " values; the first row has " + std::to_string(cols) + ".");
   }
   Eigen::MatrixXd out(static_cast<Eigen::Index>(m.size()), static_cast<Eigen::Index>(cols));
   for (std::size_t i = 0; i < m.size(); ++i) {
-    const std::string row = "measured[" + std::to_string(i) + "]";
+    const std::string row = name + "[" + std::to_string(i) + "]";
     for (std::size_t j = 0; j < cols; ++j) {
       double v = 0;
       HOBSHARP_ASSIGN(v, Node::toNumber(m[i][j], row + "[" + std::to_string(j) + "]"));
       out(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = v;
     }
+  }
+  return out;
+}
+
+// The pass history: a list of {"axes": {X..B}, "measured": rows}, oldest first. Shapes against
+// the grid and the degree are resolveJob()'s to check, as for `measured` and `axes`.
+Outcome<std::vector<PassInput>> readPasses(const Json& p) {
+  if (!p.is_array())
+    return refuse("passes", std::string("must be a list of passes such as [{\"axes\": {...}, \"measured\": [[...]]}]; got ") +
+                                typeName(p) + ".");
+  std::vector<PassInput> out;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::string name = "passes[" + std::to_string(i) + "]";
+    if (!p[i].is_object()) return refuse(name, std::string("must be an object with axes and measured; got ") + typeName(p[i]) + ".");
+    const Node pass(p[i], name);
+    HOBSHARP_TRY(pass.onlyKnown({"axes", "measured"}));
+    PassInput in;
+    auto axes = pass.object("axes", true);
+    if (!axes) return axes.error();
+    HOBSHARP_ASSIGN(in.axes, readAxes(*axes));
+    const Json* m = pass.find("measured");
+    if (!m) return refuse(pass.field("measured"), "is missing.");
+    HOBSHARP_ASSIGN(in.measured, readMeasured(*m, pass.field("measured")));
+    out.push_back(std::move(in));
   }
   return out;
 }
@@ -351,7 +376,7 @@ Outcome<CaseInput> parseCase(const std::string& text) {
     return refuse("format", "unknown format " + (format->is_string() ? quoted(format->get<std::string>()) : typeName(*format)) +
                                 "; this calculator reads \"" + kCaseFormat + "\".");
   HOBSHARP_TRY(root.onlyKnown({"format", "hob", "wheel", "setup", "machine", "degree", "grid", "axes", "measured",
-                               "correction"}));
+                               "correction", "passes"}));
   CaseInput in;
   auto hob = root.object("hob", true);
   if (!hob) return hob.error();
@@ -400,6 +425,9 @@ Outcome<CaseInput> parseCase(const std::string& text) {
   auto correction = root.object("correction", false);
   if (!correction) return correction.error();
   HOBSHARP_ASSIGN(in.correction, readCorrection(*correction));
+  if (const Json* p = root.find("passes")) {
+    HOBSHARP_ASSIGN(in.passes, readPasses(*p));
+  }
   return in;
 }
 

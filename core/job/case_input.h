@@ -46,6 +46,13 @@ struct CorrectionInput {
   std::vector<Coefficient> locked;
 };
 
+// One grinding pass of the history: the axes the machine ran and the face measured after it
+// (µm, grid.radial x grid.axial), as `passes` holds them (docs/case-format.md).
+struct PassInput {
+  AxisPolynomials axes;
+  Eigen::MatrixXd measured;
+};
+
 // What the case file's optional fields default to.
 constexpr int kDefaultDegree = 4;
 constexpr int kDefaultGridRadial = 5;
@@ -63,6 +70,7 @@ struct CaseInput {
   std::optional<AxisPolynomials> axes;      // what the machine ran
   std::optional<Eigen::MatrixXd> measured;  // µm, grid.radial x grid.axial
   CorrectionInput correction;
+  std::vector<PassInput> passes;  // earlier passes, oldest first; the calculation does not use them
 };
 
 // The largest grid the calculator takes, per direction.

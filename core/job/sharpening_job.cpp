@@ -115,6 +115,38 @@ Outcome<FaceGrid> checkGrid(const GridInput& g, const SharpeningJob& job, double
   return FaceGrid::even(radial, axial, rMin, rMax, xMin, xMax);
 }
 
+// Axis polynomials of the case's degree with finite coefficients; `name` is their field ("axes",
+// "passes[0].axes").
+Outcome<void> checkAxes(const AxisPolynomials& axes, int degree, const std::string& name) {
+  for (Axis a : kAxes) {
+    const std::string field = name + "." + axisName(a);
+    const Polynomial& p = axes[a];
+    if (p.degree() != degree)
+      return refuse(field, "needs " + std::to_string(degree + 1) + " coefficients a0..a" + std::to_string(degree) +
+                               " (degree " + std::to_string(degree) + "); got " + std::to_string(p.a.size()) + ".");
+    for (size_t k = 0; k < p.a.size(); ++k)
+      if (!std::isfinite(p.a[k])) return refuse(field + "[" + std::to_string(k) + "]", "must be a finite number.");
+  }
+  return success();
+}
+
+// A measured grid of the grid's shape, every value finite and within ±kMaxDeviation; `name` is
+// its field ("measured", "passes[1].measured").
+Outcome<void> checkMeasured(const Eigen::MatrixXd& m, const FaceGrid& grid, const std::string& name) {
+  if (m.rows() != grid.rows() || m.cols() != grid.cols())
+    return refuse(name, "needs grid.radial = " + std::to_string(grid.rows()) + " rows of grid.axial = " +
+                            std::to_string(grid.cols()) + " values; got " + std::to_string(m.rows()) + " x " +
+                            std::to_string(m.cols()) + ".");
+  for (int i = 0; i < m.rows(); ++i)
+    for (int j = 0; j < m.cols(); ++j)
+      if (!std::isfinite(m(i, j)) || std::abs(m(i, j)) > kMaxDeviation)
+        return refuse(name + "[" + std::to_string(i) + "][" + std::to_string(j) + "]",
+                      std::isfinite(m(i, j)) ? "must lie within ±" + num(kMaxDeviation) + " µm (10 mm); got " +
+                                                   num(m(i, j)) + " µm."
+                                             : "must be a finite number.");
+  return success();
+}
+
 }  // namespace
 
 Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
@@ -172,31 +204,17 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   job.nominalAxes = cncAxisPolynomials(universal, in.machine, in.degree);
   job.runAxes = job.nominalAxes;
   if (in.axes) {
-    for (Axis a : kAxes) {
-      const std::string field = std::string("axes.") + axisName(a);
-      const Polynomial& p = (*in.axes)[a];
-      if (p.degree() != in.degree)
-        return refuse(field, "needs " + std::to_string(in.degree + 1) + " coefficients a0..a" +
-                                 std::to_string(in.degree) + " (degree " + std::to_string(in.degree) +
-                                 "); got " + std::to_string(p.a.size()) + ".");
-      for (size_t k = 0; k < p.a.size(); ++k)
-        if (!std::isfinite(p.a[k])) return refuse(field + "[" + std::to_string(k) + "]", "must be a finite number.");
-    }
+    if (auto r = checkAxes(*in.axes, in.degree, "axes"); !r) return r.error();
     job.runAxes = *in.axes;
   }
   if (in.measured) {
-    const Eigen::MatrixXd& m = *in.measured;
-    if (m.rows() != grid.rows() || m.cols() != grid.cols())
-      return refuse("measured", "needs grid.radial = " + std::to_string(grid.rows()) + " rows of grid.axial = " +
-                                    std::to_string(grid.cols()) + " values; got " + std::to_string(m.rows()) +
-                                    " x " + std::to_string(m.cols()) + ".");
-    for (int i = 0; i < m.rows(); ++i)
-      for (int j = 0; j < m.cols(); ++j)
-        if (!std::isfinite(m(i, j)) || std::abs(m(i, j)) > kMaxDeviation)
-          return refuse("measured[" + std::to_string(i) + "][" + std::to_string(j) + "]",
-                        std::isfinite(m(i, j)) ? "must lie within ±" + num(kMaxDeviation) + " µm (10 mm); got " +
-                                                     num(m(i, j)) + " µm."
-                                               : "must be a finite number.");
+    if (auto r = checkMeasured(*in.measured, grid, "measured"); !r) return r.error();
+  }
+  // The pass history is not computed with, but it must fit the job as `axes` and `measured` do.
+  for (size_t i = 0; i < in.passes.size(); ++i) {
+    const std::string pass = "passes[" + std::to_string(i) + "].";
+    if (auto r = checkAxes(in.passes[i].axes, in.degree, pass + "axes"); !r) return r.error();
+    if (auto r = checkMeasured(in.passes[i].measured, grid, pass + "measured"); !r) return r.error();
   }
   if (in.correction.method) {
     if (*in.correction.method == "linear") job.correction.method = CorrectionMethod::Linear;

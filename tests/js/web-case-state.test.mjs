@@ -83,3 +83,36 @@ test('what loading another case would replace, in words', () => {
     ['the measured grid (2 × 3 values)', 'the run axes', '2 what-if offsets', '1 lock']);
   assert.deepEqual(userData(stateWith({ offsets: { Y: [0] } })), [], 'zero offsets are nothing');
 });
+
+// The grinding passes (docs/case-format.md, "passes"): saved, loaded, read by the calculator.
+const grid = (v) => Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (_, j) => v + i - j / 8));
+const history = [{ axes, measured: grid(1.25) }, { axes: { ...axes, Y: [39.31, 0, 0, 0, 1e-6] }, measured: grid(-0.5) }];
+
+test('the grinding passes are saved and loaded with the case, and the calculator reads them', async () => {
+  const state = stateWith({ passes: structuredClone(history), axes, measured: grid(0.1) });
+  const saved = JSON.parse(JSON.stringify(savedCase(state)));
+  assert.deepEqual(saved.passes, history);
+  assert.equal('passes' in caseOf(state), false, 'nothing computed depends on the history');
+  const back = inputsFromCase(saved);
+  assert.deepEqual(back.passes, history);
+  assert.deepEqual(back.formCase, paper, 'the history is not taken for a field of the form');
+  assert.equal(savedCase(stateWith({})).passes, undefined, 'no history, no member');
+  assert.deepEqual(inputsFromCase(paper).passes, []);
+  assert.deepEqual(userData(stateWith({ passes: history })), ['the history of 2 grinding passes']);
+  // The C++ case reader (in the module) takes the saved case, and the result is the one without the history.
+  const hobsharp = await loadHobSharp();
+  const withHistory = hobsharp.evaluate(calculatorCase(saved));
+  const without = hobsharp.evaluate(caseOf(state));
+  assert.deepEqual(withHistory.correction.axes, without.correction.axes);
+});
+
+test('a history that does not fit its grid is refused by the calculator, naming the pass', async () => {
+  const hobsharp = await loadHobSharp();
+  const bad = structuredClone(history);
+  bad[1].measured.pop();
+  assert.throws(() => hobsharp.evaluate({ ...paper, passes: bad }),
+    (e) => e.field === 'passes[1].measured' && /^passes\[1\]\.measured: needs grid\.radial = 5 rows of grid\.axial = 9 values; got 4 x 9/.test(e.message));
+  bad[1].measured = grid(0);
+  bad[0].axes = { ...axes, B: [0.22] };
+  assert.throws(() => hobsharp.evaluate({ ...paper, passes: bad }), (e) => e.field === 'passes[0].axes.B');
+});

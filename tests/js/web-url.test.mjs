@@ -28,3 +28,17 @@ test('an address without a case gives null; an unreadable one says why', () => {
   assert.match(caseFromHash('#case=%E0%A4%A').error, /no readable case/);
   assert.deepEqual(caseFromHash('#case=%5B1%5D'), { case: [1] });  // read; the calculator judges it
 });
+
+test('the grinding passes go into the link; a history too large for it is left out as a whole', () => {
+  const grid = (rows, cols) => Array.from({ length: rows }, () => Array(cols).fill(0.25));
+  const pass = (rows, cols) => ({ axes: { X: [1], Y: [2], Z: [3], A: [4], B: [5] }, measured: grid(rows, cols) });
+  const small = { ...paper, measured: grid(5, 9), passes: [pass(5, 9), pass(5, 9)] };
+  assert.deepEqual(caseFromHash(caseToHash(small)).case, small);
+  // 30 x 30 now and two passes of it: 2700 values, over the limit; the grid alone fits.
+  const large = { ...paper, measured: grid(30, 30), correction: { locked: ['X a0'] }, passes: [pass(30, 30), pass(30, 30)] };
+  assert.ok(3 * 900 > MAX_LINK_VALUES && 900 <= MAX_LINK_VALUES);
+  const back = caseFromHash(caseToHash(large)).case;
+  assert.equal(back.passes, undefined);
+  assert.deepEqual(back.measured, large.measured);
+  assert.deepEqual(back.correction, large.correction);
+});

@@ -3,7 +3,8 @@
 // case is replaced by the paper example, a file leaves the page as it was. A measured grid (or
 // its locks) that alone is refused is set aside: the rest loads, its text goes into the CSV box.
 // Everything else the case holds is kept (io/case-state.js): the run axes, the correction's
-// thresholds, the what-if offsets of its page member.
+// thresholds, the grinding passes, the what-if offsets of its page member. A pass history that
+// alone is refused (it no longer fits the grid, say) is left out the same way.
 import { CASE_FORMAT } from './limits.js';
 import { measuredText } from './io/csv.js';
 import { MAX_CASE_DEPTH, nestingDepth } from './io/nesting.js';
@@ -30,8 +31,8 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
     const formCase = form.write(inputs.formCase);
     const measured = setAside ? null : inputs.measured;
     measuredView.setText(setAside ? measuredText(setAside) : measured ? measuredText(measured) : '');
-    const { locked, lockedAxes, tuning, axes, offsets } = inputs;
-    store.setInputs({ form: formCase, measured, locked, lockedAxes, tuning, axes, offsets, paper },
+    const { locked, lockedAxes, tuning, axes, offsets, passes } = inputs;
+    store.setInputs({ form: formCase, measured, locked, lockedAxes, tuning, axes, offsets, passes, paper },
       { source: 'load', force: true });
     store.emit('commit');
   }
@@ -72,12 +73,18 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
         await calculator.evaluate(calculatorCase(candidate));
         break;
       } catch (error) {
-        const part = /^measured/.test(error.field || '') ? 'measured' : /^correction/.test(error.field || '') ? 'correction' : null;
+        const part = (/^(measured|correction|passes)\b/.exec(error.field || '') || [])[1];
         if (error.code !== 'InvalidInput' || !part || !(part in candidate)) {  // a fault, a timeout: not the part
           refused(where, error.message, fallback);
           return;
         }
         candidate = { ...candidate };
+        if (part === 'passes') {
+          delete candidate.passes;
+          notes.push(`its history of grinding passes is left out: ${error.message}`);
+          refusals.push(error);
+          continue;
+        }
         delete candidate.correction;
         if (part === 'measured') {
           aside = c.measured;

@@ -23,7 +23,8 @@ export function initialState() {
     locked: [],              // coefficients kept out of the correction: 'X a0' ...
     lockedAxes: [],          // axes kept out of the correction: 'X' ...
     tuning: {},              // the correction's thresholds a loaded case gave: truncation, amplification
-    axes: null,              // the run axes of a second pass (a loaded case's "axes"), or null
+    axes: null,              // the run axes of the pass under way (a loaded case's "axes"), or null
+    passes: [],              // the grinding passes kept: [{axes, measured}], oldest first (pass-history.js)
     offsets: {},             // the what-if machine error: axis -> offset per coefficient
     paper: null,             // the paper's own gamma_m and E_t while its example is loaded as derived
     result: null,            // the last good result
@@ -36,6 +37,7 @@ export function initialState() {
 }
 
 // The case sent to the calculator: the form, the run axes, and the measured grid with the locks.
+// The pass history is not: nothing computed depends on it (io/case-state.js saves it).
 export function caseOf(state) {
   const c = structuredClone(state.form);
   if (state.axes) c.axes = structuredClone(state.axes);
@@ -47,7 +49,7 @@ export function caseOf(state) {
 }
 
 // The inputs as one value, for undo and redo: everything the user gave.
-const INPUTS = ['form', 'measured', 'locked', 'lockedAxes', 'tuning', 'axes', 'offsets', 'paper'];
+const INPUTS = ['form', 'measured', 'locked', 'lockedAxes', 'tuning', 'axes', 'passes', 'offsets', 'paper'];
 export function inputsOf(state) {
   return structuredClone(Object.fromEntries(INPUTS.map((k) => [k, state[k]])));
 }

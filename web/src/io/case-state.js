@@ -1,6 +1,7 @@
 // A case as saved in a file or a link, and the page's inputs it holds. Nothing the user gave is
 // dropped: the form's case, the measured grid, the locks and the correction's thresholds (kept
-// even without a measured grid), the run axes of a second pass, and the what-if offsets.
+// even without a measured grid), the run axes of the pass under way, the grinding passes kept
+// ("passes", docs/case-format.md), and the what-if offsets.
 //
 // The offsets are the page's own: they travel in a "page" member, {"page": {"whatIf": {"Y":
 // [0.01, 0, ...]}}}. The C++ case reader refuses unknown top-level members (onlyKnown in
@@ -27,6 +28,7 @@ export function savedCase(state) {
   if (!c.correction && (state.locked.length || state.lockedAxes.length || Object.keys(state.tuning).length)) {
     c.correction = correction;
   }
+  if (state.passes.length) c.passes = structuredClone(state.passes);
   const whatIf = offsetsToSave(state.offsets);
   if (Object.keys(whatIf).length) c.page = { whatIf };
   return c;
@@ -61,12 +63,13 @@ export function readPage(page) {
 // Error naming the member when the page member is malformed.
 export function inputsFromCase(c) {
   const offsets = readPage(c.page);
-  const { measured, correction = {}, axes, page, ...formCase } = c;
+  const { measured, correction = {}, axes, passes = [], page, ...formCase } = c;
   const { locked = [], lockedAxes = [], ...tuning } = correction;
   return {
     formCase, measured: measured === undefined ? null : measured,
     locked: [...locked], lockedAxes: [...lockedAxes], tuning: { ...tuning },
     axes: axes === undefined ? null : structuredClone(axes), offsets,
+    passes: passes.map(({ axes: a, measured: m }) => ({ axes: structuredClone(a), measured: structuredClone(m) })),
   };
 }
 
@@ -76,6 +79,7 @@ export function userData(state) {
   const out = [];
   if (state.measured) out.push(`the measured grid (${state.measured.length} × ${(state.measured[0] || []).length} values)`);
   if (state.axes) out.push('the run axes');
+  if (state.passes.length) out.push(`the history of ${state.passes.length} grinding pass${state.passes.length > 1 ? 'es' : ''}`);
   const offsets = Object.values(offsetsToSave(state.offsets)).flat().filter((v) => v !== 0).length;
   if (offsets) out.push(`${offsets} what-if offset${offsets > 1 ? 's' : ''}`);
   const locks = state.locked.length + state.lockedAxes.length;

@@ -1,13 +1,19 @@
 // The case in the page's address (#case=...), so that a link reopens the same job: the saved case
-// (io/case-state.js), with the what-if offsets and the locks.
+// (io/case-state.js), with the what-if offsets, the locks and the grinding passes.
 import { savedCase } from './case-state.js';
 
-// A measured grid larger than this many values is left out of the link (it would make it long).
+// Measured values beyond this many are left out of the link (it would make it long): first the
+// history of grinding passes (as a whole, so that the passes kept are numbered as they were), then
+// the measured grid.
 export const MAX_LINK_VALUES = 2500;
+
+const valuesOf = (grid) => (Array.isArray(grid) ? grid.length * (grid[0] || []).length : 0);
 
 export function caseToHash(caseObject) {
   const c = { ...caseObject };
-  if (Array.isArray(c.measured) && c.measured.length * (c.measured[0] || []).length > MAX_LINK_VALUES) {
+  const history = (c.passes || []).reduce((n, p) => n + valuesOf(p.measured), 0);
+  if (history && valuesOf(c.measured) + history > MAX_LINK_VALUES) delete c.passes;
+  if (valuesOf(c.measured) > MAX_LINK_VALUES) {
     delete c.measured;
     delete c.correction;  // the locks go with the grid they were set for
   }

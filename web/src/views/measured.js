@@ -1,8 +1,10 @@
 // Measured data and correction: the CSV box (paste, upload, use, clear) with its message, the
-// grid's shape, and the correction's verdict.
+// grid's shape, and the correction's verdict. A grid given here is measured: the correction assumes
+// the probe's noise (web/src/probe-noise.js).
 import { verdictText } from '../words.js';
 import { MAX_MEASURED_BYTES, measuredText, parseMeasuredCsv, tooLargeMessage } from '../io/csv.js';
 import { chosenFileText } from '../io/files.js';
+import { tuningFor } from '../probe-noise.js';
 
 const $ = (selector) => document.querySelector(selector);
 const isMeasuredField = (field) => /^(measured|correction)/.test(field || '');
@@ -41,7 +43,7 @@ export function mountMeasured(store) {
     try {
       const measured = parseMeasuredCsv(text, r.topography.r.length, r.topography.x.length);
       message.hidden = true;
-      store.setInputs({ measured }, { source: 'measured', force: true });
+      store.setInputs({ measured, tuning: tuningFor(store.state.tuning, false) }, { source: 'measured', force: true });
       store.emit('commit');
     } catch (e) {
       refuse(e.message);

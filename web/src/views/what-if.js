@@ -1,9 +1,11 @@
 // The machine-error what-if: offsets the machine adds to each coefficient, ground into a face
 // that is then taken as measured; and the locks that keep axes or coefficients out of the
-// correction. Each finished change is an undo step; the offsets are saved with the case.
+// correction. Each finished change is an undo step; the offsets are saved with the case. The grid
+// ground is noise-free, and the correction is told so (web/src/probe-noise.js).
 import { AXES, coefficientUnit } from '../limits.js';
 import { motionUnit } from '../format.js';
 import { gridToCsv } from '../io/csv.js';
+import { tuningFor } from '../probe-noise.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -69,7 +71,7 @@ export function mountWhatIf(store, calculator, measuredView) {
       const { result } = await calculator.evaluate({ ...structuredClone(s.form), axes });
       const measured = result.topography.normal;
       measuredView.setText(gridToCsv(measured, 4));
-      store.setInputs({ measured }, { source: 'measured', force: true });
+      store.setInputs({ measured, tuning: tuningFor(s.tuning, true) }, { source: 'measured', force: true });
       store.emit('commit');
     } catch (e) {
       store.refuse({ field: 'measured', message: `The machine error cannot be ground: ${e.message}` });

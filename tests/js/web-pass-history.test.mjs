@@ -1,0 +1,92 @@
+// The grinding passes (web/src/pass-history.js): "Use as next run", the case that gives a kept
+// pass's figures, and the table's rows and the plot's series, measured and predicted per pass.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { historyRows, historySeries, nextRunInputs, passCase, resultFigures, resultIsCurrent } from '../../web/src/pass-history.js';
+import { caseOf, initialState } from '../../web/src/store.js';
+
+const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
+const nominal = { X: [22.4, 139.5, 0, 0, 0], Y: [39.3, 0, 0, 0, 0], Z: [-116.4, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.22, 0, 0, 0, 0] };
+const proposed = { ...nominal, Y: [39.29, 0, 0, 0, 0] };
+const topography = { sse: 1e-9, max: 2e-5, thickness: -1e-5 };
+const correction = { axes: proposed, sseBefore: 120, maxBefore: 6, thicknessBefore: 4.5, sseAfter: 0.02, maxAfter: 0.1, thicknessAfter: -0.01 };
+
+// A state whose result is of its own inputs, as after a calculation.
+function computed(patch, result = { axes: nominal, topography, correction }) {
+  const state = Object.assign(initialState(), { form: structuredClone(paper) }, patch);
+  return Object.assign(state, { result, resultCase: caseOf(state) });
+}
+
+test('"Use as next run" keeps the pass under way and runs the proposed axes, with no measured grid yet', () => {
+  const measured = [[1, 2], [3, 4]];
+  const first = computed({ measured });
+  const { inputs } = nextRunInputs(first);
+  assert.deepEqual(inputs.passes, [{ axes: nominal, measured }], 'the nominal axes ran in the first pass');
+  assert.deepEqual(inputs.axes, proposed);
+  assert.equal(inputs.measured, null);
+  inputs.passes[0].measured[0][0] = 99;
+  assert.equal(measured[0][0], 1, 'the history holds its own copy');
+  // The second pass ran the proposed axes; its pass is kept after the first.
+  const second = computed({ passes: nextRunInputs(first).inputs.passes, axes: proposed, measured: [[0.1, 0], [0, 0]] },
+    { axes: nominal, topography, correction: { ...correction, axes: nominal } });
+  const next = nextRunInputs(second).inputs;
+  assert.equal(next.passes.length, 2);
+  assert.deepEqual(next.passes[1], { axes: proposed, measured: [[0.1, 0], [0, 0]] });
+  assert.deepEqual(next.axes, nominal);
+});
+
+test('"Use as next run" says why it cannot be done: no grid, an older result, no correction', () => {
+  assert.match(nextRunInputs(computed({})).why, /Measure the face first/);
+  const stale = computed({ measured: [[1]] });
+  stale.measured = [[2]];
+  assert.equal(resultIsCurrent(stale), false);
+  assert.match(nextRunInputs(stale).why, /Wait for the correction/);
+  assert.match(nextRunInputs(computed({ measured: [[1]] }, { axes: nominal, topography })).why, /no correction/);
+  assert.match(nextRunInputs(Object.assign(initialState(), { measured: [[1]] })).why, /Wait/);
+});
+
+test("a kept pass's case: the form with its axes, its grid and the correction's options now", () => {
+  const state = computed({ axes: proposed, measured: [[9]], locked: ['B a2'], tuning: { truncation: 1e-5 } });
+  const c = passCase(state, { axes: nominal, measured: [[1, 2]] });
+  assert.deepEqual(c.axes, nominal);
+  assert.deepEqual(c.measured, [[1, 2]]);
+  assert.deepEqual(c.correction, { truncation: 1e-5, lockedAxes: [], locked: ['B a2'] });
+  assert.equal(c.hob.gashLead, paper.hob.gashLead);
+  assert.equal('passes' in c, false);
+});
+
+test('figures: measured, predicted next and simulated; nothing that is not finite', () => {
+  const f = resultFigures({ topography, correction: { ...correction, maxAfter: NaN, thicknessAfter: Infinity } });
+  assert.deepEqual(f.measured, { sse: 120, max: 6, thickness: 4.5 });
+  assert.deepEqual(f.next, { sse: 0.02, max: null, thickness: null });
+  assert.deepEqual(f.simulated, { sse: 1e-9, max: 2e-5, thickness: -1e-5 });
+  assert.deepEqual(resultFigures({ topography }).measured, null);
+});
+
+test('rows: each pass predicted by the correction of the pass before, the first by its simulated face', () => {
+  const fig = (s) => ({ measured: { sse: s, max: 1, thickness: 0.5 }, next: { sse: s / 100, max: 0.1, thickness: 0 }, simulated: { sse: 0, max: 0, thickness: 0 } });
+  const rows = historyRows([fig(1e4), fig(50)], fig(3));
+  assert.deepEqual(rows.map((r) => r.label), ['1', '2', '3 (under way)', '4 (next, predicted)']);
+  assert.deepEqual(rows.map((r) => r.measured && r.measured.sse), [1e4, 50, 3, null]);
+  assert.deepEqual(rows.map((r) => r.predicted.sse), [0, 100, 0.5, 0.03]);
+  // A pass still computed, or refused, shows so; the one after has no prediction then.
+  const odd = historyRows([null, { error: 'not computed: passes[0].measured needs 5 rows' }], { measured: null, next: null, simulated: fig(1).simulated });
+  assert.deepEqual(odd.map((r) => r.note), ['computing…', 'not computed: passes[0].measured needs 5 rows', 'not measured yet']);
+  assert.deepEqual(odd.map((r) => r.predicted), [null, null, null]);
+  assert.equal(odd.length, 3, 'no next row without a correction');
+  // No pass kept: the pass under way is the first, predicted by its simulated face.
+  assert.deepEqual(historyRows([], fig(7))[0].predicted, fig(7).simulated);
+});
+
+test('series: per quantity the passes with a value, measured and predicted apart', () => {
+  const rows = [
+    { pass: 1, measured: { sse: 100, max: 5, thickness: null }, predicted: { sse: 0, max: 0, thickness: 0 } },
+    { pass: 2, measured: null, predicted: { sse: 0.5, max: null, thickness: 0.1 } },
+  ];
+  const s = historySeries(rows);
+  assert.deepEqual(s.sse, { measured: { x: [1], y: [100] }, predicted: { x: [1, 2], y: [0, 0.5] } });
+  assert.deepEqual(s.max.predicted, { x: [1], y: [0] });
+  assert.deepEqual(s.thickness.measured, { x: [], y: [] });
+  for (const q of Object.values(s)) for (const set of Object.values(q)) assert.ok(set.y.every(Number.isFinite));
+});
