@@ -182,8 +182,9 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     const Eigen::VectorXd data = d - faceNormal(current) + Jz * zE;  // what E makes, linearised here
     // The SVD of Jz through its QR (Jz = Q R, R = U S V^T): the data's components along the
     // left singular vectors are U^T (Q^T data), without forming the p x m factor.
+    // A grid with fewer points than directions (3 x 3 at degree 4) has a wide R.
     const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Jz);
-    const int mm = static_cast<int>(Jz.cols());
+    const int mm = static_cast<int>(std::min(Jz.rows(), Jz.cols()));
     const Eigen::MatrixXd R = qr.matrixQR().topRows(mm).triangularView<Eigen::Upper>();
     const Eigen::VectorXd qtd = (qr.householderQ().transpose() * data).head(mm);
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
