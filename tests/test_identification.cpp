@@ -202,6 +202,27 @@ TEST(Identification, StructuralNullSpaceIsLeftOut) {
   }
 }
 
+// A grid with fewer points than identifiable directions (3 x 3 at degree 4, straight gash: 9
+// points, 10 directions) is corrected in the directions it shows (found by the case fuzzer).
+TEST(Identification, FewerPointsThanDirections) {
+  CaseInput in = paperCase();
+  in.hob.gash = GashKind::Straight;
+  in.hob.gashLead.reset();
+  in.settingAngle.reset();
+  in.centerDistance.reset();
+  in.grid = GridInput{};
+  in.grid.radial = 3;
+  in.grid.axial = 3;
+  in.measured = Eigen::MatrixXd(3, 3);
+  *in.measured << 1.0, 0.75, 0.5, 1.5, 1.25, 1.0, 2.0, 1.75, 1.5;
+  auto e = evaluate(jobOf(in));
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  EXPECT_LE(e->correction->rank, 9);
+  EXPECT_LE(e->correction->singularValues.size(), 9);
+  EXPECT_TRUE(std::isfinite(e->correction->after.sse));
+  EXPECT_LT(e->correction->after.sse, e->correction->before.sse);
+}
+
 // Rounded to the resolution at the end of the motion range, re-simulated beside the exact proposal.
 TEST(Identification, RoundedAxesAreWhatTheMachineCanRun) {
   const SharpeningJob job = jobOf(paperCase());
