@@ -97,6 +97,10 @@ test('with a correction: the maps share one colour scale that says blue is exces
   const red = singular.find((t) => t.colour === '#c53030');
   assert.ok(red && red.n > 0, 'some singular values are left out (red)');
   assert.match(red.name, /left out/);
+  // The title counts the blue bars: the directions used, which need not be the largest.
+  const blue = singular.find((t) => t.colour === '#2b6cb0');
+  const title = await page.evaluate(() => document.getElementById('plot-singular').layout.title.text);
+  assert.equal(Number(/\((\d+) used\)/.exec(title)[1]), blue.n, title);
   const legend = (await page.locator('#plot-singular .legendtext').allTextContents()).join(' | ');
   assert.match(legend, /used in the correction \| left out/);
   const box_ = await box(page, '#plot-singular .legend');

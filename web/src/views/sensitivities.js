@@ -23,27 +23,35 @@ function drawSensitivities({ Plotly, result: r }) {
   return drawGallery(Plotly, $('#gallery'), r.topography.x, r.topography.r, items);
 }
 
-// Blue bars: the directions the correction step uses; red: those it leaves out, as too small to
-// be trusted (below the truncation) or because they would amplify the measurement's noise.
+// Blue bars: the directions the correction uses; red: those it leaves out. The nonlinear
+// correction's singular values are in µm of face per machine step, and it leaves a direction out
+// when the measurement holds it only within the probe noise, or when it would need wild axis
+// moves for little gain; usedDirections (1-based) says which it used, not always the largest.
+// The linear step's are of the column-scaled matrix, the largest `rank` used.
 function drawSingular({ Plotly, result: r }) {
   if (!r.correction) return Plotly.purge('plot-singular');
-  const sv = r.correction.singularValues;
-  const kept = r.correction.rank;
+  const c = r.correction;
+  const sv = c.singularValues;
+  const nonlinear = c.method !== 'linear';
+  const used = new Set(c.usedDirections || sv.map((_, k) => k + 1).slice(0, c.rank));
   const bars = (name, colour, pick) => {
     const i = sv.map((_, k) => k).filter(pick);
     return {
       type: 'bar', name, x: i.map((k) => k + 1), y: i.map((k) => Math.max(sv[k], 1e-18)), marker: { color: colour },
-      hovertemplate: `σ%{x} = %{y:.3e}: ${name}<extra></extra>`,
+      hovertemplate: `σ%{x} = %{y:.3e}${nonlinear ? ' µm per step' : ''}: ${name}<extra></extra>`,
     };
   };
+  const leftOut = nonlinear ? 'left out: within the probe noise, or would need wild axis moves' : 'left out: too small or would amplify noise';
   return Plotly.react('plot-singular', [
-    bars('used in the correction', '#2b6cb0', (k) => k < kept),
-    bars('left out: too small or would amplify noise', '#c53030', (k) => k >= kept),
+    bars('used in the correction', '#2b6cb0', (k) => used.has(k + 1)),
+    bars(leftOut, '#c53030', (k) => !used.has(k + 1)),
   ], {
-    title: { text: `Singular values of the scaled sensitivity matrix (${kept} used)`, font: { size: 14 }, y: 0.97 },
+    title: { text: nonlinear ? `Singular values of the sensitivities in machine steps (${used.size} used)`
+      : `Singular values of the scaled sensitivity matrix (${used.size} used)`, font: { size: 14 }, y: 0.97 },
     height: 340, margin: { t: 90, r: 10, b: 40, l: 60 }, barmode: 'overlay', showlegend: true,
     legend: { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' },
-    yaxis: { type: 'log', title: { text: 'σ (unit columns)' } }, xaxis: { title: { text: 'index' } },
+    yaxis: { type: 'log', title: { text: nonlinear ? 'σ (µm of face per machine step)' : 'σ (unit columns)' } },
+    xaxis: { title: { text: 'index' } },
   }, { responsive: true, displaylogo: false });
 }
 
