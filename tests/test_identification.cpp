@@ -202,6 +202,27 @@ TEST(Identification, StructuralNullSpaceIsLeftOut) {
   }
 }
 
+// A grid with fewer points than identifiable directions (3 x 3 at degree 4, straight gash: 9
+// points, 10 directions) is corrected in the directions it shows (found by the case fuzzer).
+TEST(Identification, FewerPointsThanDirections) {
+  CaseInput in = paperCase();
+  in.hob.gash = GashKind::Straight;
+  in.hob.gashLead.reset();
+  in.settingAngle.reset();
+  in.centerDistance.reset();
+  in.grid = GridInput{};
+  in.grid.radial = 3;
+  in.grid.axial = 3;
+  in.measured = Eigen::MatrixXd(3, 3);
+  *in.measured << 1.0, 0.75, 0.5, 1.5, 1.25, 1.0, 2.0, 1.75, 1.5;
+  auto e = evaluate(jobOf(in));
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  EXPECT_LE(e->correction->rank, 9);
+  EXPECT_LE(e->correction->singularValues.size(), 9);
+  EXPECT_TRUE(std::isfinite(e->correction->after.sse));
+  EXPECT_LT(e->correction->after.sse, e->correction->before.sse);
+}
+
 // Rounded to the resolution at the end of the motion range, re-simulated beside the exact proposal.
 TEST(Identification, RoundedAxesAreWhatTheMachineCanRun) {
   const SharpeningJob job = jobOf(paperCase());
@@ -283,6 +304,9 @@ TEST(Identification, BadInputIsRefusedWithTheFieldNamed) {
       {[](CaseInput& c) { c.correction.probeNoise = INFINITY; }, "correction.probeNoise"},
       {[](CaseInput& c) { c.correction.resolution[0] = 0.0; }, "correction.resolution.X"},
       {[](CaseInput& c) { c.correction.resolution[4] = -1e-4; }, "correction.resolution.B"},
+      {[](CaseInput& c) { c.correction.probeNoise = 1e5; }, "correction.probeNoise"},
+      {[](CaseInput& c) { c.correction.resolution[1] = 1e-300; }, "correction.resolution.Y"},
+      {[](CaseInput& c) { c.correction.resolution[3] = 10.0; }, "correction.resolution.A"},
   };
   for (const Bad& b : bad) {
     CaseInput in = paperCase();

@@ -174,6 +174,31 @@ val limits() {
   motion.set("helical", std::string(motionUnit(GashKind::Helical)));
   motion.set("straight", std::string(motionUnit(GashKind::Straight)));
   o.set("motionUnits", motion);
+  // The correction's options (README "Correction"): methods, the probe noise and the resolution
+  // of each axis (µm for X, Y, Z, degrees for A, B) with their defaults and ranges.
+  const CorrectionOptions defaults;
+  val correction = val::object();
+  val methods = val::array();
+  methods.call<void>("push", std::string("nonlinear"));
+  methods.call<void>("push", std::string("linear"));
+  correction.set("methods", methods);
+  correction.set("defaultMethod", std::string("nonlinear"));
+  val noise = val::object();
+  noise.set("default", defaults.probeNoise);
+  noise.set("max", kMaxDeviation);
+  noise.set("unit", std::string("µm"));
+  correction.set("probeNoise", noise);
+  val resolution = val::object();
+  for (Axis a : kAxes) {
+    val r = val::object();
+    r.set("default", defaults.resolution.step[static_cast<int>(a)]);
+    r.set("min", isRotary(a) ? kLeastRotaryResolution : kLeastLinearResolution);
+    r.set("max", isRotary(a) ? kMostRotaryResolution : kMostLinearResolution);
+    r.set("unit", std::string(isRotary(a) ? "deg" : "µm"));
+    resolution.set(axisName(a), r);
+  }
+  correction.set("resolution", resolution);
+  o.set("correction", correction);
   return o;
 }
 

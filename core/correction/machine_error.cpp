@@ -173,6 +173,8 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
   Eigen::VectorXd zE = Eigen::VectorXd::Zero(m.space.basis.cols());  // E in the basis, machine steps
   GroundFace current = runFace;
   std::vector<bool> previous;
+  Eigen::MatrixXd keptP(q, 0);  // the last round's solution, kept if a later round cannot start
+  Eigen::VectorXd keptTheta(0);
   int evaluations = 0;
   for (int round = 0; round < kDecisionRounds; ++round) {
     if (q == 0 || m.space.basis.cols() == 0) break;
@@ -180,8 +182,9 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     const Eigen::VectorXd data = d - faceNormal(current) + Jz * zE;  // what E makes, linearised here
     // The SVD of Jz through its QR (Jz = Q R, R = U S V^T): the data's components along the
     // left singular vectors are U^T (Q^T data), without forming the p x m factor.
+    // A grid with fewer points than directions (3 x 3 at degree 4) has a wide R.
     const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Jz);
-    const int mm = static_cast<int>(Jz.cols());
+    const int mm = static_cast<int>(std::min(Jz.rows(), Jz.cols()));
     const Eigen::MatrixXd R = qr.matrixQR().topRows(mm).triangularView<Eigen::Upper>();
     const Eigen::VectorXd qtd = (qr.householderQ().transpose() * data).head(mm);
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
@@ -233,13 +236,23 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     lm.setFactor(o.solver.initialTrustRegion);
     lm.setMaxfev(1000000);  // the iterations are counted below
     auto status = lm.minimizeInit(theta);
+    if (status != Eigen::LevenbergMarquardtSpace::NotStarted && round > 0) {
+      evaluations += residual.evaluations;
+      P = keptP;
+      theta = keptTheta;
+      m.summary.status = SolveStatus::Stalled;
+      m.summary.reason = "stalled: the directions decided at the solution leave a face that cannot be simulated; "
+                         "the estimate before is kept.";
+      break;
+    }
     if (status != Eigen::LevenbergMarquardtSpace::NotStarted) {
       m.summary.status = SolveStatus::Failed;
       m.summary.reason = status == Eigen::LevenbergMarquardtSpace::ImproperInputParameters
                              ? "failed: the solver refused its inputs."
                              : "failed: the face of the estimate cannot be simulated.";
       evaluations += residual.evaluations;
-      if (round == 0) theta.setZero(), current = runFace;
+      theta.setZero();
+      current = runFace;
       break;
     }
     int iterations = 0;
@@ -257,6 +270,8 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
                           ErrorCode::Unsolvable);
     current = *f;
     zE = V * theta;
+    keptP = P;
+    keptTheta = theta;
     if (m.summary.status != SolveStatus::Converged || m.summary.iterations >= o.solver.maxIterations) break;
   }
   if (P.cols() == 0) {

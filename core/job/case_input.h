@@ -83,5 +83,8 @@ constexpr double kHelixAngleAgreement = 0.01;
 // The largest |measured deviation| taken, µm (10 mm): beyond any real grinding error or
 // what-if, and far below where the correction's squares and sums overflow (docs/case-format.md).
 constexpr double kMaxDeviation = 1e4;
+// The range of correction.resolution: µm for X, Y, Z and degrees for A, B.
+constexpr double kLeastLinearResolution = 1e-3, kMostLinearResolution = 1e3;
+constexpr double kLeastRotaryResolution = 1e-9, kMostRotaryResolution = 1;
 
 }  // namespace hobsharp

@@ -226,6 +226,9 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
     if (*in.correction.probeNoise <= 0)
       return refuse("correction.probeNoise", "the probe's standard deviation must be positive; got " +
                                                  num(*in.correction.probeNoise) + " µm.");
+    if (*in.correction.probeNoise > kMaxDeviation)
+      return refuse("correction.probeNoise", "must be at most " + num(kMaxDeviation) + " µm (10 mm); got " +
+                                                 num(*in.correction.probeNoise) + " µm.");
     job.correction.probeNoise = *in.correction.probeNoise;
   }
   for (Axis a : kAxes) {
@@ -233,6 +236,13 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
     if (!r) continue;
     const std::string field = std::string("correction.resolution.") + axisName(a);
     if (auto ok = positive(field, *r, isRotary(a) ? "deg" : "µm"); !ok) return ok.error();
+    // A step from a nanometre (a nanodegree) to a millimetre (a degree): beyond any machine, and
+    // far from where the scaled coordinates of the correction lose their digits.
+    const double least = isRotary(a) ? kLeastRotaryResolution : kLeastLinearResolution;
+    const double most = isRotary(a) ? kMostRotaryResolution : kMostLinearResolution;
+    if (*r < least || *r > most)
+      return refuse(field, "must lie between " + num(least) + " and " + num(most) + (isRotary(a) ? " deg" : " µm") +
+                               "; got " + num(*r) + (isRotary(a) ? " deg." : " µm."));
     job.correction.resolution.step[static_cast<int>(a)] = *r;
   }
   if (in.correction.truncation) {

@@ -21,7 +21,7 @@ function refused(c, field, message) {
 
 test('limits() has the documented form, every value from the module', () => {
   assert.deepEqual(Object.keys(limits), ['format', 'maxGridLines', 'gridTolerance', 'degree', 'defaultGrid',
-    'wheelProfilePoints', 'axes', 'motionUnits']);
+    'wheelProfilePoints', 'axes', 'motionUnits', 'correction']);
   assert.equal(limits.format, paper().format);
   assert.equal(limits.maxGridLines, 201);
   assert.deepEqual(limits.degree, { min: 1, max: 6, default: 4 });
@@ -100,4 +100,28 @@ test('the axes and motion units are those of the result', () => {
   // The rotary axes turn with the motion parameter of a helical gash: A = phi_1 (rad per rad).
   assert.equal(helical.axes.A[1], 1);
   assert.equal(straight.axes.A[1], 0);
+});
+
+test("limits().correction gives the correction's options, each checked against the module", () => {
+  const k = limits.correction;
+  assert.deepEqual(k.methods, ['nonlinear', 'linear']);
+  assert.equal(k.defaultMethod, 'nonlinear');
+  assert.deepEqual(k.probeNoise, { default: 0.5, max: 10000, unit: 'µm' });
+  assert.deepEqual(Object.keys(k.resolution), ['X', 'Y', 'Z', 'A', 'B']);
+  assert.deepEqual(k.resolution.X, { default: 0.1, min: 0.001, max: 1000, unit: 'µm' });
+  assert.deepEqual(k.resolution.B, { default: 0.0001, min: 1e-9, max: 1, unit: 'deg' });
+  const measured = Array.from({ length: 5 }, () => Array(9).fill(1));
+  // The defaults are what a case without them gets.
+  const r = hobsharp.evaluate({ ...paper(), measured });
+  assert.equal(r.correction.method, k.defaultMethod);
+  assert.equal(r.correction.probeNoise, k.probeNoise.default);
+  // The ends are taken, one step beyond is refused.
+  for (const a of ['X', 'A']) {
+    const { min, max } = k.resolution[a];
+    for (const v of [min, max]) assert.ok(hobsharp.evaluate({ ...paper(), measured, correction: { resolution: { [a]: v } } }).correction);
+    refused({ ...paper(), measured, correction: { resolution: { [a]: max * 1.01 } } }, `correction.resolution.${a}`, /must lie between/);
+    refused({ ...paper(), measured, correction: { resolution: { [a]: min * 0.99 } } }, `correction.resolution.${a}`, /must lie between/);
+  }
+  assert.ok(hobsharp.evaluate({ ...paper(), measured, correction: { probeNoise: k.probeNoise.max } }).correction);
+  refused({ ...paper(), measured, correction: { probeNoise: k.probeNoise.max * 1.01 } }, 'correction.probeNoise', /at most/);
 });
