@@ -149,12 +149,16 @@ test('a bad CSV is refused with a message and the old results stay', async () =>
   }
   await page.locator('#measured-section').screenshot({ path: path.join(shots, 'bad-csv.png') });
 
-  // A pasted grid of the right shape is used: a uniform 1 µm of excess material is corrected.
+  // A pasted grid of the right shape is used: a uniform 1 µm of excess material is corrected. A
+  // pasted grid is measured, so the correction assumes the default probe noise (σ = 0.5 µm) and
+  // leaves what lies within it (issue 10, item 3): at most half of σ rms over the 45 points
+  // (with a noise-free grid, the linear step and the nonlinear one leave under 1e-6 µm²:
+  // tests/js/correction.test.mjs and the native tests).
   await page.fill('#measured-csv', Array.from({ length: 5 }, () => Array(9).fill('1.0').join(', ')).join('\n'));
   await afterResult(page, () => page.click('#use-measured'));
   assert.equal(await page.isVisible('#measured-error'), false);
   assert.equal(Number(await page.getAttribute('#verdict', 'data-sse-before')), 45);
-  assert.ok(Number(await page.getAttribute('#verdict', 'data-sse-after')) < 1e-6);
+  assert.ok(Number(await page.getAttribute('#verdict', 'data-sse-after')) <= 45 * (0.5 / 2) ** 2);
   await afterResult(page, () => page.click('#clear-measured'));
   assert.equal(await page.getAttribute('#verdict', 'data-sse-after'), null);
 
