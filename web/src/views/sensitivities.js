@@ -50,7 +50,7 @@ function drawSingular({ Plotly, result: r }) {
       : `Singular values of the scaled sensitivity matrix (${used.size} used)`, font: { size: 14 }, y: 0.97 },
     height: 340, margin: { t: 90, r: 10, b: 40, l: 60 }, barmode: 'overlay', showlegend: true,
     legend: { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' },
-    yaxis: { type: 'log', title: { text: nonlinear ? 'σ (µm of face per machine step)' : 'σ (unit columns)' } },
+    yaxis: { type: 'log', exponentformat: 'power', title: { text: nonlinear ? 'σ (µm of face per machine step)' : 'σ (unit columns)' } },
     xaxis: { title: { text: 'index' } },
   }, { responsive: true, displaylogo: false });
 }
