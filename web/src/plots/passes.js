@@ -1,6 +1,6 @@
 // When the plots are drawn. After every result (or a switch of view), once the numbers are on
-// screen and the plotting library (plotly.min.js: Plotly's core with the surface, heatmap and bar
-// traces), which loads in parallel with the calculator, is there: first the quick plots (axis
+// screen and the plotting library (plotly.min.js: Plotly's core with the heatmap and bar traces;
+// the surface trace is registered when the first surface is drawn), which loads in parallel with the calculator, is there: first the quick plots (axis
 // motions, wheel, maps, singular values), then, after the browser has shown them, the slow ones
 // (the 3D surfaces when they are open, the sensitivity gallery). A newer result stops a pass
 // under way; 'plots' is emitted when a pass has drawn every plot.
