@@ -2,13 +2,14 @@
 // own colour range (one newPlot for all of them is many times faster than a figure each). The
 // two-line titles are HTML above each map (#gallery-titles), not Plotly annotations: measuring 50
 // lines of SVG text took longer than drawing the 25 maps. As many columns as fit, up to 5.
+// el: the figure's element; labels: the element over it that holds the titles.
 import { DEVIATION_SCALE } from './colours.js';
 import { escapeHtml } from '../format.js';
 
 const ROW = 150, TITLE = 32, GAP = 8;  // px: a thumbnail's row, its title above it, the gap below
 
 // items: [{z (rows root to tip of values along the gash), range, title: [line, line]}]
-export function drawGallery(Plotly, el, x, y, items) {
+export function drawGallery(Plotly, el, labels, x, y, items) {
   const columns = Math.max(2, Math.min(5, Math.floor((el.clientWidth || 950) / 190)));
   const rows = Math.ceil(items.length / columns);
   const height = rows * ROW;
@@ -27,7 +28,6 @@ export function drawGallery(Plotly, el, x, y, items) {
       colorscale: DEVIATION_SCALE, showscale: false, name: title[0],
     };
   });
-  const labels = document.getElementById('gallery-titles');
   labels.style.height = `${height}px`;
   labels.innerHTML = titles.join('');
   return Plotly.react(el, traces, layout, { staticPlot: true, responsive: true });

@@ -20,7 +20,7 @@ function drawSensitivities({ Plotly, result: r }) {
     const m = colourRange(z);
     return { z, range: m, title: [`${name} + ${fmt(step, 3)} ${coefficientUnit(axis, k, per)}`, `±${fixed(m, 2)} µm`] };
   });
-  return drawGallery(Plotly, $('#gallery'), r.topography.x, r.topography.r, items);
+  return drawGallery(Plotly, $('#gallery'), $('#gallery-titles'), r.topography.x, r.topography.r, items);
 }
 
 // Blue bars: the directions the correction uses; red: those it leaves out. The nonlinear
