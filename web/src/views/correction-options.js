@@ -34,7 +34,8 @@ export function mountCorrectionOptions(store) {
     if (document.activeElement !== noise) noise.value = t.probeNoise;
     $('#probe-noise-note').textContent = t.simulated
       ? 'The grid is a simulated what-if: declared noise-free by the page. Type a value to override.'
-      : 'The probe\'s standard deviation; the correction moves nothing the noise could have made.';
+      : t.method === 'linear' ? 'The probe\'s standard deviation; the linear step uses it only for the standard uncertainties.'
+        : 'The probe\'s standard deviation; the correction moves nothing the noise could have made.';
     for (const el of $$('[data-resolution]')) {
       if (document.activeElement !== el) el.value = t.resolution[el.dataset.resolution] || '';
     }
@@ -46,6 +47,7 @@ export function mountCorrectionOptions(store) {
     if (!key) return;
     const tuning = withOption(store.state.tuning, key, el.value, CORRECTION.defaultMethod || 'nonlinear');
     store.setInputs({ tuning }, { source: 'correction-options', at: event.timeStamp });
+    show(store.state);  // also when no measured grid is in use, and so nothing is recomputed
     if (event.type === 'change') store.emit('commit');
   };
   box.addEventListener('input', changed);
