@@ -12,6 +12,7 @@
 
 #include "axis_polynomials.h"
 #include "coefficient.h"
+#include "inspection_input.h"
 #include "tooth_face.h"
 
 namespace hobsharp {
@@ -71,6 +72,7 @@ struct CaseInput {
   std::optional<Eigen::MatrixXd> measured;  // µm, grid.radial x grid.axial
   CorrectionInput correction;
   std::vector<PassInput> passes;  // earlier passes, oldest first; the calculation does not use them
+  InspectionInput inspection;     // per-gash deviations and an edited tolerance table (`inspection`)
 };
 
 // The largest grid the calculator takes, per direction.

@@ -261,6 +261,7 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
       return refuse("correction.locked", c.name() + " is beyond the polynomial degree " + std::to_string(in.degree) + ".");
   job.correction.locked = in.correction.locked;
   job.correction.lockedAxes = in.correction.lockedAxes;
+  if (auto r = checkInspectionInput(in.inspection); !r) return r.error();  // README, "Rake-face inspection"
   return job;
 }
 
