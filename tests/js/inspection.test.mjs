@@ -117,3 +117,21 @@ test('bad inspection input is refused naming the field, and the module stays usa
   }
   assert.equal(hobsharp.evaluate(paper()).inspection.source, 'simulated');
 });
+
+test('limits() gives the default tolerance table as data/din3968-cutting-face.json has it, in the shape a case takes', () => {
+  const limits = hobsharp.limits().inspection;
+  assert.deepEqual(limits.checks, ['cuttingFaceForm', 'radialAlignment', 'gashLead', 'adjacentSpacing', 'cumulativeSpacing']);
+  assert.deepEqual(limits.classes, ['AA', 'A', 'B', 'C', 'D']);
+  assert.equal(limits.maxGashes, 100);
+  const data = JSON.parse(readFileSync(path.join(root, 'data', 'din3968-cutting-face.json'), 'utf8'));
+  const table = limits.defaultTolerances;
+  assert.deepEqual(table.moduleBands, data.moduleBands);
+  assert.deepEqual(Object.keys(table.checks), Object.keys(data.checks));
+  for (const [check, rows] of Object.entries(data.checks)) assert.deepEqual(table.checks[check], rows, check);
+  // Given back as the case's table, it grades exactly as the default does.
+  const d = [0, 0, 30, 0, 0, 0, 0, 0, 0, 0, 0, 0];
+  const byDefault = hobsharp.evaluate({ ...paper(), inspection: { gashDeviations: d } }).inspection;
+  const byCase = hobsharp.evaluate({ ...paper(), inspection: { gashDeviations: d, tolerances: table } }).inspection;
+  assert.deepEqual(byCase.checks, byDefault.checks);
+  assert.equal(byCase.class, 'A');
+});
