@@ -413,6 +413,23 @@ Outcome<ToleranceTable> readToleranceTable(const Node& t) {
   return table;
 }
 
+// `measuredPoints`: a list of [r, x, deviation] (mm, mm, µm). Where they lie is resolveJob()'s to check.
+Outcome<std::vector<MeasuredPoint>> readMeasuredPoints(const Json& p) {
+  if (!p.is_array() || p.empty())
+    return refuse("measuredPoints", "must be a list of points [r, x, deviation] (mm, mm, µm), such as [[19, -70, 1.5], ...].");
+  std::vector<MeasuredPoint> out;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const std::string name = "measuredPoints[" + std::to_string(k) + "]";
+    if (!p[k].is_array() || p[k].size() != 3)
+      return refuse(name, std::string("must be a point [r, x, deviation] of three numbers; got ") +
+                              (p[k].is_array() ? std::to_string(p[k].size()) + " values" : typeName(p[k])) + ".");
+    double v[3] = {0, 0, 0};
+    for (std::size_t j = 0; j < 3; ++j) HOBSHARP_ASSIGN(v[j], Node::toNumber(p[k][j], name + "[" + std::to_string(j) + "]"));
+    out.push_back(MeasuredPoint{v[0], v[1], v[2]});
+  }
+  return out;
+}
+
 // `inspection`: per-gash deviations and an edited tolerance table (docs/case-format.md).
 Outcome<InspectionInput> readInspection(const Node& n) {
   HOBSHARP_TRY(n.onlyKnown({"gashDeviations", "tolerances"}));
@@ -452,7 +469,7 @@ Outcome<CaseInput> parseCase(const std::string& text) {
     return refuse("format", "unknown format " + (format->is_string() ? quoted(format->get<std::string>()) : typeName(*format)) +
                                 "; this calculator reads \"" + kCaseFormat + "\".");
   HOBSHARP_TRY(root.onlyKnown({"format", "hob", "wheel", "setup", "machine", "degree", "grid", "axes", "measured",
-                               "correction", "passes", "inspection"}));
+                               "correction", "passes", "inspection", "measuredPoints"}));
   CaseInput in;
   auto hob = root.object("hob", true);
   if (!hob) return hob.error();
@@ -503,6 +520,9 @@ Outcome<CaseInput> parseCase(const std::string& text) {
   HOBSHARP_ASSIGN(in.correction, readCorrection(*correction));
   if (const Json* p = root.find("passes")) {
     HOBSHARP_ASSIGN(in.passes, readPasses(*p));
+  }
+  if (const Json* p = root.find("measuredPoints")) {
+    HOBSHARP_ASSIGN(in.measuredPoints, readMeasuredPoints(*p));
   }
   auto inspection = root.object("inspection", false);
   if (!inspection) return inspection.error();

@@ -187,8 +187,8 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
   const bool helical = e.job.setup.face.helical();
   const bool gashes = e.indexCorrection.has_value();
   const ToleranceTable& table = toleranceTableOf(e.job.input.inspection);
-  v.text({"inspection.source", "", "the face inspected: \"measured\" (the case's grid) or \"simulated\" (the axes run)"},
-         e.job.input.measured ? "measured" : "simulated");
+  v.text({"inspection.source", "", "the face inspected: \"measured\" (the case's grid), \"measuredPoints\" (the case's points) or \"simulated\" (the axes run)"},
+         e.job.input.measuredPoints ? "measuredPoints" : e.job.input.measured ? "measured" : "simulated");
   std::string band = "outside the table's module bands";
   if (in.band) {
     std::ostringstream b;

@@ -135,3 +135,20 @@ test('limits() gives the default tolerance table as data/din3968-cutting-face.js
   assert.deepEqual(byCase.checks, byDefault.checks);
   assert.equal(byCase.class, 'A');
 });
+
+test('measuredPoints at the grid positions give the grid result exactly; a point off the face is refused by name', () => {
+  const measured = grid((r, x) => 0.3 * (r - 19) - 0.02 * x + 0.01 * (r - 29.5) ** 2);
+  const byGrid = hobsharp.evaluate({ ...paper(), measured });
+  const points = R.flatMap((r, i) => X.map((x, j) => [r, x, measured[i][j]])).reverse();
+  const byPoints = hobsharp.evaluate({ ...paper(), measuredPoints: points });
+  assert.equal(byPoints.inspection.source, 'measuredPoints');
+  assert.deepEqual(byPoints.correction, byGrid.correction);
+  assert.deepEqual({ ...byPoints.inspection, source: '' }, { ...byGrid.inspection, source: '' });
+  points[5] = [5, 0, 1];
+  assert.throws(() => hobsharp.evaluate({ ...paper(), measuredPoints: points }), (e) => {
+    assert.ok(e instanceof HobSharpError);
+    assert.equal(e.field, 'measuredPoints[5]');
+    assert.match(e.message, /off the rake face/);
+    return true;
+  });
+});
