@@ -53,6 +53,7 @@ struct CorrectionInput {
 struct PassInput {
   AxisPolynomials axes;
   Eigen::MatrixXd measured;
+  std::optional<CorrectionInput> correction;  // the options its correction was computed with
 };
 
 // What the case file's optional fields default to.

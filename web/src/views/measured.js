@@ -5,9 +5,11 @@ import { verdictText } from '../words.js';
 import { MAX_MEASURED_BYTES, measuredText, parseMeasuredCsv, tooLargeMessage } from '../io/csv.js';
 import { chosenFileText } from '../io/files.js';
 import { tuningFor } from '../probe-noise.js';
+import { OPTION_FIELD } from '../correction-options.js';
 
 const $ = (selector) => document.querySelector(selector);
-const isMeasuredField = (field) => /^(measured|correction)/.test(field || '');
+// The grid's and the locks' refusals; the correction's options show theirs at their inputs.
+const isMeasuredField = (field) => /^(measured|correction)/.test(field || '') && !OPTION_FIELD.test(field);
 
 function renderVerdict(r) {
   const v = $('#verdict');
