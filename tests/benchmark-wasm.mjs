@@ -34,11 +34,15 @@ const bigCase = { ...big, measured: hobsharp.evaluate({ ...big, axes: withError(
 const dense = { ...paper, grid: { ...paper.grid, radial: 101, axial: 101 } };
 const denseCase = { ...dense, axes: withError(dense, [['Z', 0, -0.01], ['B', 2, 0.001]]) };
 
+// The rake-face inspection of the cycle's case with 12 gashes' deviations (as tests/benchmark.cpp).
+const inspectionCase = { ...cycleCase, inspection: { gashDeviations: [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1] } };
+
 const best = (f, runs, repeats = 5) => Math.min(...Array.from({ length: repeats }, () => f(runs)));
 const wasm = {
   CorrectionCycle: best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(cycleCase), n), 200),
   CorrectionCycle51x26Degree6: best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(bigCase), n), 5, 3),
   DenseTopography101: best((n) => hobsharp.timeTopography(JSON.stringify(denseCase), n), 10),
+  InspectionPaperCase: best((n) => hobsharp.timeInspection(JSON.stringify(inspectionCase), n), 2000),
 };
 // End to end from JS, with the case in and the plain-JS result out (what the page's worker pays).
 const t0 = performance.now();
@@ -49,6 +53,7 @@ const rows = [
   ['correction cycle (Tab. 1, 9 x 5, 25 coefficients)', 'CorrectionCycle', 1],
   ['correction cycle (51 x 26, degree 6, 35 coefficients)', 'CorrectionCycle51x26Degree6', 50],
   ['dense 101 x 101 topography', 'DenseTopography101', 15],
+  ['rake-face inspection (Tab. 1, 9 x 5, 12 gashes)', 'InspectionPaperCase', 5],
 ];
 console.log('\nnative versus WebAssembly (Node ' + process.version + '), ms per run:');
 console.log('benchmark'.padEnd(52) + 'native'.padStart(10) + 'wasm'.padStart(10) + 'wasm/native'.padStart(13));

@@ -1,4 +1,4 @@
-// The benchmark command: the paper's correction cycle (and on 51 x 26 at degree 6), the sensitivity matrix by the implicit
+// The benchmark command: the paper's correction cycle (and on 51 x 26 at degree 6), its rake-face inspection, the sensitivity matrix by the implicit
 // function theorem against the paper's central differences, and a dense topography.
 #include <cstdio>
 #include <map>
@@ -107,7 +107,26 @@ void DenseTopography101(benchmark::State& state) {
   }
 }
 
+// The rake-face inspection of the paper's case (README "Rake-face inspection"): the measured face's
+// checks, 12 gashes' spacing and indexing correction, the class verdict, and the same after the correction.
+void InspectionPaperCase(benchmark::State& state) {
+  SharpeningJob job = paperJob(5, 9);
+  job.input.measured = measuredFor(job);
+  job.input.inspection.gashDeviations = {0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1};
+  auto evaluated = evaluate(job);
+  if (!evaluated) {
+    state.SkipWithError(evaluated.error().message.c_str());
+    return;
+  }
+  Evaluation e = std::move(evaluated).value();
+  for (auto _ : state) {
+    inspectEvaluation(e);
+    benchmark::DoNotOptimize(e.inspection);
+  }
+}
+
 BENCHMARK(CorrectionCycle)->Unit(benchmark::kMicrosecond);
+BENCHMARK(InspectionPaperCase)->Unit(benchmark::kMicrosecond);
 BENCHMARK(CorrectionCycle51x26Degree6)->Unit(benchmark::kMillisecond);
 BENCHMARK(SensitivityAnalytic)->Unit(benchmark::kMicrosecond);
 BENCHMARK(SensitivityCentralDifferences)->Unit(benchmark::kMicrosecond);
@@ -140,6 +159,8 @@ int main(int argc, char** argv) {
     std::printf("correction cycle: %.3f ms (target < 1 ms)\n", 1e3 * s["CorrectionCycle"]);
   if (s.count("CorrectionCycle51x26Degree6"))
     std::printf("correction cycle, 51 x 26, degree 6: %.2f ms (target < 50 ms)\n", 1e3 * s["CorrectionCycle51x26Degree6"]);
+  if (s.count("InspectionPaperCase"))
+    std::printf("rake-face inspection of the paper case: %.4f ms (target < 5 ms)\n", 1e3 * s["InspectionPaperCase"]);
   if (s.count("DenseTopography101"))
     std::printf("101 x 101 topography: %.2f ms (target < 15 ms)\n", 1e3 * s["DenseTopography101"]);
   benchmark::Shutdown();

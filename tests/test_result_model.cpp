@@ -33,6 +33,8 @@ CaseInput measuredCase() {
   run[Axis::Y].a[0] += 0.01;
   run[Axis::B].a[2] += 0.001;
   in.measured = test::topographyFor(job, run).normal;
+  // Per-gash deviations, so that the spacing and the indexing correction are in the result too.
+  in.inspection.gashDeviations = {0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1};
   return in;
 }
 
@@ -51,12 +53,24 @@ TEST(ResultModel, FieldPathsAreUniqueAndOptionalOnesSayWhen) {
   for (const FieldDescription& f : resultFields()) {
     EXPECT_TRUE(paths.insert(f.path).second) << f.path << " is described twice";
     EXPECT_FALSE(f.meaning.empty()) << f.path;
+    // The inspection's optional fields: helical only, with per-gash deviations, or after a correction.
+    const bool optionalInspection =
+        f.path.rfind("inspection.after.", 0) == 0 || f.path.rfind("inspection.checks.gashLead.", 0) == 0 ||
+        f.path.rfind("inspection.checks.adjacentSpacing.", 0) == 0 ||
+        f.path.rfind("inspection.checks.cumulativeSpacing.", 0) == 0 || f.path == "inspection.gashLead" ||
+        f.path == "inspection.adjacentSpacing" || f.path == "inspection.cumulativeSpacing" ||
+        f.path == "inspection.spacing.adjacent" || f.path == "inspection.indexCorrection" ||
+        f.path == "inspection.indexCorrectionDeg";
     const bool optional = f.path.rfind("correction.", 0) == 0 || f.path == "setup.gashLead" ||
-                          f.path == "setup.gashHelixAngle";
+                          f.path == "setup.gashHelixAngle" || optionalInspection;
     EXPECT_EQ(!f.when.empty(), optional) << f.path;
   }
   EXPECT_EQ(paths.count("topography.normal"), 1u);
   EXPECT_EQ(paths.count("correction.residual"), 1u);
+  for (const char* p : {"inspection.radialAlignment", "inspection.cuttingFaceForm", "inspection.gashLead",
+                        "inspection.class", "inspection.limitingCheck", "inspection.checks.radialAlignment.tolerances",
+                        "inspection.after.class"})
+    EXPECT_EQ(paths.count(p), 1u) << p;
 }
 
 TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
@@ -70,6 +84,10 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   const Json nominal = Json::parse(resultJson(evaluated(paperCase())));
   EXPECT_FALSE(nominal.contains("correction"));
   EXPECT_TRUE(nominal["setup"].contains("gashLead"));
+  // Nor a verdict after it; the inspection of the simulated face is there, without spacing.
+  EXPECT_FALSE(nominal["inspection"].contains("after"));
+  EXPECT_TRUE(nominal["inspection"].contains("radialAlignment"));
+  EXPECT_FALSE(nominal["inspection"].contains("adjacentSpacing"));
 }
 
 TEST(ResultModel, ShapesAndUnitsAsTheJsApiStatesThem) {
@@ -97,6 +115,8 @@ TEST(ResultModel, ShapesAndUnitsAsTheJsApiStatesThem) {
   straight.centerDistance.reset();
   const Json s = Json::parse(resultJson(evaluated(straight)));
   EXPECT_FALSE(s["setup"].contains("gashLead"));
+  EXPECT_FALSE(s["inspection"].contains("gashLead"));
+  EXPECT_FALSE(s["inspection"]["checks"].contains("gashLead"));
   EXPECT_EQ(s["setup"]["motionUnit"], "mm");
 }
 

@@ -2,6 +2,7 @@
 // module): the same C++ work as tests/benchmark.cpp, timed inside the module so that no JS
 // marshaling is counted (tests/benchmark-wasm.mjs). Milliseconds per run, or -1 on bad input.
 #include <string>
+#include <utility>
 
 #include <emscripten/bind.h>
 #include <emscripten/emscripten.h>
@@ -35,10 +36,26 @@ double timeTopography(const std::string& text, int runs) {
   });
 }
 
+// The rake-face inspection alone (inspectEvaluation), on the case evaluated once beforehand.
+double timeInspection(const std::string& text, int runs) {
+  auto in = parseCase(text);
+  if (!in) return -1;
+  auto job = resolveJob(*in);
+  if (!job) return -1;
+  auto e = evaluate(*job);
+  if (!e) return -1;
+  Evaluation evaluated = std::move(e).value();
+  inspectEvaluation(evaluated);  // warm-up
+  const double start = emscripten_get_now();
+  for (int i = 0; i < runs; ++i) inspectEvaluation(evaluated);
+  return (emscripten_get_now() - start) / runs;
+}
+
 }  // namespace
 }  // namespace hobsharp
 
 EMSCRIPTEN_BINDINGS(hobsharp_bench) {
   emscripten::function("timeCorrectionCycle", &hobsharp::timeCorrectionCycle);
   emscripten::function("timeTopography", &hobsharp::timeTopography);
+  emscripten::function("timeInspection", &hobsharp::timeInspection);
 }

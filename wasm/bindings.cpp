@@ -12,6 +12,8 @@
 
 #include "case_input.h"
 #include "case_json.h"
+#include "default_tolerances.h"
+#include "gash_spacing.h"
 #include "result_model.h"
 
 namespace hobsharp {
@@ -145,6 +147,44 @@ val resultFieldList() {
   return a;
 }
 
+// The inspection's names, limits and default tolerance table (README, "Rake-face inspection"), the
+// table in the shape `inspection.tolerances` takes, so the page can show it, edit it and save it.
+val inspectionLimits() {
+  val o = val::object();
+  val checks = val::array(), classes = val::array();
+  for (Check c : kChecks) checks.call<void>("push", std::string(checkName(c)));
+  for (ToleranceClass k : kClasses) classes.call<void>("push", std::string(className(k)));
+  o.set("checks", checks);
+  o.set("classes", classes);
+  o.set("maxGashes", kMaxGashes);
+  o.set("maxGashDeviation", kMaxGashDeviation);
+  const ToleranceTable& t = defaultToleranceTable();
+  val table = val::object();
+  table.set("format", std::string(kToleranceFormat));
+  val edges = val::array();
+  for (double m : t.moduleEdges) edges.call<void>("push", m);
+  table.set("moduleBands", edges);
+  val byCheck = val::object();
+  for (Check c : kChecks) {
+    val rows = val::object();
+    bool any = false;
+    for (ToleranceClass k : kClasses) {
+      const auto& cells = t.cells[static_cast<int>(c)][static_cast<int>(k)];
+      if (cells.empty()) continue;
+      val row = val::array();
+      for (const auto& cell : cells) row.call<void>("push", cell ? val(*cell) : val::null());
+      rows.set(className(k), row);
+      any = true;
+    }
+    if (!any) continue;
+    rows.set("source", std::string(defaultToleranceSource(c)));
+    byCheck.set(checkName(c), rows);
+  }
+  table.set("checks", byCheck);
+  o.set("defaultTolerances", table);
+  return o;
+}
+
 // What the page needs to know before it has a result: the case file's limits and defaults.
 val limits() {
   val o = val::object();
@@ -199,6 +239,7 @@ val limits() {
   }
   correction.set("resolution", resolution);
   o.set("correction", correction);
+  o.set("inspection", inspectionLimits());
   return o;
 }
 

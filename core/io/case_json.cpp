@@ -366,6 +366,99 @@ Outcome<CorrectionInput> readCorrection(const Node& c) {
   return out;
 }
 
+// The tolerance table (`inspection.tolerances`), in the shape of data/din3968-cutting-face.json:
+// {"moduleBands": [edges], "checks": {"<check>": {"source": "...", "AA": [per band, a number or
+// null], ..}}}, with the data file's "format", "title" and "missing" allowed as notes. The values'
+// rules are checkToleranceTable()'s (resolveJob).
+Outcome<ToleranceTable> readToleranceTable(const Node& t) {
+  HOBSHARP_TRY(t.onlyKnown({"format", "title", "moduleBands", "checks", "missing"}));
+  if (const Json* f = t.find("format"))
+    if (!f->is_string() || f->get<std::string>() != kToleranceFormat)
+      return refuse(t.field("format"), std::string("must be \"") + kToleranceFormat + "\" when given.");
+  if (const Json* title = t.find("title"))
+    if (!title->is_string()) return refuse(t.field("title"), std::string("must be a string; got ") + typeName(*title) + ".");
+  auto missing = t.object("missing", false);
+  if (!missing) return missing.error();
+  if (const Json* m = t.find("missing"))
+    for (auto it = m->begin(); it != m->end(); ++it)
+      if (!it->is_string()) return refuse(missing->field(shownKey(it.key())), "must be a sentence (a string).");
+  ToleranceTable table;
+  const Json* edges = t.find("moduleBands");
+  if (!edges) return refuse(t.field("moduleBands"), "is missing.");
+  if (!edges->is_array()) return refuse(t.field("moduleBands"), std::string("must be a list of module edges in mm; got ") + typeName(*edges) + ".");
+  for (std::size_t k = 0; k < edges->size(); ++k) {
+    double m = 0;
+    HOBSHARP_ASSIGN(m, Node::toNumber((*edges)[k], t.field("moduleBands") + "[" + std::to_string(k) + "]"));
+    table.moduleEdges.push_back(m);
+  }
+  auto checks = t.object("checks", true);
+  if (!checks) return checks.error();
+  HOBSHARP_TRY(checks->onlyKnown({"cuttingFaceForm", "radialAlignment", "gashLead", "adjacentSpacing", "cumulativeSpacing"}));
+  for (Check check : kChecks) {
+    if (!checks->find(checkName(check))) continue;
+    auto c = checks->object(checkName(check), true);
+    if (!c) return c.error();
+    HOBSHARP_TRY(c->onlyKnown({"source", "AA", "A", "B", "C", "D"}));
+    if (const Json* source = c->find("source"))
+      if (!source->is_string()) return refuse(c->field("source"), std::string("must be a string; got ") + typeName(*source) + ".");
+    for (ToleranceClass k : kClasses) {
+      const Json* row = c->find(className(k));
+      if (!row) continue;
+      const std::string field = c->field(className(k));
+      if (!row->is_array()) return refuse(field, std::string("must be a list of tolerances in µm, one per module band (null where there is none); got ") + typeName(*row) + ".");
+      auto& cells = table.cells[static_cast<int>(check)][static_cast<int>(k)];
+      for (std::size_t b = 0; b < row->size(); ++b) {
+        if ((*row)[b].is_null()) {
+          cells.emplace_back();
+          continue;
+        }
+        double v = 0;
+        HOBSHARP_ASSIGN(v, Node::toNumber((*row)[b], field + "[" + std::to_string(b) + "]"));
+        cells.emplace_back(v);
+      }
+    }
+  }
+  return table;
+}
+
+// `measuredPoints`: a list of [r, x, deviation] (mm, mm, µm). Where they lie is resolveJob()'s to check.
+Outcome<std::vector<MeasuredPoint>> readMeasuredPoints(const Json& p) {
+  if (!p.is_array() || p.empty())
+    return refuse("measuredPoints", "must be a list of points [r, x, deviation] (mm, mm, µm), such as [[19, -70, 1.5], ...].");
+  std::vector<MeasuredPoint> out;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const std::string name = "measuredPoints[" + std::to_string(k) + "]";
+    if (!p[k].is_array() || p[k].size() != 3)
+      return refuse(name, std::string("must be a point [r, x, deviation] of three numbers; got ") +
+                              (p[k].is_array() ? std::to_string(p[k].size()) + " values" : typeName(p[k])) + ".");
+    double v[3] = {0, 0, 0};
+    for (std::size_t j = 0; j < 3; ++j) HOBSHARP_ASSIGN(v[j], Node::toNumber(p[k][j], name + "[" + std::to_string(j) + "]"));
+    out.push_back(MeasuredPoint{v[0], v[1], v[2]});
+  }
+  return out;
+}
+
+// `inspection`: per-gash deviations and an edited tolerance table (docs/case-format.md).
+Outcome<InspectionInput> readInspection(const Node& n) {
+  HOBSHARP_TRY(n.onlyKnown({"gashDeviations", "tolerances"}));
+  InspectionInput out;
+  if (const Json* d = n.find("gashDeviations")) {
+    if (!d->is_array() || d->empty())
+      return refuse(n.field("gashDeviations"), "must be a list of deviations in µm, one per gash, such as [0, 2.5, -1].");
+    for (std::size_t k = 0; k < d->size(); ++k) {
+      double v = 0;
+      HOBSHARP_ASSIGN(v, Node::toNumber((*d)[k], n.field("gashDeviations") + "[" + std::to_string(k) + "]"));
+      out.gashDeviations.push_back(v);
+    }
+  }
+  if (n.find("tolerances")) {
+    auto t = n.object("tolerances", true);
+    if (!t) return t.error();
+    HOBSHARP_ASSIGN(out.tolerances, readToleranceTable(*t));
+  }
+  return out;
+}
+
 }  // namespace
 
 Outcome<CaseInput> parseCase(const std::string& text) {
@@ -384,7 +477,7 @@ Outcome<CaseInput> parseCase(const std::string& text) {
     return refuse("format", "unknown format " + (format->is_string() ? quoted(format->get<std::string>()) : typeName(*format)) +
                                 "; this calculator reads \"" + kCaseFormat + "\".");
   HOBSHARP_TRY(root.onlyKnown({"format", "hob", "wheel", "setup", "machine", "degree", "grid", "axes", "measured",
-                               "correction", "passes"}));
+                               "correction", "passes", "inspection", "measuredPoints"}));
   CaseInput in;
   auto hob = root.object("hob", true);
   if (!hob) return hob.error();
@@ -436,6 +529,12 @@ Outcome<CaseInput> parseCase(const std::string& text) {
   if (const Json* p = root.find("passes")) {
     HOBSHARP_ASSIGN(in.passes, readPasses(*p));
   }
+  if (const Json* p = root.find("measuredPoints")) {
+    HOBSHARP_ASSIGN(in.measuredPoints, readMeasuredPoints(*p));
+  }
+  auto inspection = root.object("inspection", false);
+  if (!inspection) return inspection.error();
+  HOBSHARP_ASSIGN(in.inspection, readInspection(*inspection));
   return in;
 }
 

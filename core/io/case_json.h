@@ -12,6 +12,8 @@
 namespace hobsharp {
 
 inline constexpr const char* kCaseFormat = "hobsharp-case/1";
+// The tolerance table's format (data/din3968-cutting-face.json, `inspection.tolerances`).
+inline constexpr const char* kToleranceFormat = "hobsharp-tolerances/1";
 
 // Lists and objects nest at most this deep in a case file; a real one nests them 3 deep
 // (measured rows in a list in the document). Deeper text is refused before it is read.

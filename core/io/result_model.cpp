@@ -1,12 +1,14 @@
 #include "result_model.h"
 
 #include <cmath>
+#include <sstream>
 #include <utility>
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
 #include "case_json.h"
+#include "inspection_input.h"
 #include "units.h"
 
 namespace hobsharp {
@@ -156,6 +158,112 @@ class FieldList final : public ResultVisitor {
 
 // As JS names them, which is how the engineer sees them in the page's messages.
 const char* nonFiniteName(double x) { return std::isnan(x) ? "NaN" : x > 0 ? "Infinity" : "-Infinity"; }
+
+constexpr const char* kWithGashes = "only with `inspection.gashDeviations`";
+constexpr const char* kWithEitherCorrection = "only with `measured` or `inspection.gashDeviations`";
+
+// The units of a check's value.
+const char* checkUnit(Check c) { return c == Check::GashLead ? "µm per 100 mm" : "µm"; }
+
+// What a check applies to: every face, a helical gash, or per-gash deviations.
+const char* checkWhen(Check c) {
+  if (c == Check::GashLead) return kHelicalOnly;
+  if (c == Check::AdjacentSpacing || c == Check::CumulativeSpacing) return kWithGashes;
+  return "";
+}
+
+// The class verdict of an inspection: its class, the check that limits it.
+void verdict(ResultVisitor& v, const Inspection& in, const std::string& prefix, const char* when) {
+  const std::string klass = prefix + "class", limiting = prefix + "limitingCheck";
+  v.text({klass.c_str(), "", "\"AA\" .. \"D\", \"outside D\", or \"not graded\" (no check has a tolerance for the module): the worst graded check's class", when},
+         gradeName(in.grade));
+  v.text({limiting.c_str(), "", "the check that sets the class (\"\" when not graded)", when},
+         in.limiting ? checkName(*in.limiting) : "");
+}
+
+// The rake-face inspection (README, "Rake-face inspection"), then the one predicted after the correction.
+void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
+  const Inspection& in = e.inspection;
+  const bool helical = e.job.setup.face.helical();
+  const bool gashes = e.indexCorrection.has_value();
+  const ToleranceTable& table = toleranceTableOf(e.job.input.inspection);
+  v.text({"inspection.source", "", "the face inspected: \"measured\" (the case's grid), \"measuredPoints\" (the case's points) or \"simulated\" (the axes run)"},
+         e.job.input.measuredPoints ? "measuredPoints" : e.job.input.measured ? "measured" : "simulated");
+  std::string band = "outside the table's module bands";
+  if (in.band) {
+    std::ostringstream b;
+    b << "over " << table.moduleEdges[*in.band] << " to " << table.moduleEdges[*in.band + 1] << " mm";
+    band = b.str();
+  }
+  v.text({"inspection.moduleBand", "", "the normal-module band of the tolerance table the checks are graded in"}, band);
+  v.number({"inspection.cuttingFaceForm", "µm", "cutting-face form deviation: spread about the straight line fitted root to tip, largest over the axial lines"},
+           in.face.cuttingFaceForm);
+  v.number({"inspection.radialAlignment", "µm", "radial alignment deviation: rise of that line from root to tip (plus = more material at the tip), largest magnitude over the axial lines, signed"},
+           in.face.radialAlignment);
+  if (in.face.gashLead || every)
+    v.number({"inspection.gashLead", "µm per 100 mm", "gash lead deviation: slope of the deviation along the hob axis, largest magnitude over the radial lines, signed", kHelicalOnly},
+             in.face.gashLead.value_or(0));
+  if (gashes || every) {
+    static const GashSpacing kNoSpacing;
+    static const IndexCorrection kNoIndex;
+    const GashSpacing& sp = in.spacing ? *in.spacing : kNoSpacing;
+    const IndexCorrection& ic = e.indexCorrection ? *e.indexCorrection : kNoIndex;
+    v.number({"inspection.adjacentSpacing", "µm", "adjacent spacing deviation of the cutting faces at the pitch radius: largest magnitude, signed", kWithGashes},
+             sp.adjacentLargest);
+    v.number({"inspection.cumulativeSpacing", "µm", "cumulative spacing deviation: largest minus smallest gash deviation", kWithGashes},
+             sp.cumulative);
+    numbers(v, {"inspection.spacing.adjacent", "µm", "per gash k: gash k+1's deviation minus gash k's (the last: gash 1's minus gash z's)", kWithGashes},
+            sp.adjacent);
+    std::vector<double> micro, degrees;
+    for (double a : ic.angle) micro.push_back(a * 1e6);
+    for (double a : ic.rounded) degrees.push_back(a * kDegPerRad);
+    numbers(v, {"inspection.indexCorrection", "µrad", "per gash: the change of its A-axis index position that brings its face to the mean of all", kWithGashes},
+            micro);
+    numbers(v, {"inspection.indexCorrectionDeg", "deg", "the same in degrees, rounded to the A axis's resolution (correction.resolution.A)", kWithGashes},
+            degrees);
+  }
+  verdict(v, in, "inspection.", "");
+  for (Check c : kChecks) {
+    const CheckResult* r = in.find(c);
+    if (!r && !every) continue;
+    static const CheckResult kNoCheck;
+    const CheckResult& cr = r ? *r : kNoCheck;
+    const std::string base = std::string("inspection.checks.") + checkName(c) + ".";
+    const std::string value = base + "value", grade = base + "grade", classes = base + "classes", tolerances = base + "tolerances";
+    v.number({value.c_str(), checkUnit(c), "the check's value, as the field inspection.<check> gives it", checkWhen(c)}, cr.value);
+    v.text({grade.c_str(), "", "its grade: \"AA\" .. \"D\", \"outside D\" or \"not graded\" (the table has no tolerance for the module)", checkWhen(c)},
+           gradeName(cr.grade));
+    std::vector<std::string> names;
+    for (ToleranceClass k : cr.classes) names.push_back(className(k));
+    v.texts({classes.c_str(), "", "the classes with a tolerance in the module band, tightest first", checkWhen(c)}, names);
+    numbers(v, {tolerances.c_str(), checkUnit(c), "their tolerances (a ± tolerance as its magnitude), one per class", checkWhen(c)},
+            cr.tolerances);
+  }
+  if (!e.inspectionAfter && !every) return;
+  static const Inspection kNoInspection;
+  const Inspection& after = e.inspectionAfter ? *e.inspectionAfter : kNoInspection;
+  v.number({"inspection.after.cuttingFaceForm", "µm", "cutting-face form deviation predicted after the correction (of correction.residual, or the face as it is without a face correction)", kWithEitherCorrection},
+           after.face.cuttingFaceForm);
+  v.number({"inspection.after.radialAlignment", "µm", "radial alignment deviation predicted after the correction", kWithEitherCorrection},
+           after.face.radialAlignment);
+  if (helical || every)
+    v.number({"inspection.after.gashLead", "µm per 100 mm", "gash lead deviation predicted after the correction (helical gash only)", kWithEitherCorrection},
+             after.face.gashLead.value_or(0));
+  if (gashes || every) {
+    static const GashSpacing kNoSpacing;
+    const GashSpacing& sp = after.spacing ? *after.spacing : kNoSpacing;
+    v.number({"inspection.after.adjacentSpacing", "µm", "adjacent spacing predicted after running inspection.indexCorrectionDeg", kWithGashes}, sp.adjacentLargest);
+    v.number({"inspection.after.cumulativeSpacing", "µm", "cumulative spacing predicted after running inspection.indexCorrectionDeg", kWithGashes}, sp.cumulative);
+  }
+  verdict(v, after, "inspection.after.", kWithEitherCorrection);
+  for (Check c : kChecks) {
+    const CheckResult* r = after.find(c);
+    if (!r && !every) continue;
+    const std::string grade = std::string("inspection.after.checks.") + checkName(c) + ".grade";
+    v.text({grade.c_str(), "", "the check's grade predicted after the correction", kWithEitherCorrection},
+           r ? gradeName(r->grade) : gradeName(Grade::NotGraded));
+  }
+}
 
 }  // namespace
 
@@ -333,6 +441,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
               kWithMeasured}, c.uncorrectableShare);
     v.text({"correction.verdict", "", "one sentence for the engineer", kWithMeasured}, c.verdict);
   }
+  visitInspection(e, v, every);
 }
 
 std::string firstNonFinite(const Evaluation& e) {

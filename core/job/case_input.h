@@ -12,6 +12,8 @@
 
 #include "axis_polynomials.h"
 #include "coefficient.h"
+#include "inspection_input.h"
+#include "measured_points.h"
 #include "tooth_face.h"
 
 namespace hobsharp {
@@ -72,6 +74,10 @@ struct CaseInput {
   std::optional<Eigen::MatrixXd> measured;  // µm, grid.radial x grid.axial
   CorrectionInput correction;
   std::vector<PassInput> passes;  // earlier passes, oldest first; the calculation does not use them
+  InspectionInput inspection;     // per-gash deviations and an edited tolerance table (`inspection`)
+  // The measuring machine's points, an alternative to `measured`; resolveJob() turns them into the
+  // measured grid (measured_points.h).
+  std::optional<std::vector<MeasuredPoint>> measuredPoints;
 };
 
 // The largest grid the calculator takes, per direction.

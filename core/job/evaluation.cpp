@@ -2,6 +2,27 @@
 
 namespace hobsharp {
 
+void inspectEvaluation(Evaluation& e) {
+  const SharpeningJob& job = e.job;
+  const InspectionInput& in = job.input.inspection;
+  const ToleranceTable& table = toleranceTableOf(in);
+  const bool helical = job.setup.face.helical();
+  const double module = job.input.hob.normalModule;
+  const Eigen::MatrixXd& face = job.input.measured ? *job.input.measured : e.topography.normal;
+  std::optional<GashSpacing> spacing;
+  if (!in.gashDeviations.empty()) {
+    spacing = gashSpacing(in.gashDeviations);
+    const double perRadian = deviationPerIndexAngle(job.setup, job.setup.face.pitchRadius, 0.0);
+    e.indexCorrection = indexCorrection(in.gashDeviations, perRadian, job.correction.resolution.inAxisUnit(Axis::A));
+  }
+  e.inspection = inspect(checkFace(face, job.grid.r, job.grid.x, helical), spacing, table, module);
+  if (!e.correction && !e.indexCorrection) return;
+  const Eigen::MatrixXd& after = e.correction ? e.correction->after.normal : face;
+  std::optional<GashSpacing> spacingAfter;
+  if (e.indexCorrection) spacingAfter = gashSpacing(e.indexCorrection->after);
+  e.inspectionAfter = inspect(checkFace(after, job.grid.r, job.grid.x, helical), spacingAfter, table, module);
+}
+
 Outcome<Evaluation> evaluate(const SharpeningJob& job) {
   Evaluation e;
   e.job = job;
@@ -20,6 +41,7 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
     if (!c) return c.error();
     e.correction = std::move(c).value();
   }
+  inspectEvaluation(e);
   return e;
 }
 

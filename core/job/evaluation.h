@@ -7,6 +7,8 @@
 
 #include "correction.h"
 #include "ground_face.h"
+#include "index_correction.h"
+#include "inspection.h"
 #include "outcome.h"
 #include "sensitivity_matrix.h"
 #include "sharpening_job.h"
@@ -24,8 +26,19 @@ struct Evaluation {
   Topography topography;
   SensitivityMatrix sensitivities;  // every coefficient, at the axes that were run
   std::optional<Correction> correction;
+  // The rake-face inspection (README, "Rake-face inspection"): of the measured face when there is
+  // one, else of the simulated one; the A-axis indexing correction with per-gash deviations; and
+  // the inspection predicted after the correction (the face correction's predicted face, the
+  // gashes after the rounded indexing correction) when either correction exists.
+  Inspection inspection;
+  std::optional<IndexCorrection> indexCorrection;
+  std::optional<Inspection> inspectionAfter;
 };
 
 Outcome<Evaluation> evaluate(const SharpeningJob& job);
+
+// Fills e.inspection, e.indexCorrection and e.inspectionAfter from the rest of `e` (evaluate()
+// calls it last; the benchmark times it alone).
+void inspectEvaluation(Evaluation& e);
 
 }  // namespace hobsharp

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include "units.h"
 #include "universal_settings.h"
@@ -262,6 +263,15 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   if (in.measured) {
     if (auto r = checkMeasured(*in.measured, grid, "measured"); !r) return r.error();
   }
+  if (in.measuredPoints) {  // the measuring machine's own points (README, "Measured points")
+    if (in.measured) return refuse("measuredPoints", "give the measurement as `measured` (a grid) or as `measuredPoints`, not both.");
+    const double tol = kGridTolerance * (1 + in.hob.length);
+    const PointRegion region{job.rootRadius, job.outerRadius, in.hob.length / 2 + std::abs(face.axialAt(*pitch)) + tol,
+                             kGridTolerance, kMaxDeviation};
+    auto m = gridFromPoints(*in.measuredPoints, grid, region);
+    if (!m) return m.error();
+    job.input.measured = std::move(m).value();
+  }
   // The pass history is not computed with, but it must fit the job as `axes` and `measured` do.
   for (size_t i = 0; i < in.passes.size(); ++i) {
     const std::string pass = "passes[" + std::to_string(i) + "].";
@@ -273,6 +283,7 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   auto options = correctionOptions(in.correction, in.degree, "correction");
   if (!options) return options.error();
   job.correction = *options;
+  if (auto r = checkInspectionInput(in.inspection); !r) return r.error();  // README, "Rake-face inspection"
   return job;
 }
 

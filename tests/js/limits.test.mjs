@@ -21,7 +21,7 @@ function refused(c, field, message) {
 
 test('limits() has the documented form, every value from the module', () => {
   assert.deepEqual(Object.keys(limits), ['format', 'maxGridLines', 'gridTolerance', 'degree', 'defaultGrid',
-    'wheelProfilePoints', 'axes', 'motionUnits', 'correction']);
+    'wheelProfilePoints', 'axes', 'motionUnits', 'correction', 'inspection']);
   assert.equal(limits.format, paper().format);
   assert.equal(limits.maxGridLines, 201);
   assert.deepEqual(limits.degree, { min: 1, max: 6, default: 4 });

@@ -17,6 +17,8 @@ test('the README table of result fields is made from resultFields()', () => {
 test('every listed field is in the result of a measured case, and nothing else is', () => {
   const c = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
   c.measured = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (__, j) => (i - 2) * (j - 4) * 0.1));
+  // With per-gash deviations, so that the inspection's spacing fields are there too.
+  c.inspection = { gashDeviations: [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1] };
   const r = hobsharp.evaluate(c);
   const fields = hobsharp.resultFields();
   const listed = new Set(fields.map((f) => f.path));

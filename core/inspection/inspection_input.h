@@ -1,0 +1,24 @@
+// What a case says about the inspection (`inspection`, docs/case-format.md): per-gash deviations
+// for the spacing, and an edited tolerance table that replaces the default one.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "outcome.h"
+#include "tolerance_table.h"
+
+namespace hobsharp {
+
+struct InspectionInput {
+  std::vector<double> gashDeviations;        // µm at the pitch radius, gash 1 .. z; empty when not given
+  std::optional<ToleranceTable> tolerances;  // empty: defaultToleranceTable()
+};
+
+// The table the inspection grades by: the case's, or the default one.
+const ToleranceTable& toleranceTableOf(const InspectionInput& in);
+
+// The rules of checkGashDeviations() and checkToleranceTable(), naming inspection.* fields.
+Outcome<void> checkInspectionInput(const InspectionInput& in);
+
+}  // namespace hobsharp
