@@ -53,6 +53,13 @@ struct PassInput {
   Eigen::MatrixXd measured;
 };
 
+// Points along the wheel's radius as the case gives them (docs/case-format.md §The wheel's
+// profile): R with one value each, an offset (µm) or an axial position Z (mm).
+struct WheelPointsInput {
+  std::vector<double> R;       // mm
+  std::vector<double> values;  // offset µm, or Z mm
+};
+
 // What the case file's optional fields default to.
 constexpr int kDefaultDegree = 4;
 constexpr int kDefaultGridRadial = 5;
@@ -71,6 +78,8 @@ struct CaseInput {
   std::optional<Eigen::MatrixXd> measured;  // µm, grid.radial x grid.axial
   CorrectionInput correction;
   std::vector<PassInput> passes;  // earlier passes, oldest first; the calculation does not use them
+  std::optional<WheelPointsInput> wheelProfileOffset;    // wheel.profileOffset: R mm, offset µm
+  std::optional<WheelPointsInput> wheelMeasuredProfile;  // wheel.measuredProfile: R mm, Z mm
 };
 
 // The largest grid the calculator takes, per direction.

@@ -6,11 +6,13 @@
 #include <optional>
 
 #include "correction.h"
+#include "dressed_wheel.h"
 #include "ground_face.h"
 #include "outcome.h"
 #include "sensitivity_matrix.h"
 #include "sharpening_job.h"
 #include "topography.h"
+#include "wheel_offset_sensitivity.h"
 #include "wheel_profile.h"
 
 namespace hobsharp {
@@ -24,6 +26,10 @@ struct Evaluation {
   Topography topography;
   SensitivityMatrix sensitivities;  // every coefficient, at the axes that were run
   std::optional<Correction> correction;
+  // With a wheel profile offset (job.setup.wheel): the dressed profile at wheelProfile's points and
+  // the face's sensitivity to the offset's knot values; empty for the conjugate wheel.
+  DressedProfile dressedProfile;
+  WheelOffsetSensitivity offsetSensitivities;
 };
 
 Outcome<Evaluation> evaluate(const SharpeningJob& job);

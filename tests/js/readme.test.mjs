@@ -17,6 +17,8 @@ test('the README table of result fields is made from resultFields()', () => {
 test('every listed field is in the result of a measured case, and nothing else is', () => {
   const c = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
   c.measured = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (__, j) => (i - 2) * (j - 4) * 0.1));
+  // A dressed wheel, so that the wheel offset's fields are there too (contact range R 29.53 to 50.0 mm).
+  c.wheel.profileOffset = { R: [30, 40, 49.9], offset: [1, -1, 0.5] };
   const r = hobsharp.evaluate(c);
   const fields = hobsharp.resultFields();
   const listed = new Set(fields.map((f) => f.path));
