@@ -15,9 +15,10 @@ struct Hob {
   double largest;  // the largest SSE0 tested, µm²
 };
 
-// The five hobs of the issue. The module-2 hob's face is 30 mm long and 6 mm deep: an error of
-// 1e6 µm² (136 µm rms) leaves it unground at the ends, and at 1e5 µm² one pass leaves 1.3e-4 µm²;
-// it is held to the target up to 5e4 µm² (the issue measured it at 2.3e4).
+// The five hobs of the issue. The module-2 hob's face is 30 mm long and 6 mm deep: most errors of
+// 1e6 µm² (136 µm rms) leave it unground at the ends, and at 1e5 µm² one pass leaves 1.3e-4 µm²
+// (Module2BeyondFiveE4NeedsASecondPass says why); it is held to the target up to 5e4 µm² in one
+// pass (the issue measured it at 2.3e4).
 const Hob kHobs[] = {
     {"paper", paperCase, 1e6},
     {"left hand, rake offset", leftHandRakeCase, 1e6},
@@ -72,6 +73,26 @@ TEST(Identification, NoiseFreeOnePassLeavesBelow1e4OnFiveHobs) {
                   p.c.rank, p.c.withinNoise, p.c.amplifyingDropped);
     }
   }
+}
+
+// Beyond 5e4 µm² on the module-2 hob, one pass is not enough, and no one-pass method can be:
+// the identified error reproduces the measured face to within the declared noise (the probe grid
+// cannot tell it from the true one), yet the two differ in directions the 6 x 9 grid shows only
+// near the nominal face. A second pass, measured there, sees them and closes the gap.
+TEST(Identification, Module2BeyondFiveE4NeedsASecondPass) {
+  const SharpeningJob job = jobOf(module2Case());
+  const AxisPolynomials error = inSpanError(job, 1e5, 7);
+  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(job.grid.rows(), job.grid.cols());
+  const CorrectionOptions o = noiseFree(job);
+  const Pass first = onePass(job, job.nominalAxes, error, zero, o);
+  const double noiseLevel = job.grid.size() * o.probeNoise * o.probeNoise;  // µm²
+  EXPECT_LT(first.c.summary.finalCost, noiseLevel);  // the measured face is explained
+  EXPECT_GT(first.onGrid.sse, first.c.summary.finalCost);  // yet the error left is larger
+  const Pass second = onePass(job, first.c.axes, error, zero, o);
+  EXPECT_LT(second.onGrid.sse, 1e-4);
+  EXPECT_LT(rms(second.dense.normal), 2e-3);
+  std::printf("[ figures  ] module 2, SSE0 1e5: fitted to %.1e µm², one pass leaves %.2e, two passes %.2e µm²\n",
+              first.c.summary.finalCost, first.onGrid.sse, second.onGrid.sse);
 }
 
 // The paper's linear step, side by side: it leaves ~1.4e-11 SSE0² on the paper hob.
