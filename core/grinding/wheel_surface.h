@@ -10,6 +10,7 @@
 
 #include <optional>
 
+#include "autodiff.h"
 #include "cubic_spline.h"
 #include "wheel_contact.h"
 
@@ -20,6 +21,19 @@ struct WheelSurface {
   std::optional<CubicSpline> offset;
   bool hasOffset() const { return offset.has_value(); }
 };
+
+// The offset's value and slope at R, with R's derivatives carried by the chain rule
+// (d delta = delta'(R) dR, d delta' = delta''(R) dR).
+inline double offsetValue(const CubicSpline& s, double R) { return s.value(R); }
+inline double offsetSlope(const CubicSpline& s, double R) { return s.slope(R); }
+template <class Der>
+Eigen::AutoDiffScalar<Der> offsetValue(const CubicSpline& s, const Eigen::AutoDiffScalar<Der>& R) {
+  return Eigen::AutoDiffScalar<Der>(s.value(R.value()), s.slope(R.value()) * R.derivatives());
+}
+template <class Der>
+Eigen::AutoDiffScalar<Der> offsetSlope(const CubicSpline& s, const Eigen::AutoDiffScalar<Der>& R) {
+  return Eigen::AutoDiffScalar<Der>(s.slope(R.value()), s.curvature(R.value()) * R.derivatives());
+}
 
 // The wheel's meridian at one conjugate point: the profile point (R, Z) and a normal (nR, nZ),
 // not normalised, pointing like n_t.
@@ -42,8 +56,8 @@ WheelMeridian<T> wheelMeridian(const WheelSurface& wheel, const WheelContact<T>&
                                const T& slopeShift) {
   WheelMeridian<T> m{c.R(), c.Z(), c.nRadial(), c.n.z()};
   if (!wheel.hasOffset()) return m;
-  const T delta = wheel.offset->value(m.R) + valueShift;
-  const T slope = wheel.offset->slope(m.R) + slopeShift;
+  const T delta = offsetValue(*wheel.offset, m.R) + valueShift;
+  const T slope = offsetSlope(*wheel.offset, m.R) + slopeShift;
   const T nR = m.nR, nZ = m.nZ;
   m.R = m.R - delta * nR;
   m.Z = m.Z - delta * nZ;

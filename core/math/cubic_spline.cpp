@@ -42,6 +42,29 @@ std::size_t CubicSpline::segment(double t) const {
   return std::min(std::max<std::size_t>(i, 1), x_.size() - 1) - 1;
 }
 
+double CubicSpline::evaluate(double t, int derivative) const {
+  const std::size_t n = x_.size();
+  // Beyond the ends: the tangent line (m = 0 there).
+  if (t <= x_.front() || t >= x_.back()) {
+    const bool left = t <= x_.front();
+    const std::size_t a = left ? 0 : n - 2, b = a + 1;
+    const double h = x_[b] - x_[a];
+    const double slopeAtEnd = left ? (y_[b] - y_[a]) / h - h * (2 * m_(a) + m_(b)) / 6
+                                   : (y_[b] - y_[a]) / h + h * (m_(a) + 2 * m_(b)) / 6;
+    if (derivative == 2) return 0.0;
+    if (derivative == 1) return slopeAtEnd;
+    const double xe = left ? x_.front() : x_.back(), ye = left ? y_.front() : y_.back();
+    return ye + slopeAtEnd * (t - xe);
+  }
+  const std::size_t i = segment(t);
+  const double h = x_[i + 1] - x_[i];
+  const double a = (x_[i + 1] - t) / h, b = (t - x_[i]) / h;
+  if (derivative == 2) return a * m_(i) + b * m_(i + 1);
+  if (derivative == 1)
+    return (y_[i + 1] - y_[i]) / h + (-(3 * a * a - 1) * m_(i) + (3 * b * b - 1) * m_(i + 1)) * (h / 6);
+  return a * y_[i] + b * y_[i + 1] + ((a * a * a - a) * m_(i) + (b * b * b - b) * m_(i + 1)) * (h * h / 6);
+}
+
 CubicSpline::Basis CubicSpline::basis(double t) const {
   const int n = static_cast<int>(x_.size());
   Basis out{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
