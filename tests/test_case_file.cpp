@@ -139,6 +139,12 @@ const Rule kRules[] = {
     {"PassAxesWrongDegree", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["axes"]["B"].erase(4); }, "passes[1].axes.B", "needs 5 coefficients"},
     {"PassAxesMissing", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0].erase("axes"); }, "passes[0].axes", "is missing"},
     {"PassUnknownField", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["predicted"] = 1; }, "passes[0].predicted", "unknown field"},
+    // A pass's own correction options, checked as the case's are, named within the pass.
+    {"PassCorrectionNotAnObject", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["correction"] = 2; }, "passes[1].correction", "must be an object"},
+    {"PassProbeNoiseZero", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["correction"] = {{"probeNoise", 0}}; }, "passes[1].correction.probeNoise", "must be positive"},
+    {"PassResolutionNegative", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["correction"] = {{"resolution", {{"B", -1e-4}}}}; }, "passes[0].correction.resolution.B", "must be"},
+    {"PassMethodUnknown", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["correction"] = {{"method", "quadratic"}}; }, "passes[0].correction.method", "must be one of"},
+    {"PassCorrectionUnknownField", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["correction"] = {{"sigma", 1}}; }, "passes[0].correction.sigma", "unknown field"},
 };
 
 INSTANTIATE_TEST_SUITE_P(CaseFile, BadInput, ::testing::ValuesIn(kRules),
@@ -437,6 +443,20 @@ TEST(CaseFile, PassesRoundTrip) {
   EXPECT_EQ(in->passes[0].measured(2, 3), 7.125);
   EXPECT_EQ(in->passes[1].measured(4, 8), -0.0625);
   EXPECT_EQ(in->passes[1].axes[Axis::B].a[2], -1.25e-5);
+  EXPECT_FALSE(in->passes[0].correction.has_value());
+  {  // a pass keeps the options its correction was computed with
+    Json k = j;
+    k["passes"][1]["correction"] = {{"method", "linear"}, {"probeNoise", 1e-4}, {"resolution", {{"A", 0.001}}},
+                                    {"lockedAxes", {"A"}}};
+    auto read = parseCase(k.dump());
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    ASSERT_TRUE(read->passes[1].correction.has_value());
+    EXPECT_EQ(read->passes[1].correction->method, std::optional<std::string>("linear"));
+    EXPECT_EQ(read->passes[1].correction->probeNoise, std::optional<double>(1e-4));
+    EXPECT_EQ(read->passes[1].correction->resolution[static_cast<int>(Axis::A)], std::optional<double>(0.001));
+    EXPECT_EQ(read->passes[1].correction->lockedAxes, std::vector<Axis>{Axis::A});
+    EXPECT_TRUE(evaluateCase(k.dump()).ok());
+  }
 
   auto with = evaluateCase(j.dump());
   ASSERT_TRUE(with.ok()) << with.error().message;

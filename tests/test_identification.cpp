@@ -95,6 +95,33 @@ TEST(Identification, Module2BeyondFiveE4NeedsASecondPass) {
               first.c.summary.finalCost, first.onGrid.sse, second.onGrid.sse);
 }
 
+// A run that holds moves the identification leaves out (here an earlier linear step's, with a
+// coarse A resolution): the correction found would grind a worse face than the one measured, so
+// the run axes are proposed unchanged, and the verdict says so.
+TEST(Identification, NeverProposesAWorseFaceThanTheOneMeasured) {
+  const SharpeningJob job = jobOf(paperCase());
+  AxisPolynomials error = times(job.nominalAxes, 0.0);
+  error[Axis::Z].a[0] = -0.01;
+  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(job.grid.rows(), job.grid.cols());
+  CorrectionOptions linear = job.correction;
+  linear.method = CorrectionMethod::Linear;
+  linear.resolution.step[static_cast<int>(Axis::A)] = 0.01;  // deg
+  const Pass first = onePass(job, job.nominalAxes, error, zero, linear);
+  ASSERT_LT(first.onGrid.sse, 1e-6);
+  CorrectionOptions o = noiseFree(job);
+  o.resolution = linear.resolution;
+  const Pass second = onePass(job, first.c.axes, error, zero, o);
+  EXPECT_TRUE(second.c.runKept);
+  EXPECT_GT(second.c.discardedSse, second.c.before.sse);
+  for (Axis a : kAxes) EXPECT_EQ(second.c.axes[a].a, first.c.axes[a].a) << axisName(a);
+  EXPECT_EQ(second.c.after.sse, second.c.before.sse);
+  EXPECT_NEAR(second.onGrid.sse, second.c.before.sse, 1e-9);  // the same axes grind the same face
+  EXPECT_NE(second.c.verdict.find("No change proposed"), std::string::npos) << second.c.verdict;
+  for (double v : second.c.axisChangeSize) EXPECT_EQ(v, 0.0);
+  std::printf("[ figures  ] run kept: the discarded proposal predicted %.3g µm², measured %.3g µm²\n",
+              second.c.discardedSse, second.c.before.sse);
+}
+
 // The paper's linear step, side by side: it leaves ~1.4e-11 SSE0² on the paper hob.
 TEST(Identification, LinearMethodStaysAvailableAndIsWorseForLargeErrors) {
   const SharpeningJob job = jobOf(paperCase());

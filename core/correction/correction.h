@@ -55,6 +55,10 @@ struct Correction {
   std::array<double, kAxisCount> changePerNoise{};
   std::vector<bool> directionsUsed;      // per singular value: identified (true) or left out
   int withinNoise = 0;                   // directions left out: within the probe noise (nonlinear)
+  // The correction found would leave a worse face than the one measured (re-simulated): the run
+  // axes are proposed unchanged, and `discardedSse` is what the discarded proposal predicted, µm².
+  bool runKept = false;
+  double discardedSse = 0;
 };
 
 // The paper's single linear step (Eq. 17), with the linear prediction in `after`.

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <optional>
+#include <sstream>
+#include <string>
 
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
@@ -90,6 +92,14 @@ struct FaceResidual : Eigen::DenseFunctor<double> {
   }
 };
 
+// A tolerance as a share in words: 1e-10 -> "1 part in 1e+10".
+std::string share(double tolerance) {
+  std::ostringstream t;
+  t.precision(2);
+  t << "1 part in " << 1 / tolerance;
+  return t.str();
+}
+
 void describe(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Status st, const FaceResidual& r,
               const LeastSquaresOptions& o) {
   using namespace Eigen::LevenbergMarquardtSpace;
@@ -97,15 +107,18 @@ void describe(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Status st,
     case RelativeReductionTooSmall:
     case RelativeErrorAndReductionTooSmall:
       s.status = SolveStatus::Converged;
-      s.reason = "converged: the sum of squares falls by less than functionTolerance per step.";
+      s.reason = "converged: a further step would lower the sum of squares by less than " + share(o.functionTolerance) +
+                 " of it (function tolerance).";
       break;
     case RelativeErrorTooSmall:
       s.status = SolveStatus::Converged;
-      s.reason = "converged: the steps fell below parameterTolerance.";
+      s.reason = "converged: the last steps changed the identified error by less than " + share(o.parameterTolerance) +
+                 " of it (parameter tolerance).";
       break;
     case CosinusTooSmall:
       s.status = SolveStatus::Converged;
-      s.reason = "converged: the residual is orthogonal to every identified direction (gradientTolerance).";
+      s.reason = "converged: what is left of the measured face is a shape no identified axis direction makes "
+                 "(gradient tolerance).";
       break;
     case FtolTooSmall:
     case XtolTooSmall:

@@ -94,7 +94,10 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
   v.precision(3);
   // Within the noise: the rms left is at most twice the probe's sigma.
   const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
-  if (c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence) {
+  if (c.runKept) {
+    v << "No change proposed: the correction found would leave a sum of squares of " << squares(c.discardedSse)
+      << " µm², more than the " << squares(c.before.sse) << " µm² measured, so the axes run stay as they are.";
+  } else if (c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence) {
     v << "Identification " << (c.summary.status == SolveStatus::Stalled ? "stalled" : "did not converge")
       << "; the best estimate is proposed (predicted sum of squares " << squares(c.after.sse) << " µm², from "
       << squares(c.before.sse) << " µm²). " << c.summary.reason;
@@ -164,6 +167,16 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   auto after = predictedFace(setup, runFace, c.axes, c.identifiedError, unexplained, run);
   if (!after) return after.error();
   c.after = *after;
+  // Never a proposal worse than the run: the same axes again grind the face measured. (A run that
+  // holds moves the identification leaves out as amplifying, such as an earlier linear step's,
+  // is where this happens.)
+  if (c.after.sse > c.before.sse) {
+    c.runKept = true;
+    c.discardedSse = c.after.sse;
+    c.axes = run;
+    c.change.setZero();
+    c.after = c.before;
+  }
   const MotionRange range = motionRange(runFace);
   const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
   c.roundedAxes = roundToResolution(c.axes, o.resolution, reach);

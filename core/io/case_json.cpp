@@ -294,7 +294,10 @@ Outcome<Eigen::MatrixXd> readMeasured(const Json& m, const std::string& name = "
   return out;
 }
 
-// The pass history: a list of {"axes": {X..B}, "measured": rows}, oldest first. Shapes against
+Outcome<CorrectionInput> readCorrection(const Node& c);
+
+// The pass history: a list of {"axes": {X..B}, "measured": rows, "correction": {...}}, oldest
+// first; a pass's correction is optional (the options its correction was computed with). Shapes against
 // the grid and the degree are resolveJob()'s to check, as for `measured` and `axes`.
 Outcome<std::vector<PassInput>> readPasses(const Json& p) {
   if (!p.is_array())
@@ -305,7 +308,7 @@ Outcome<std::vector<PassInput>> readPasses(const Json& p) {
     const std::string name = "passes[" + std::to_string(i) + "]";
     if (!p[i].is_object()) return refuse(name, std::string("must be an object with axes and measured; got ") + typeName(p[i]) + ".");
     const Node pass(p[i], name);
-    HOBSHARP_TRY(pass.onlyKnown({"axes", "measured"}));
+    HOBSHARP_TRY(pass.onlyKnown({"axes", "measured", "correction"}));
     PassInput in;
     auto axes = pass.object("axes", true);
     if (!axes) return axes.error();
@@ -313,6 +316,11 @@ Outcome<std::vector<PassInput>> readPasses(const Json& p) {
     const Json* m = pass.find("measured");
     if (!m) return refuse(pass.field("measured"), "is missing.");
     HOBSHARP_ASSIGN(in.measured, readMeasured(*m, pass.field("measured")));
+    if (pass.find("correction")) {
+      auto c = pass.object("correction", true);
+      if (!c) return c.error();
+      HOBSHARP_ASSIGN(in.correction, readCorrection(*c));
+    }
     out.push_back(std::move(in));
   }
   return out;

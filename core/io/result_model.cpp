@@ -279,6 +279,8 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
            c.summary.reason);
     v.flag({"correction.usable", "", "the proposal may be used (every status but \"failed\")", kWithMeasured},
            c.summary.IsSolutionUsable());
+    v.flag({"correction.runKept", "", "the correction found would leave a worse face than the one measured (re-simulated), so the run axes are proposed unchanged",
+            kWithMeasured}, c.runKept);
     v.count({"correction.iterations", "", "solver iterations (Jacobian evaluations); 1 for the linear step", kWithMeasured},
             c.summary.iterations);
     v.number({"correction.probeNoise", "µm", "the probe noise sigma the correction assumed", kWithMeasured}, probeNoise);

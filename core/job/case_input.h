@@ -51,6 +51,7 @@ struct CorrectionInput {
 struct PassInput {
   AxisPolynomials axes;
   Eigen::MatrixXd measured;
+  std::optional<CorrectionInput> correction;  // the options its correction was computed with
 };
 
 // Points along the wheel's radius as the case gives them (docs/case-format.md §The wheel's

@@ -148,6 +148,58 @@ Outcome<void> checkMeasured(const Eigen::MatrixXd& m, const FaceGrid& grid, cons
   return success();
 }
 
+// The correction's options from the case's `correction` (or a pass's); `name` is its field
+// ("correction", "passes[1].correction"), and every refusal names the member within it.
+Outcome<CorrectionOptions> correctionOptions(const CorrectionInput& c, int degree, const std::string& name) {
+  CorrectionOptions o;
+  if (c.method) {
+    if (*c.method == "linear") o.method = CorrectionMethod::Linear;
+    else if (*c.method == "nonlinear") o.method = CorrectionMethod::Nonlinear;
+    else return refuse(name + ".method", "must be \"nonlinear\" or \"linear\"; got \"" + *c.method + "\".");
+  }
+  if (c.probeNoise) {
+    if (!std::isfinite(*c.probeNoise)) return refuse(name + ".probeNoise", "must be a finite number.");
+    if (*c.probeNoise <= 0)
+      return refuse(name + ".probeNoise", "the probe's standard deviation must be positive; got " +
+                                                 num(*c.probeNoise) + " µm.");
+    if (*c.probeNoise > kMaxDeviation)
+      return refuse(name + ".probeNoise", "must be at most " + num(kMaxDeviation) + " µm (10 mm); got " +
+                                                 num(*c.probeNoise) + " µm.");
+    o.probeNoise = *c.probeNoise;
+  }
+  for (Axis a : kAxes) {
+    const std::optional<double>& r = c.resolution[static_cast<int>(a)];
+    if (!r) continue;
+    const std::string field = name + ".resolution." + axisName(a);
+    if (auto ok = positive(field, *r, isRotary(a) ? "deg" : "µm"); !ok) return ok.error();
+    // A step from a nanometre (a nanodegree) to a millimetre (a degree): beyond any machine, and
+    // far from where the scaled coordinates of the correction lose their digits.
+    const double least = isRotary(a) ? kLeastRotaryResolution : kLeastLinearResolution;
+    const double most = isRotary(a) ? kMostRotaryResolution : kMostLinearResolution;
+    if (*r < least || *r > most)
+      return refuse(field, "must lie between " + num(least) + " and " + num(most) + (isRotary(a) ? " deg" : " µm") +
+                               "; got " + num(*r) + (isRotary(a) ? " deg." : " µm."));
+    o.resolution.step[static_cast<int>(a)] = *r;
+  }
+  if (c.truncation) {
+    if (!(*c.truncation > 0 && *c.truncation < 1))
+      return refuse(name + ".truncation", "must lie between 0 and 1; got " + num(*c.truncation) + ".");
+    o.truncation = *c.truncation;
+  }
+  if (c.amplification) {
+    if (!(*c.amplification >= 1 && std::isfinite(*c.amplification)))
+      return refuse(name + ".amplification", "must be a finite number of at least 1; got " +
+                                                    num(*c.amplification) + ".");
+    o.amplification = *c.amplification;
+  }
+  for (const Coefficient& k : c.locked)
+    if (k.degree < 0 || k.degree > degree)
+      return refuse(name + ".locked", k.name() + " is beyond the polynomial degree " + std::to_string(degree) + ".");
+  o.locked = c.locked;
+  o.lockedAxes = c.lockedAxes;
+  return o;
+}
+
 }  // namespace
 
 Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
@@ -221,52 +273,12 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
     const std::string pass = "passes[" + std::to_string(i) + "].";
     if (auto r = checkAxes(in.passes[i].axes, in.degree, pass + "axes"); !r) return r.error();
     if (auto r = checkMeasured(in.passes[i].measured, grid, pass + "measured"); !r) return r.error();
+    if (in.passes[i].correction)
+      if (auto r = correctionOptions(*in.passes[i].correction, in.degree, pass + "correction"); !r) return r.error();
   }
-  if (in.correction.method) {
-    if (*in.correction.method == "linear") job.correction.method = CorrectionMethod::Linear;
-    else if (*in.correction.method == "nonlinear") job.correction.method = CorrectionMethod::Nonlinear;
-    else return refuse("correction.method", "must be \"nonlinear\" or \"linear\"; got \"" + *in.correction.method + "\".");
-  }
-  if (in.correction.probeNoise) {
-    if (!std::isfinite(*in.correction.probeNoise)) return refuse("correction.probeNoise", "must be a finite number.");
-    if (*in.correction.probeNoise <= 0)
-      return refuse("correction.probeNoise", "the probe's standard deviation must be positive; got " +
-                                                 num(*in.correction.probeNoise) + " µm.");
-    if (*in.correction.probeNoise > kMaxDeviation)
-      return refuse("correction.probeNoise", "must be at most " + num(kMaxDeviation) + " µm (10 mm); got " +
-                                                 num(*in.correction.probeNoise) + " µm.");
-    job.correction.probeNoise = *in.correction.probeNoise;
-  }
-  for (Axis a : kAxes) {
-    const std::optional<double>& r = in.correction.resolution[static_cast<int>(a)];
-    if (!r) continue;
-    const std::string field = std::string("correction.resolution.") + axisName(a);
-    if (auto ok = positive(field, *r, isRotary(a) ? "deg" : "µm"); !ok) return ok.error();
-    // A step from a nanometre (a nanodegree) to a millimetre (a degree): beyond any machine, and
-    // far from where the scaled coordinates of the correction lose their digits.
-    const double least = isRotary(a) ? kLeastRotaryResolution : kLeastLinearResolution;
-    const double most = isRotary(a) ? kMostRotaryResolution : kMostLinearResolution;
-    if (*r < least || *r > most)
-      return refuse(field, "must lie between " + num(least) + " and " + num(most) + (isRotary(a) ? " deg" : " µm") +
-                               "; got " + num(*r) + (isRotary(a) ? " deg." : " µm."));
-    job.correction.resolution.step[static_cast<int>(a)] = *r;
-  }
-  if (in.correction.truncation) {
-    if (!(*in.correction.truncation > 0 && *in.correction.truncation < 1))
-      return refuse("correction.truncation", "must lie between 0 and 1; got " + num(*in.correction.truncation) + ".");
-    job.correction.truncation = *in.correction.truncation;
-  }
-  if (in.correction.amplification) {
-    if (!(*in.correction.amplification >= 1 && std::isfinite(*in.correction.amplification)))
-      return refuse("correction.amplification", "must be a finite number of at least 1; got " +
-                                                    num(*in.correction.amplification) + ".");
-    job.correction.amplification = *in.correction.amplification;
-  }
-  for (const Coefficient& c : in.correction.locked)
-    if (c.degree < 0 || c.degree > in.degree)
-      return refuse("correction.locked", c.name() + " is beyond the polynomial degree " + std::to_string(in.degree) + ".");
-  job.correction.locked = in.correction.locked;
-  job.correction.lockedAxes = in.correction.lockedAxes;
+  auto options = correctionOptions(in.correction, in.degree, "correction");
+  if (!options) return options.error();
+  job.correction = *options;
   return job;
 }
 

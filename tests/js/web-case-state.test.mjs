@@ -86,7 +86,8 @@ test('what loading another case would replace, in words', () => {
 
 // The grinding passes (docs/case-format.md, "passes"): saved, loaded, read by the calculator.
 const grid = (v) => Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (_, j) => v + i - j / 8));
-const history = [{ axes, measured: grid(1.25) }, { axes: { ...axes, Y: [39.31, 0, 0, 0, 1e-6] }, measured: grid(-0.5) }];
+const history = [{ axes, measured: grid(1.25) },
+  { axes: { ...axes, Y: [39.31, 0, 0, 0, 1e-6] }, measured: grid(-0.5), correction: { probeNoise: 1, resolution: { A: 0.001 }, lockedAxes: ['B'], locked: [] } }];
 
 test('the grinding passes are saved and loaded with the case, and the calculator reads them', async () => {
   const state = stateWith({ passes: structuredClone(history), axes, measured: grid(0.1) });
@@ -115,4 +116,8 @@ test('a history that does not fit its grid is refused by the calculator, naming 
   bad[1].measured = grid(0);
   bad[0].axes = { ...axes, B: [0.22] };
   assert.throws(() => hobsharp.evaluate({ ...paper, passes: bad }), (e) => e.field === 'passes[0].axes.B');
+  bad[0].axes = axes;
+  bad[1].correction.probeNoise = -1;
+  assert.throws(() => hobsharp.evaluate({ ...paper, passes: bad }),
+    (e) => e.field === 'passes[1].correction.probeNoise' && /must be positive/.test(e.message));
 });

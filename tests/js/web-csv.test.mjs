@@ -1,7 +1,8 @@
 // Measured grids as CSV (web/src/io/csv.js): what the paste box and the upload accept and refuse.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { MAX_MEASURED_BYTES, gridToCsv, measuredText, parseMeasuredCsv } from '../../web/src/io/csv.js';
+import { MAX_MEASURED_BYTES, gridToCsv, measuredText } from '../../web/src/io/csv.js';
+import { parseMeasuredCsv } from '../../web/src/io/measured-import.js';
 import { nestingDepth } from '../../web/src/io/nesting.js';
 
 const grid = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (_, j) => Math.round((i - 2) * (j - 4) * 1000) / 1000 + 0.125));
@@ -22,9 +23,9 @@ test('a grid of the wrong shape is refused, naming rows and columns', () => {
 
 test('a cell that is not a number is named by row and column', () => {
   const text = gridToCsv(grid).split('\n').map((l, i) => (i === 2 ? l.replace(/^([^,]+,[^,]+,)[^,]+/, '$1 x') : l)).join('\n');
-  assert.throws(() => parseMeasuredCsv(text, 5, 9), /Row 3, column 3: "x" is not a number/);
-  assert.throws(() => parseMeasuredCsv('1,NaN', 1, 2), /Row 1, column 2: "NaN"/);
-  assert.throws(() => parseMeasuredCsv('1,1e999', 1, 2), /Row 1, column 2: "1e999"/);
+  assert.throws(() => parseMeasuredCsv(text, 5, 9), /Line 3, column 3: "x" is not a number/);
+  assert.throws(() => parseMeasuredCsv('1,NaN', 1, 2), /Line 1, column 2: "NaN"/);
+  assert.throws(() => parseMeasuredCsv('1,1e999', 1, 2), /Line 1, column 2: "1e999"/);
 });
 
 test('empty or oversized text is refused', () => {

@@ -22,17 +22,21 @@ test('"Use as next run" keeps the pass under way and runs the proposed axes, wit
   const measured = [[1, 2], [3, 4]];
   const first = computed({ measured });
   const { inputs } = nextRunInputs(first);
-  assert.deepEqual(inputs.passes, [{ axes: nominal, measured }], 'the nominal axes ran in the first pass');
+  const options = { lockedAxes: [], locked: [] };  // the correction's options in use: none beyond the defaults
+  assert.deepEqual(inputs.passes, [{ axes: nominal, measured, correction: options }], 'the nominal axes ran in the first pass');
   assert.deepEqual(inputs.axes, proposed);
   assert.equal(inputs.measured, null);
   inputs.passes[0].measured[0][0] = 99;
   assert.equal(measured[0][0], 1, 'the history holds its own copy');
   // The second pass ran the proposed axes; its pass is kept after the first.
-  const second = computed({ passes: nextRunInputs(first).inputs.passes, axes: proposed, measured: [[0.1, 0], [0, 0]] },
+  const second = computed({ passes: nextRunInputs(first).inputs.passes, axes: proposed, measured: [[0.1, 0], [0, 0]],
+    tuning: { probeNoise: 1, method: 'linear' } },
     { axes: nominal, topography, correction: { ...correction, axes: nominal } });
   const next = nextRunInputs(second).inputs;
   assert.equal(next.passes.length, 2);
-  assert.deepEqual(next.passes[1], { axes: proposed, measured: [[0.1, 0], [0, 0]] });
+  assert.deepEqual(next.passes[1], { axes: proposed, measured: [[0.1, 0], [0, 0]],
+    correction: { probeNoise: 1, method: 'linear', lockedAxes: [], locked: [] } }, 'each pass keeps the options of its own correction');
+  assert.deepEqual(next.passes[0].correction, options);
   assert.deepEqual(next.axes, nominal);
 });
 
@@ -46,7 +50,7 @@ test('"Use as next run" says why it cannot be done: no grid, an older result, no
   assert.match(nextRunInputs(Object.assign(initialState(), { measured: [[1]] })).why, /Wait/);
 });
 
-test("a kept pass's case: the form with its axes, its grid and the correction's options now", () => {
+test("a kept pass's case: the form with its axes, its grid and its own correction's options", () => {
   const state = computed({ axes: proposed, measured: [[9]], locked: ['B a2'], tuning: { truncation: 1e-5 } });
   const c = passCase(state, { axes: nominal, measured: [[1, 2]] });
   assert.deepEqual(c.axes, nominal);
@@ -54,6 +58,9 @@ test("a kept pass's case: the form with its axes, its grid and the correction's 
   assert.deepEqual(c.correction, { truncation: 1e-5, lockedAxes: [], locked: ['B a2'] });
   assert.equal(c.hob.gashLead, paper.hob.gashLead);
   assert.equal('passes' in c, false);
+  // A pass that kept its options is computed with them, whatever the options now.
+  const kept = { probeNoise: 1e-4, method: 'linear', resolution: { B: 0.001 }, lockedAxes: ['A'], locked: [] };
+  assert.deepEqual(passCase(state, { axes: nominal, measured: [[1, 2]], correction: kept }).correction, kept);
 });
 
 test('figures: measured, predicted next and simulated; nothing that is not finite', () => {

@@ -9,6 +9,9 @@ export const AXIS_UNIT = {};             // axis -> 'mm' or 'rad'
 export const DEGREE = {};                // {min, max, default}
 // {min, max, radial, axial}: lines in each direction; a grid has at least its two ends.
 export const GRID = { min: 2 };
+// The correction's options: {methods, defaultMethod, probeNoise: {default, max, unit},
+// resolution: {X: {default, min, max, unit}, ...}}.
+export const CORRECTION = {};
 let rotary = new Set();
 export const isRotary = (axis) => rotary.has(axis);
 
@@ -21,7 +24,7 @@ export const AXIS_NAMES = {};
 
 // limits: what Module.limits() returns (README "The JS API"). Refuses a shape it cannot use.
 export function setModuleLimits(limits) {
-  const { format, maxGridLines, degree, defaultGrid, axes } = limits || {};
+  const { format, maxGridLines, degree, defaultGrid, axes, correction } = limits || {};
   if (typeof format !== 'string' || !(maxGridLines >= GRID.min) || !degree || !defaultGrid || !Array.isArray(axes)) {
     throw new Error('The calculator gave no limits the page can use.');
   }
@@ -35,6 +38,8 @@ export function setModuleLimits(limits) {
     AXIS_NAMES[a.name] = AXIS_WORDS[a.name] || a.name;
   }
   rotary = new Set(axes.filter((a) => a.kind === 'rotary').map((a) => a.name));
+  for (const key of Object.keys(CORRECTION)) delete CORRECTION[key];
+  if (correction) Object.assign(CORRECTION, structuredClone(correction));
 }
 
 const SUPERSCRIPT = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];

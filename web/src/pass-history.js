@@ -1,5 +1,5 @@
-// The grinding passes (pure, with Node tests). A pass is the axes the machine ran and the face
-// measured after it. The history keeps the passes done (state.passes, oldest first); the pass under
+// The grinding passes (pure, with Node tests). A pass is the axes the machine ran, the face
+// measured after it, and the options its correction was computed with. The history keeps the passes done (state.passes, oldest first); the pass under
 // way is the run axes (state.axes, or the nominal axes) with the measured grid, once there is one.
 // "Use as next run" keeps the pass under way and makes the proposed axes the run of the next.
 //
@@ -34,14 +34,17 @@ export function nextRunInputs(state) {
   if (!resultIsCurrent(state)) return { why: 'Wait for the correction of the grid now in use.' };
   const c = state.result.correction;
   if (!c || !c.axes) return { why: 'There is no correction to run.' };
-  const pass = { axes: structuredClone(state.axes || state.result.axes), measured: structuredClone(state.measured) };
+  const pass = { axes: structuredClone(state.axes || state.result.axes), measured: structuredClone(state.measured),
+    correction: structuredClone(caseOf(state).correction) };
   return { inputs: { passes: [...state.passes, pass], axes: structuredClone(c.axes), measured: null } };
 }
 
-// The case that gives a kept pass's figures: the form, with the pass's axes and grid and the
-// correction's options in use now.
+// The case that gives a kept pass's figures: the form, with the pass's axes and grid, and the
+// correction's options the pass kept (a pass from an older case without them: those in use now).
 export function passCase(state, pass) {
-  return caseOf({ ...state, axes: pass.axes, measured: pass.measured });
+  const c = caseOf({ ...state, axes: pass.axes, measured: pass.measured });
+  if (pass.correction) c.correction = structuredClone(pass.correction);
+  return c;
 }
 
 // The rows of the history table and plot. kept: per kept pass, its figures (resultFigures of its

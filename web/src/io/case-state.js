@@ -69,7 +69,8 @@ export function inputsFromCase(c) {
     formCase, measured: measured === undefined ? null : measured,
     locked: [...locked], lockedAxes: [...lockedAxes], tuning: { ...tuning },
     axes: axes === undefined ? null : structuredClone(axes), offsets,
-    passes: passes.map(({ axes: a, measured: m }) => ({ axes: structuredClone(a), measured: structuredClone(m) })),
+    passes: passes.map(({ axes: a, measured: m, correction: o }) => ({ axes: structuredClone(a), measured: structuredClone(m),
+      ...(o === undefined ? {} : { correction: structuredClone(o) }) })),
   };
 }
 

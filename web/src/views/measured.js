@@ -2,12 +2,16 @@
 // grid's shape, and the correction's verdict. A grid given here is measured: the correction assumes
 // the probe's noise (web/src/probe-noise.js).
 import { verdictText } from '../words.js';
-import { MAX_MEASURED_BYTES, measuredText, parseMeasuredCsv, tooLargeMessage } from '../io/csv.js';
+import { MAX_MEASURED_BYTES, measuredText, tooLargeMessage } from '../io/csv.js';
+import { ORIENT_OPTIONS, checkShape, orient, readMeasured } from '../io/measured-import.js';
+import { escapeHtml, fixed } from '../format.js';
 import { chosenFileText } from '../io/files.js';
 import { tuningFor } from '../probe-noise.js';
+import { OPTION_FIELD } from '../correction-options.js';
 
 const $ = (selector) => document.querySelector(selector);
-const isMeasuredField = (field) => /^(measured|correction)/.test(field || '');
+// The grid's and the locks' refusals; the correction's options show theirs at their inputs.
+const isMeasuredField = (field) => /^(measured|correction)/.test(field || '') && !OPTION_FIELD.test(field);
 
 function renderVerdict(r) {
   const v = $('#verdict');
@@ -37,11 +41,60 @@ export function mountMeasured(store) {
   const show = (text) => { message.textContent = text; message.hidden = false; };
   const refuse = (text) => store.refuse({ field: 'measured', message: text });
 
+  const options = () => Object.fromEntries(ORIENT_OPTIONS.map((o) => [o, $(`[data-orient="${o}"]`).checked]));
+  // The grid the text gives with the options ticked, checked against the grid now; throws.
+  const gridOf = (text, t) => {
+    const read = readMeasured(text, t);
+    const g = orient(read.values, options());
+    checkShape(g, t.r.length, t.x.length);
+    return { read, grid: g };
+  };
+  // The preview: what was read and recognised, what looks wrong, the grid as it would be used.
+  let previews = 0;
+  const preview = () => {
+    const r = store.state.result, text = box.value;
+    $('#measured-preview').dataset.previews = String(++previews);  // for the tests: a preview was made
+    $('#measured-preview').hidden = !r || text.trim() === '';
+    if ($('#measured-preview').hidden) return;
+    const t = r.topography;
+    let read = null, g = null, problem = '';
+    try {
+      read = readMeasured(text, t);
+      g = orient(read.values, options());
+      checkShape(g, t.r.length, t.x.length);
+    } catch (e) {
+      problem = e.message;
+    }
+    const ticked = options();
+    const size = g ? `${g.length} × ${(g[0] || []).length} values` : '';
+    $('#measured-read').textContent = read
+      ? `Read ${size}${read.notes.length ? `, with ${read.notes.join(', ')}` : ''}.${problem ? '' : ` Preview (µm, as it would be used${
+        ticked.mm ? ', the values in mm multiplied by 1000' : ''}):`}`
+      : '';
+    // A warning the ticked option answers is not repeated: the preview says what the option does.
+    const warnings = [...(read ? read.warnings.filter((w) => !ticked[w.kind]).map((w) => w.text) : []), ...(problem ? [problem] : [])];
+    $('#measured-warning').hidden = !warnings.length;
+    $('#measured-warning').textContent = warnings.join(' ');
+    const table = $('#measured-preview-table');
+    table.hidden = Boolean(problem);
+    if (problem) return;
+    const shown = (n) => Math.min(n, 12);
+    const head = `<tr><th>r \\ x (mm)</th>${t.x.slice(0, shown(t.x.length)).map((x) => `<th>${fixed(x, 1)}</th>`).join('')}${t.x.length > 12 ? '<th>…</th>' : ''}</tr>`;
+    const body = g.slice(0, shown(g.length)).map((row, i) => `<tr><th>${fixed(t.r[i], 2)}</th>${row.slice(0, shown(row.length))
+      .map((v) => `<td>${escapeHtml(fixed(v, 3))}</td>`).join('')}${row.length > 12 ? '<td>…</td>' : ''}</tr>`).join('');
+    table.innerHTML = `<thead>${head}</thead><tbody>${body}${g.length > 12 ? '<tr><th>…</th></tr>' : ''}</tbody>`;
+  };
+  let pending = null;
+  const previewSoon = () => { clearTimeout(pending); pending = setTimeout(preview, 150); };
+  box.addEventListener('input', previewSoon);
+  $('#measured-preview').addEventListener('change', preview);
+  store.on('result', () => { if (!$('#measured-preview').hidden || box.value.trim() !== '') preview(); });
+
   const use = (text) => {
     const r = store.state.result;
     if (!r) { refuse('Compute a setup first, so that the grid is known.'); return; }
     try {
-      const measured = parseMeasuredCsv(text, r.topography.r.length, r.topography.x.length);
+      const measured = gridOf(text, r.topography).grid;
       message.hidden = true;
       store.setInputs({ measured, tuning: tuningFor(store.state.tuning, false) }, { source: 'measured', force: true });
       store.emit('commit');
@@ -55,6 +108,7 @@ export function mountMeasured(store) {
   $('#clear-measured').addEventListener('click', () => {
     box.value = '';
     message.hidden = true;
+    preview();
     store.setInputs({ measured: null }, { source: 'measured', force: true });
     store.emit('commit');
   });
@@ -68,6 +122,7 @@ export function mountMeasured(store) {
     }
     if (!file) return;
     box.value = file.text;
+    preview();
     use(file.text);
   });
 
@@ -89,6 +144,6 @@ export function mountMeasured(store) {
   });
   return {
     // The text of a measured grid that came with a loaded case (set aside or used).
-    setText(text) { box.value = text; message.hidden = true; },
+    setText(text) { box.value = text; message.hidden = true; previewSoon(); },
   };
 }

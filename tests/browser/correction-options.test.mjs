@@ -1,0 +1,91 @@
+// The correction's options at the measured grid (issue 10): the method, the probe noise and the
+// machine's resolution are inputs; the page declares a simulated grid noise-free by itself; a bad
+// option is shown at its input and the grid stays in use; a kept pass keeps its own options.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
+import { afterError, afterResult, base, openPage, shots, useBrowser } from './support.mjs';
+
+useBrowser();
+const desk = { viewport: { width: 1366, height: 900 } };
+
+async function setOption(page, selector, value) {
+  if (selector === '#correction-method') return afterResult(page, () => page.selectOption(selector, value));
+  return afterResult(page, async () => { await page.fill(selector, value); await page.dispatchEvent(selector, 'change'); });
+}
+const uncertainty = async (page, axis) => Number((await page.textContent(`#identified-error tr[data-axis="${axis}"] [data-col="uncertainty"]`)).replace(/^± /, '').split(' ')[0]);
+const predictedRow = (page, pass) => page.$eval(`#pass-table tr[data-pass="${pass}"]`, (r) => [...r.children].map((c) => c.textContent.trim()).slice(4, 7).join(' | '));
+
+test('the options are inputs with the defaults shown; a simulated grid is declared noise-free by the page', async () => {
+  const page = await openPage(base, desk);
+  assert.equal(await page.inputValue('#correction-method'), 'nonlinear');
+  assert.equal(await page.getAttribute('#probe-noise', 'placeholder'), '0.5');
+  assert.equal(await page.getAttribute('[data-resolution="X"]', 'placeholder'), '0.1');
+  assert.equal(await page.getAttribute('[data-resolution="B"]', 'placeholder'), '0.0001');
+  assert.equal(await page.textContent('[data-resolution="B"] + .unit'), 'deg');
+  // A what-if grid: simulated, so noise-free (1e-4 µm), said beside the input.
+  await page.fill('[data-offset="Z 0"]', '-0.01');
+  await page.dispatchEvent('[data-offset="Z 0"]', 'change');
+  await afterResult(page, () => page.click('#generate-error'));
+  assert.equal(await page.inputValue('#probe-noise'), '0.0001');
+  assert.match(await page.textContent('#probe-noise-note'), /simulated what-if: declared noise-free/);
+  // The same grid pasted is measured: the default noise again.
+  const csv = await page.inputValue('#measured-csv');
+  await afterResult(page, () => page.click('#clear-measured'));
+  await page.fill('#measured-csv', csv);
+  await afterResult(page, () => page.click('#use-measured'));
+  assert.equal(await page.inputValue('#probe-noise'), '');
+  assert.match(await page.textContent('#probe-noise-note'), /standard deviation/);
+
+  // The standard uncertainty is sigma times the axis change per µm of noise (the precision
+  // demand's last column): at the default 0.5 µm, then at 2 µm as typed.
+  for (const sigma of [0.5, 2]) {
+    if (sigma !== 0.5) await setOption(page, '#probe-noise', String(sigma));
+    for (const axis of ['Y', 'B']) {
+      const perNoise = Number((await page.textContent(`#precision-demand tr[data-axis="${axis}"] td:last-child`)).split(' ')[0]);
+      const u = await uncertainty(page, axis);
+      assert.ok(Math.abs(u - sigma * perNoise) <= 2e-3 * u + 1e-9, `${axis}: ± ${u} against ${sigma} × ${perNoise}`);
+    }
+  }
+  // A coarser A resolution rounds the axes to other values.
+  const rounded = await page.textContent('[data-rounded-axis="A"]');
+  await setOption(page, '[data-resolution="A"]', '0.01');
+  assert.notEqual(await page.textContent('[data-rounded-axis="A"]'), rounded);
+  // The paper's linear step.
+  await setOption(page, '#correction-method', 'linear');
+  assert.match(await page.textContent('#solver-status'), /^Solver \(one linear step \(Eq\. 17\)\)/);
+  await page.locator('#correction-options').screenshot({ path: path.join(shots, 'correction-options.png') });
+
+  // A bad option: shown at its input; the grid stays in use, and the fix clears it.
+  await afterError(page, async () => { await page.fill('#probe-noise', '-1'); await page.dispatchEvent('#probe-noise', 'change'); });
+  assert.match(await page.textContent('#correction-options-error'), /^correction\.probeNoise: the probe's standard deviation must be positive; got -1 µm\.$/);
+  assert.equal(await page.getAttribute('#probe-noise', 'aria-invalid'), 'true');
+  assert.equal(await page.isHidden('#measured-error'), true, 'not the grid\'s error');
+  assert.equal(await page.isHidden('#notice'), true, 'nothing set aside');
+  await page.locator('#measured-section').screenshot({ path: path.join(shots, 'correction-options-refused.png') });
+  await setOption(page, '#probe-noise', '1');
+  assert.equal(await page.isHidden('#correction-options-error'), true);
+  assert.equal(await page.getAttribute('#probe-noise', 'aria-invalid'), null);
+  assert.match(await page.textContent('#verdict'), /.+/);
+
+  // Kept with its pass: pass 1 corrected by the linear step. Pass 2 measured, then the method
+  // switched to the nonlinear one: that changes the correction of pass 2, not what pass 1's
+  // correction predicted for it.
+  await afterResult(page, () => page.click('#next-run'));
+  await afterResult(page, () => page.click('#generate-error'));
+  const settled = () => page.waitForFunction(() => document.querySelector('#pass-table tr[data-pass="3"]') &&
+    !/computing/.test(document.querySelector('#pass-table').textContent), null, { timeout: 30000 });
+  await settled();
+  const before = await predictedRow(page, 2), next = await predictedRow(page, 3);
+  await setOption(page, '#correction-method', 'nonlinear');
+  await settled();
+  assert.equal(await predictedRow(page, 2), before);
+  assert.notEqual(await predictedRow(page, 3), next, 'the pass under way is corrected with the options now');
+  await page.locator('#passes-section').screenshot({ path: path.join(shots, 'correction-options-passes.png') });
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-case')]);
+  const saved = JSON.parse(readFileSync(await download.path(), 'utf8'));
+  assert.deepEqual(saved.passes[0].correction, { probeNoise: 1, resolution: { A: 0.01 }, method: 'linear', lockedAxes: [], locked: [] });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
