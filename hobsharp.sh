@@ -13,7 +13,7 @@ BUILD_WASM=$ROOT/build/wasm
 SITE=$BUILD_WASM/site
 
 APT_PACKAGES=(cmake g++ make libeigen3-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev python3
-              emscripten chromium
+              emscripten chromium poppler-utils
               clang-14 libclang-rt-14-dev)  # the sanitizer build and libFuzzer (in libclang-rt-14-dev)
 
 # The sanitizer build: Debian's clang with ASan + UBSan, the native tests and the case fuzzer.

@@ -135,3 +135,38 @@ TEST(Faces, StraightGash) {
 
 }  // namespace
 }  // namespace hobsharp::test
+
+namespace hobsharp::test {
+namespace {
+
+// The headline figures of a face (issue 11): the sum of squares grows with the grid's density,
+// the rms and the peak-to-valley do not. The same machine error on 5 x 9 and on 51 x 51.
+TEST(Topography, RmsAndPeakToValleyDoNotGrowWithTheGrid) {
+  Topography t[2];
+  int k = 0;
+  for (int lines : {0, 51}) {
+    CaseInput in = paperCase();
+    if (lines) {
+      in.grid = GridInput{};
+      in.grid.radial = lines;
+      in.grid.axial = lines;
+    }
+    const SharpeningJob job = jobOf(in);
+    AxisPolynomials axes = job.nominalAxes;
+    axes[Axis::Z].a[0] += 0.01;  // mm
+    axes[Axis::B].a[1] += 1e-4;  // rad per rad
+    t[k] = topographyFor(job, axes);
+    const Eigen::MatrixXd& n = t[k].normal;
+    EXPECT_DOUBLE_EQ(t[k].rms, std::sqrt(n.squaredNorm() / static_cast<double>(n.size())));
+    EXPECT_DOUBLE_EQ(t[k].peakToValley, n.maxCoeff() - n.minCoeff());
+    ++k;
+  }
+  EXPECT_GT(t[1].sse / t[0].sse, 30.0);  // 2601 points against 45
+  EXPECT_NEAR(t[1].rms / t[0].rms, 1.0, 0.1);
+  EXPECT_NEAR(t[1].peakToValley / t[0].peakToValley, 1.0, 1e-3);  // the extremes lie at the face's corners
+  std::printf("[ figures  ] 5 x 9: SSE %.1f µm², rms %.3f µm, PV %.3f µm; 51 x 51: SSE %.1f µm², rms %.3f µm, PV %.3f µm\n",
+              t[0].sse, t[0].rms, t[0].peakToValley, t[1].sse, t[1].rms, t[1].peakToValley);
+}
+
+}  // namespace
+}  // namespace hobsharp::test

@@ -35,6 +35,8 @@ Topography topographyFromNormal(const GroundFace& face, const Eigen::MatrixXd& n
   t.thickness = atCentre(normal) * thicknessFactor(face);
   t.sse = normal.squaredNorm();
   t.max = normal.cwiseAbs().maxCoeff();
+  t.rms = std::sqrt(t.sse / static_cast<double>(normal.size()));
+  t.peakToValley = normal.maxCoeff() - normal.minCoeff();
   return t;
 }
 

@@ -16,8 +16,10 @@ struct Topography {
   Eigen::MatrixXd normal;    // rows root to tip, columns xMin to xMax, µm
   Eigen::MatrixXd circular;  // µm of arc at the mean radius
   double thickness = 0;      // µm
-  double sse = 0;            // sum of squares of `normal`, µm^2
+  double sse = 0;            // sum of squares of `normal`, µm^2 (the paper's figure; grows with the grid)
   double max = 0;            // largest |normal|, µm
+  double rms = 0;            // root mean square of `normal`, µm: comparable between grids
+  double peakToValley = 0;   // largest minus smallest `normal`, µm
 };
 
 // The factor that turns a normal deviation at grid point (i, j) into the circular view.

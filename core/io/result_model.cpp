@@ -258,6 +258,8 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
   v.number({"topography.thickness", "µm", "thickness error at the mean point"}, t.thickness);
   v.number({"topography.sse", "µm²", "sum of squares of the normal deviation"}, t.sse);
   v.number({"topography.max", "µm", "largest absolute normal deviation"}, t.max);
+  v.number({"topography.rms", "µm", "root mean square of the normal deviation: comparable between grids of any density"}, t.rms);
+  v.number({"topography.peakToValley", "µm", "largest minus smallest normal deviation"}, t.peakToValley);
 
   const SensitivityMatrix& S = e.sensitivities;
   v.texts({"sensitivities.coefficients", "", "\"X a0\" .. \"B an\", axis by axis"}, names(S.coefficients));
@@ -325,6 +327,12 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     v.number({"correction.sseAfter", "µm²", "sum of squares of the face predicted after the pass (re-simulated)", kWithMeasured}, c.after.sse);
     v.number({"correction.maxBefore", "µm", "largest absolute deviation, measured", kWithMeasured}, c.before.max);
     v.number({"correction.maxAfter", "µm", "largest absolute deviation predicted after the pass", kWithMeasured}, c.after.max);
+    v.number({"correction.rmsBefore", "µm", "root mean square, measured", kWithMeasured}, c.before.rms);
+    v.number({"correction.rmsAfter", "µm", "root mean square predicted after the pass", kWithMeasured}, c.after.rms);
+    v.number({"correction.peakToValleyBefore", "µm", "largest minus smallest deviation, measured", kWithMeasured},
+             c.before.peakToValley);
+    v.number({"correction.peakToValleyAfter", "µm", "largest minus smallest deviation predicted after the pass", kWithMeasured},
+             c.after.peakToValley);
     v.number({"correction.thicknessBefore", "µm", "thickness error at the mean point, measured", kWithMeasured},
              c.before.thickness);
     v.number({"correction.thicknessAfter", "µm", "thickness error predicted after the pass", kWithMeasured}, c.after.thickness);

@@ -24,7 +24,7 @@ async function save(page) {
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-case')]);
   return JSON.parse(readFileSync(await download.path(), 'utf8'));
 }
-const sse = async (page) => Number(/Sum of squares ([\d.e+-]+)/.exec(await page.textContent('#figures-before'))[1]);
+const sse = async (page) => Number(/sum of squares ([\d.e+-]+)/.exec(await page.textContent('#figures-before'))[1]);
 
 test('a case\'s run axes are used, shown, saved, and can be cleared', async () => {
   const page = await openPage(base, desk);

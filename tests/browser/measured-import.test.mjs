@@ -10,13 +10,17 @@ import { afterResult, base, openPage, root, shots, useBrowser } from './support.
 useBrowser();
 const desk = { viewport: { width: 1366, height: 900 } };
 
-// The grid block of the page's results CSV, written again as a German spreadsheet saves it.
+// The grid block of the page's results CSV in its German style (semicolons, decimal commas), as
+// a spreadsheet saves it again (CRLF).
 async function exportedGerman(page) {
+  await page.selectOption('#csv-style', 'semicolon');
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-results')]);
-  const lines = readFileSync(await download.path(), 'utf8').split('\n');
+  assert.match(download.suggestedFilename(), /^hobsharp-m\d+(\.\d+)?-helical-right-\d{4}-\d\d-\d\d\.csv$/);
+  const text = readFileSync(await download.path(), 'utf8');
+  assert.ok(text.startsWith('\uFEFF'), 'a BOM');
+  const lines = text.split('\n');
   const start = lines.findIndex((l) => l.startsWith('# simulated normal deviation'));
-  const block = lines.slice(start + 1, lines.indexOf('', start));
-  return block.map((l) => l.split(',').map((c) => c.replace('.', ',')).join(';')).join('\r\n');
+  return lines.slice(start + 1, lines.indexOf('', start)).join('\r\n');
 }
 const previewValues = (page) => page.$$eval('#measured-preview-table tbody tr', (rows) => rows.map((r) => [...r.querySelectorAll('td')].map((c) => Number(c.textContent))));
 const typed = async (page, text) => {

@@ -134,7 +134,7 @@ test('a bad CSV is refused with a message and the old results stay', async () =>
   };
   const messages = {
     'wrong-shape.csv': /5 radial lines .* 2 rows/,
-    'not-numbers.csv': /Row 3, column 3: "x" is not a number/,
+    'not-numbers.csv': /Line 3, column 3: "x" is not a number/,
     'empty.csv': /empty/,
     'huge.csv': /is 10\.\d MB/,
   };

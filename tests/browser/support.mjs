@@ -111,6 +111,12 @@ async function stats(page, png, boxes, border) {
   }, [png.toString('base64'), boxes, border]);
 }
 
+// The same figures for a whole PNG (a printed page rendered): {colours, inked, edge}.
+export async function pngStats(page, png) {
+  const [s] = await stats(page, png, null, 0);
+  return s;
+}
+
 // How many distinct colours a rendered element shows: a plot that draws nothing has a handful.
 export async function colours(page, selector) {
   const [s] = await stats(page, await page.locator(selector).screenshot(), null, 0);

@@ -6,7 +6,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { afterResult, after_, openPage, shots, useBrowser } from './support.mjs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
-import { fixed, fmt } from '../../web/src/format.js';
+import { fixed, fmt, signed } from '../../web/src/format.js';
 import { gridFigures } from '../../web/src/figures.js';
 
 useBrowser();
@@ -121,7 +121,7 @@ test("the words: no −0.000, no hand for a straight gash, the status, the verdi
   const page = await openPage();
   const thickness = hobsharp.evaluate(JSON.parse(paper)).topography.thickness;
   assert.ok(thickness < 0 && thickness > -0.0005, `the paper's thickness error ${thickness} rounds to -0.000`);
-  assert.match(await page.textContent('#figures-before'), /thickness error 0\.000 µm$/);
+  assert.match(await page.textContent('#figures-before'), /thickness error 0\.000 µm · /);
   assert.match(await page.textContent('#status'), /^Updated — (\d+|under 1) ms$/);
   assert.match(await page.textContent('[data-derived="settingAngle"]'), /^(used: 12\.626°|auto: 12\.62\d\d° \(the gash helix angle, right hand\))$/);
 
@@ -149,11 +149,13 @@ test('the circular view shows the figures of the circular deviation', async () =
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-case')]);
   const t = hobsharp.evaluate(JSON.parse(readFileSync(await download.path(), 'utf8'))).topography;
   const normal = await page.textContent('#figures-before');
-  assert.match(normal, new RegExp(`^Sum of squares ${fmt(t.sse, 6)} µm² · largest \\|deviation\\| ${fixed(t.max, 3)} µm`));
+  assert.equal(normal, `rms ${fixed(t.rms, 3)} µm · peak-to-valley ${fixed(t.peakToValley, 3)} µm · largest |deviation| ${fixed(t.max, 3)} µm · ` +
+    `thickness error ${signed(t.thickness, 3)} µm · sum of squares ${fmt(t.sse, 6)} µm²`);
   await page.check('input[name="view"][value="circular"]');
   const c = gridFigures(t.circular);
   assert.notEqual(fmt(c.sse, 6), fmt(t.sse, 6));
   assert.equal(await page.textContent('#figures-before'),
-    `Sum of squares ${fmt(c.sse, 6)} µm² · largest |deviation| ${fixed(c.max, 3)} µm · thickness error ${fixed(t.thickness, 3)} µm`);
+    `rms ${fixed(c.rms, 3)} µm · peak-to-valley ${fixed(c.peakToValley, 3)} µm · largest |deviation| ${fixed(c.max, 3)} µm · ` +
+    `thickness error ${signed(t.thickness, 3)} µm · sum of squares ${fmt(c.sse, 6)} µm²`);
   await page.context().close();
 });

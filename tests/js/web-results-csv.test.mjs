@@ -4,7 +4,8 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
-import { profileCsv, resultsCsv } from '../../web/src/io/results-csv.js';
+import { profileCsv, resultsCsv, resultsFileName } from '../../web/src/io/results-csv.js';
+import { readMeasured } from '../../web/src/io/measured-import.js';
 import { setModuleLimits } from '../../web/src/limits.js';
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
@@ -14,30 +15,57 @@ const numbers = (line) => line.split(',').slice(1).map(Number);
 
 test('the results CSV holds every coefficient with its unit, and each grid row by row', () => {
   const r = hobsharp.evaluate(paper);
-  const lines = resultsCsv(r).split('\n');
-  assert.equal(lines[2], 'coefficient,unit,nominal,corrected');
+  const text = resultsCsv(r);
+  assert.ok(text.startsWith('\uFEFF# HobSharp results'), 'a BOM, so that µ and ² survive spreadsheet programs');
+  const lines = text.split('\n');
+  assert.ok(lines.includes('coefficient,unit,nominal,run,corrected,change'));
   assert.equal(lines.filter((l) => /^[XYZAB] a\d,/.test(l)).length, 25);
-  assert.ok(lines.includes(`X a1,mm/rad,${r.axes.X[1]},`));
-  assert.ok(lines.includes(`B a2,rad/rad²,${r.axes.B[2]},`));
+  assert.ok(lines.includes(`X a1,mm/rad,${r.axes.X[1]},${r.axes.X[1]},,`));
+  assert.ok(lines.includes(`B a2,rad/rad²,${r.axes.B[2]},${r.axes.B[2]},,`));
   const header = lines.indexOf('# simulated normal deviation (µm) for the axes run; rows r (mm) root to tip, columns x (mm) along the gash');
   assert.deepEqual(numbers(lines[header + 1]), r.topography.x);
   for (let i = 0; i < 5; i++) {
     assert.equal(Number(lines[header + 2 + i].split(',')[0]), r.topography.r[i]);
     assert.deepEqual(numbers(lines[header + 2 + i]), r.topography.normal[i]);
   }
-  assert.ok(!resultsCsv(r).includes('after correction'));
+  assert.ok(!text.includes('after correction'));
+  assert.ok(lines.includes(`rms,µm,${r.topography.rms}`));
   assert.equal(lines.at(-2), `# thickness error at the mean point (µm),${r.topography.thickness}`);
 });
 
-test('with a measured grid, the corrected coefficients and the predicted grid are in it', () => {
-  const measured = Array.from({ length: 5 }, () => Array(9).fill(1));
-  const r = hobsharp.evaluate({ ...paper, measured });
-  const csv = resultsCsv(r);
-  assert.ok(csv.split('\n').includes(`Z a0,mm,${r.axes.Z[0]},${r.correction.axes.Z[0]}`));
-  const lines = csv.split('\n');
-  const at = lines.findIndex((l) => l.startsWith('# predicted normal deviation after correction'));
-  assert.ok(at > 0);
-  assert.deepEqual(numbers(lines[at + 2]), r.correction.residual[0]);
+test('a record of the job: its inputs, the measured grid, the verdict, the figures before and after, the change to type in', () => {
+  const measured = Array.from({ length: 5 }, (_, i) => Array(9).fill(1 + i / 4));
+  const nominal = hobsharp.evaluate(paper).axes;
+  const axes = { ...nominal, Y: [nominal.Y[0] + 0.002, ...nominal.Y.slice(1)] };  // the run: Y 2 µm off nominal
+  const caseObject = { ...paper, axes, measured, correction: { probeNoise: 0.5, lockedAxes: ['A'], locked: [] } };
+  const r = hobsharp.evaluate(caseObject);
+  const lines = resultsCsv(r, { caseObject, date: new Date('2026-11-23T10:00:00Z') }).split('\n');
+  assert.ok(lines.includes('# date,2026-11-23'));
+  assert.ok(lines.includes(`hob.normalModule,${paper.hob.normalModule}`));
+  assert.ok(lines.includes('correction.lockedAxes,A'));
+  assert.ok(lines.includes(`verdict,"${r.correction.verdict.replace(/"/g, '""')}"`) || lines.includes(`verdict,${r.correction.verdict}`));
+  assert.ok(lines.includes(`rms,µm,${r.correction.rmsBefore},${r.correction.rmsAfter}`));
+  assert.ok(lines.includes(`sum of squares,µm²,${r.correction.sseBefore},${r.correction.sseAfter}`));
+  assert.ok(lines.includes(`Y a0,mm,${nominal.Y[0]},${axes.Y[0]},${r.correction.axes.Y[0]},${r.correction.axes.Y[0] - axes.Y[0]}`));
+  const at = lines.findIndex((l) => l.startsWith('# measured normal deviation (µm)'));
+  for (let i = 0; i < 5; i++) assert.deepEqual(numbers(lines[at + 2 + i]), measured[i]);
+  const predicted = lines.findIndex((l) => l.startsWith('# predicted normal deviation after correction'));
+  assert.deepEqual(numbers(lines[predicted + 2]), r.correction.residual[0]);
+  assert.equal(resultsFileName(caseObject, new Date('2026-11-23T10:00:00Z')), `hobsharp-m${paper.hob.normalModule}-helical-right-2026-11-23.csv`);
+  assert.equal(resultsFileName({ hob: { normalModule: 4, gash: 'straight' } }, new Date('2026-01-02T00:00:00Z')), 'hobsharp-m4-straight-2026-01-02.csv');
+});
+
+test('semicolons with decimal commas, read back by the measured grid import', () => {
+  const measured = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (_, j) => 1.25 + i / 8 - j / 16));
+  const caseObject = { ...paper, measured };
+  const r = hobsharp.evaluate(caseObject);
+  const text = resultsCsv(r, { caseObject, style: 'semicolon' });
+  const lines = text.split('\n');
+  assert.ok(lines.some((l) => /^X a1;mm\/rad;\d+,\d+;/.test(l)), 'decimal commas');
+  assert.ok(!lines.some((l) => /^[XYZAB] a\d,/.test(l)), 'no comma separators');
+  const at = lines.findIndex((l) => l.startsWith('# measured normal deviation (µm)'));
+  const block = lines.slice(at, lines.indexOf('', at)).join('\n');
+  assert.deepEqual(readMeasured(block, r.topography).values, measured);
 });
 
 test('the wheel profile CSV has its 41 points, r, R and Z in mm', () => {

@@ -1,15 +1,19 @@
-// The figures of a deviation grid (rows of µm) as the page shows them beside its map: the sum of
-// squares and the largest absolute deviation. The result carries them for the normal deviation;
-// the circular view computes its own from its grid. A value that is not finite makes both NaN
-// (shown as a dash), never a figure that leaves it out.
+// The figures of a deviation grid (rows of µm) as the page shows them beside its map: the rms and
+// the peak-to-valley (comparable between grids), the largest absolute deviation, and the sum of
+// squares (the paper's figure). The result carries them for the normal deviation; the circular
+// view computes its own from its grid. A value that is not finite makes all NaN (shown as a
+// dash), never a figure that leaves it out.
 export function gridFigures(grid) {
-  let sse = 0, max = 0;
+  let sse = 0, max = 0, hi = -Infinity, lo = Infinity, n = 0;
   for (const row of grid) {
     for (const v of row) {
-      if (!Number.isFinite(v)) return { sse: NaN, max: NaN };
+      if (!Number.isFinite(v)) return { sse: NaN, max: NaN, rms: NaN, peakToValley: NaN };
       sse += v * v;
       max = Math.max(max, Math.abs(v));
+      hi = Math.max(hi, v);
+      lo = Math.min(lo, v);
+      n += 1;
     }
   }
-  return { sse, max };
+  return { sse, max, rms: n ? Math.sqrt(sse / n) : NaN, peakToValley: n ? hi - lo : NaN };
 }

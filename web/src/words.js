@@ -27,7 +27,11 @@ export function verdictText(c) {
     ? `; ${plural(c.amplifyingDropped, 'combination is', 'combinations are')} left unchanged, because ` +
       `${c.amplifyingDropped === 1 ? 'it' : 'they'} would need large axis moves for little gain`
     : '';
-  return `${c.verdict} Sum of squares ${fmt(c.sseBefore, 6)} → ${fmt(c.sseAfter, 4)} µm²; ` +
+  // Led by the rms, which compares between grids; the paper's sum of squares after it.
+  const squares = `sum of squares ${fmt(c.sseBefore, 6)} → ${fmt(c.sseAfter, 4)} µm²`;
+  const lead = Number.isFinite(c.rmsBefore) ? `RMS ${fixed(c.rmsBefore, 3)} → ${fixed(c.rmsAfter, 3)} µm; ${squares}`
+    : `S${squares.slice(1)}`;
+  return `${c.verdict} ${lead}; ` +
     `thickness ${signed(c.thicknessBefore, 3)} → ${signed(c.thicknessAfter, 3)} µm. ` +
     `The correction changes ${plural(c.rank, 'independent combination', 'independent combinations')} of the coefficients${dropped}.`;
 }

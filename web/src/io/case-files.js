@@ -3,7 +3,7 @@
 // the form (a measured grid, run axes, offsets, locks); Undo brings it back as well.
 import { savedCase, userData } from './case-state.js';
 import { chosenFileText, download } from './files.js';
-import { resultsCsv } from './results-csv.js';
+import { resultsCsv, resultsFileName } from './results-csv.js';
 
 const $ = (selector) => document.querySelector(selector);
 const MAX_CASE_BYTES = 40 * 1024 * 1024;
@@ -46,6 +46,9 @@ export function mountCaseFiles(store, loader) {
     }
   });
   $('#download-results').addEventListener('click', () => {
-    if (store.state.result) download('hobsharp-results.csv', resultsCsv(store.state.result), 'text/csv');
+    const { result, resultCase } = store.state;
+    if (!result) return;
+    const style = $('#csv-style').value;
+    download(resultsFileName(resultCase), resultsCsv(result, { caseObject: resultCase, style }), 'text/csv;charset=utf-8');
   });
 }

@@ -1,27 +1,87 @@
-// The results as CSV: the axis polynomials (nominal and corrected) with their units, and the
-// topography grids; the wheel profile's points for a dresser.
+// The results as CSV, as a job's record needs them: the inputs, the verdict and the figures
+// before and after, the axis polynomials (nominal, run, corrected, and the change to type in)
+// with their units, the measured grid and the topography grids; and the wheel profile's points
+// for a dresser. UTF-8 with a BOM, so that µ and ² survive spreadsheet programs; with a comma and
+// a decimal point, or a semicolon and a decimal comma (style 'semicolon') as a German
+// spreadsheet reads them.
 import { AXES, coefficientUnit } from '../limits.js';
 import { motionUnit } from '../format.js';
 
-export function resultsCsv(r) {
-  const lines = ['# HobSharp results (hobsharp-case/1)', '# axis polynomials', 'coefficient,unit,nominal,corrected'];
+const BOM = '\uFEFF';
+
+// The scalar inputs of a case, as [path, value] rows (lists and the measured grid have their own blocks).
+function inputRows(c, prefix = '') {
+  const rows = [];
+  for (const [k, v] of Object.entries(c || {})) {
+    const path = prefix ? `${prefix}.${k}` : k;
+    if (['measured', 'axes', 'passes', 'page'].includes(path)) continue;
+    if (v !== null && typeof v === 'object' && !Array.isArray(v)) rows.push(...inputRows(v, path));
+    else rows.push([path, Array.isArray(v) ? v.join(' ') : v]);
+  }
+  return rows;
+}
+
+// A name for the file from the job and the day: hobsharp-m8-helical-right-2026-11-23.csv.
+export function resultsFileName(caseObject, date = new Date()) {
+  const h = (caseObject && caseObject.hob) || {};
+  const job = [h.normalModule !== undefined ? `m${h.normalModule}` : '', h.gash || 'helical',
+    (h.gash || 'helical') === 'straight' ? '' : h.hand || 'right'].filter(Boolean).join('-');
+  return `hobsharp-${job}-${date.toISOString().slice(0, 10)}.csv`;
+}
+
+export function resultsCsv(r, { caseObject = null, style = 'comma', date = new Date() } = {}) {
+  const semicolon = style === 'semicolon';
+  const sep = semicolon ? ';' : ',';
+  const cell = (v) => {
+    if (typeof v === 'number') return semicolon ? String(v).replace('.', ',') : String(v);
+    const t = v === undefined || v === null ? '' : String(v);
+    return /["\n;,]/.test(t) ? `"${t.replace(/"/g, '""')}"` : t;
+  };
+  const row = (...cells) => cells.map(cell).join(sep);
+  const lines = ['# HobSharp results (hobsharp-case/1)', row('# date', date.toISOString().slice(0, 10))];
+  if (caseObject) {
+    lines.push('', '# inputs', row('input', 'value'));
+    for (const [k, v] of inputRows(caseObject)) lines.push(row(k, v));
+  }
+  const c = r.correction;
+  if (c) {
+    lines.push('', '# correction', row('verdict', c.verdict), row('method', c.method), row('status', c.status));
+    lines.push('', '# figures (normal deviation)', row('figure', 'unit', 'measured', 'predicted after correction'));
+    for (const [name, unit, before, after] of [['rms', 'µm', c.rmsBefore, c.rmsAfter],
+      ['peak-to-valley', 'µm', c.peakToValleyBefore, c.peakToValleyAfter], ['largest |deviation|', 'µm', c.maxBefore, c.maxAfter],
+      ['thickness error', 'µm', c.thicknessBefore, c.thicknessAfter], ['sum of squares', 'µm²', c.sseBefore, c.sseAfter]]) {
+      lines.push(row(name, unit, before, after));
+    }
+  } else {
+    const t = r.topography;
+    lines.push('', '# figures (normal deviation, simulated for the axes run)', row('figure', 'unit', 'value'));
+    for (const [name, unit, v] of [['rms', 'µm', t.rms], ['peak-to-valley', 'µm', t.peakToValley],
+      ['largest |deviation|', 'µm', t.max], ['thickness error', 'µm', t.thickness], ['sum of squares', 'µm²', t.sse]]) {
+      lines.push(row(name, unit, v));
+    }
+  }
+  lines.push('', '# axis polynomials; change = corrected - run: what the correction changes',
+    row('coefficient', 'unit', 'nominal', 'run', 'corrected', 'change'));
   const per = motionUnit(r);
+  const run = (caseObject && caseObject.axes) || r.axes;
   for (const a of AXES) {
     r.axes[a].forEach((v, k) => {
-      const c = r.correction ? r.correction.axes[a][k] : '';
-      lines.push(`${a} a${k},${coefficientUnit(a, k, per)},${v},${c}`);
+      const ran = run[a] ? run[a][k] : v;
+      const corrected = c ? c.axes[a][k] : '';
+      lines.push(row(`${a} a${k}`, coefficientUnit(a, k, per), v, ran, corrected, c ? corrected - ran : ''));
     });
   }
   const grid = (title, z) => {
     lines.push('', `# ${title}; rows r (mm) root to tip, columns x (mm) along the gash`);
-    lines.push(['r \\ x', ...r.topography.x].join(','));
-    z.forEach((row, i) => lines.push([r.topography.r[i], ...row].join(',')));
+    lines.push(row('r \\ x', ...r.topography.x));
+    z.forEach((values, i) => lines.push(row(r.topography.r[i], ...values)));
   };
+  if (caseObject && caseObject.measured) grid('measured normal deviation (µm)', caseObject.measured);
   grid('simulated normal deviation (µm) for the axes run', r.topography.normal);
   grid('simulated circular deviation (µm at the mean radius)', r.topography.circular);
-  if (r.correction) grid('predicted normal deviation after correction (µm)', r.correction.residual);
-  lines.push('', `# thickness error at the mean point (µm),${r.topography.thickness}`);
-  return lines.join('\n') + '\n';
+  if (c) grid('predicted normal deviation after correction (µm)', c.residual);
+  lines.push('', row('# thickness error at the mean point (µm)', r.topography.thickness));
+  return BOM + lines.join('\n') + '\n';
 }
 
 export function profileCsv(r) {

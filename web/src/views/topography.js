@@ -1,5 +1,5 @@
 // The deviation topography of the rake face, before and after correction, normal or circular:
-// the figures (sum of squares, largest deviation, thickness error), a map and, on demand, a 3D
+// the figures (rms, peak-to-valley, largest deviation, thickness error, sum of squares), a map and, on demand, a 3D
 // surface.
 import { fixed, fmt, signed } from '../format.js';
 import { colourRange } from '../plots/colours.js';
@@ -12,11 +12,13 @@ const $ = (selector) => document.querySelector(selector);
 
 // The circular view's sum of squares and largest deviation are of its own grid; the thickness
 // error is the same in both views (the circular deviation at the mean point).
-const numbersOf = (sse, max, thickness, circularGrid) =>
-  (circularGrid ? { ...gridFigures(circularGrid), thickness } : { sse, max, thickness });
+const numbersOf = (f, circularGrid) =>
+  (circularGrid ? { ...gridFigures(circularGrid), thickness: f.thickness } : f);
 
-function figuresText({ sse, max, thickness }) {
-  return `Sum of squares ${fmt(sse, 6)} µm² · largest |deviation| ${fixed(max, 3)} µm · thickness error ${signed(thickness, 3)} µm`;
+// Led by the figures that compare between grids of any density; the paper's sum of squares last.
+function figuresText({ rms, peakToValley, max, thickness, sse }) {
+  return `rms ${fixed(rms, 3)} µm · peak-to-valley ${fixed(peakToValley, 3)} µm · largest |deviation| ${fixed(max, 3)} µm · ` +
+    `thickness error ${signed(thickness, 3)} µm · sum of squares ${fmt(sse, 6)} µm²`;
 }
 
 // What the two columns show for a result: the simulated face, or measured and after correction
@@ -26,8 +28,10 @@ function topographyViews(r, caseObject, view) {
   const viewName = circular ? 'circular deviation' : 'normal deviation';
   if (r.correction) {
     const c = r.correction;
-    const beforeNumbers = numbersOf(c.sseBefore, c.maxBefore, c.thicknessBefore, circular && c.measuredCircular);
-    const afterNumbers = numbersOf(c.sseAfter, c.maxAfter, c.thicknessAfter, circular && c.residualCircular);
+    const beforeNumbers = numbersOf({ sse: c.sseBefore, max: c.maxBefore, thickness: c.thicknessBefore, rms: c.rmsBefore,
+      peakToValley: c.peakToValleyBefore }, circular && c.measuredCircular);
+    const afterNumbers = numbersOf({ sse: c.sseAfter, max: c.maxAfter, thickness: c.thicknessAfter, rms: c.rmsAfter,
+      peakToValley: c.peakToValleyAfter }, circular && c.residualCircular);
     return {
       beforeTitle: 'Measured',
       before: circular ? c.measuredCircular : caseObject.measured, beforeName: `Measured ${viewName}`,
@@ -37,7 +41,8 @@ function topographyViews(r, caseObject, view) {
     };
   }
   const t = r.topography;
-  const beforeNumbers = numbersOf(t.sse, t.max, t.thickness, circular && t.circular);
+  const beforeNumbers = numbersOf({ sse: t.sse, max: t.max, thickness: t.thickness, rms: t.rms, peakToValley: t.peakToValley },
+    circular && t.circular);
   return {
     beforeTitle: 'Ground face (simulated for the axes run)',
     before: circular ? t.circular : t.normal, beforeName: `Simulated ${viewName}`,

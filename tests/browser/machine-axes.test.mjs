@@ -1,0 +1,48 @@
+// The axes to run in the control's units (issue 11, item 4): the rounded proposal's coefficients
+// in mm and degrees per degree of hob rotation, copied to the clipboard, and the axis positions
+// over the motion range as CSV at a chosen step.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
+import { afterResult, base, openPage, shots, useBrowser } from './support.mjs';
+
+useBrowser();
+
+test('the axes to run: degrees, the rounded proposal, copied and sampled', async () => {
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, permissions: ['clipboard-read', 'clipboard-write'] });
+  await page.waitForFunction(() => window.hobsharpTimings.results > 0);
+  assert.equal(await page.textContent('#machine-axes-source'), '(nominal; no correction)');
+  const a1 = await page.textContent('#machine-coefficients tr[data-axis="A"] td:nth-child(3)');
+  assert.match(a1, /^1 deg\/deg$/, 'A turns with the hob, 1 deg per deg');
+  // A correction: its rounded proposal is shown.
+  await page.fill('[data-offset="B 0"]', '0.0005');
+  await page.dispatchEvent('[data-offset="B 0"]', 'change');
+  await afterResult(page, () => page.click('#generate-error'));
+  assert.equal(await page.textContent('#machine-axes-source'), '(the corrected proposal, rounded to the machine\'s resolution)');
+  const b0 = Number((await page.textContent('#machine-coefficients tr[data-axis="B"] td:nth-child(2)')).split(' ')[0]);
+  assert.ok(Math.abs(b0 / 1e-4 - Math.round(b0 / 1e-4)) < 1e-6, `B a0 = ${b0} deg is a whole number of 0.0001 deg steps`);
+  await page.click('#copy-axes');
+  const copied = await page.evaluate(() => navigator.clipboard.readText());
+  assert.match(copied, /^X \(mm\) = /);
+  assert.match(copied, /\nB \(deg\) = [-\d.e]+ /);
+  assert.ok(copied.includes(String(b0)), 'the clipboard holds the values shown');
+  // The positions at 2 deg.
+  await page.fill('#positions-step', '2');
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-positions')]);
+  const lines = readFileSync(await download.path(), 'utf8').trimEnd().split('\n');
+  assert.equal(lines[0], '\uFEFFhob rotation (deg),X (mm),Y (mm),Z (mm),A (deg),B (deg)');
+  const rows = lines.slice(1).map((l) => l.split(',').map(Number));
+  assert.ok(rows.every((r) => r.length === 6 && r.every(Number.isFinite)));
+  assert.ok(Math.abs(rows[1][0] - rows[0][0] - 2) < 1e-9);
+  assert.match(await page.textContent('#positions-note'), new RegExp(`^${rows.length} positions\\.$`));
+  const off = Math.max(...rows.map((r) => Math.abs(r[4] - r[0])));
+  assert.ok(off < 0.01, `A follows the hob rotation (off by at most ${off} deg)`);
+  // A bad step is said at the button, nothing downloaded.
+  await page.fill('#positions-step', '0');
+  await page.click('#download-positions');
+  assert.match(await page.textContent('#positions-note'), /^Step: must be a positive number of degrees; got 0\.$/);
+  await page.locator('#machine-axes').screenshot({ path: path.join(shots, 'machine-axes.png') });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

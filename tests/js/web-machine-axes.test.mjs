@@ -1,0 +1,49 @@
+// The axes in the control's units (web/src/machine-axes.js): the converted polynomials give the
+// same positions as the calculator's (a second evaluation, in rad), the table's rows and ends,
+// and a bad step refused.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { loadHobSharp } from '../../wasm/hobsharp.mjs';
+import { setModuleLimits } from '../../web/src/limits.js';
+import { axisPositions, coefficientsText, machineCoefficients, machineUnit, positionsCsv } from '../../web/src/machine-axes.js';
+
+const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
+const hobsharp = await loadHobSharp();
+setModuleLimits(hobsharp.limits());
+const inRad = (c, phi) => c.reduce((s, a, k) => s + a * phi ** k, 0);
+
+test('the converted polynomials give the same positions as the calculator\'s in rad', () => {
+  const r = hobsharp.evaluate(paper);
+  const m = machineCoefficients(r.axes, true);
+  assert.ok(Math.abs(m.A[1] - 1) < 1e-12, 'A turns with the hob: 1 deg per deg');
+  for (const phi of [r.motion.min, 0.3 * r.motion.max, r.motion.max]) {
+    const deg = phi * 180 / Math.PI;
+    for (const a of ['X', 'Y', 'Z']) {
+      assert.ok(Math.abs(inRad(m[a].map((c, k) => c), deg) - inRad(r.axes[a], phi)) < 1e-9, a);
+    }
+    for (const a of ['A', 'B']) assert.ok(Math.abs(inRad(m[a], deg) - inRad(r.axes[a], phi) * 180 / Math.PI) < 1e-9, a);
+  }
+  assert.equal(machineUnit('B', 2, true), 'deg/deg^2');
+  assert.equal(machineUnit('X', 1, false), 'mm/mm');
+  assert.match(coefficientsText(m, true), /^X \(mm\) = [-\d.e]+ [+-] [\d.e-]+ \* phi \(deg\) /);
+});
+
+test('the table of positions: every step from the start, both ends, the values of the polynomials', () => {
+  const r = hobsharp.evaluate(paper);
+  const rows = axisPositions(r.axes, r.motion.min, r.motion.max, 1, true);
+  const lo = r.motion.min * 180 / Math.PI, hi = r.motion.max * 180 / Math.PI;
+  assert.equal(rows[0][0], lo);
+  assert.ok(Math.abs(rows.at(-1)[0] - hi) < 1e-9);
+  assert.equal(rows.length, Math.floor(hi - lo) + (Number.isInteger(hi - lo) ? 1 : 2));
+  const [phi, X, , , A, B] = rows[3];
+  assert.ok(Math.abs(X - inRad(r.axes.X, phi * Math.PI / 180)) < 1e-9);
+  assert.ok(Math.abs(A - phi) < 1e-9);
+  assert.ok(Math.abs(B - inRad(r.axes.B, phi * Math.PI / 180) * 180 / Math.PI) < 1e-9);
+  const csv = positionsCsv(rows, true).split('\n');
+  assert.equal(csv[0], '\uFEFFhob rotation (deg),X (mm),Y (mm),Z (mm),A (deg),B (deg)');
+  assert.deepEqual(csv[1].split(',').map(Number), rows[0]);
+  assert.throws(() => axisPositions(r.axes, r.motion.min, r.motion.max, 0, true), /^Error: Step: must be a positive number of degrees; got 0\.$/);
+  assert.throws(() => axisPositions(r.axes, r.motion.min, r.motion.max, 1e-6, true), /more than 10001 rows/);
+  assert.throws(() => axisPositions(r.axes, r.motion.min, r.motion.max, NaN, true), /positive number/);
+});
