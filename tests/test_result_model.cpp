@@ -61,8 +61,10 @@ TEST(ResultModel, FieldPathsAreUniqueAndOptionalOnesSayWhen) {
         f.path == "inspection.adjacentSpacing" || f.path == "inspection.cumulativeSpacing" ||
         f.path == "inspection.spacing.adjacent" || f.path == "inspection.indexCorrection" ||
         f.path == "inspection.indexCorrectionDeg";
+    const bool wheelOffset = f.path.rfind("wheelOffset.", 0) == 0 || f.path == "wheelProfile.offset" ||
+                             f.path == "wheelProfile.dressedR" || f.path == "wheelProfile.dressedZ";
     const bool optional = f.path.rfind("correction.", 0) == 0 || f.path == "setup.gashLead" ||
-                          f.path == "setup.gashHelixAngle" || optionalInspection;
+                          f.path == "setup.gashHelixAngle" || optionalInspection || wheelOffset;
     EXPECT_EQ(!f.when.empty(), optional) << f.path;
   }
   EXPECT_EQ(paths.count("topography.normal"), 1u);
@@ -76,13 +78,18 @@ TEST(ResultModel, FieldPathsAreUniqueAndOptionalOnesSayWhen) {
 TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   std::set<std::string> described;
   for (const FieldDescription& f : resultFields()) described.insert(f.path);
-  const Json j = Json::parse(resultJson(evaluated(measuredCase())));
+  // A dressed wheel as well (wheel.profileOffset: the contact range is R = 29.53 to 50.0 mm).
+  CaseInput withWheel = measuredCase();
+  withWheel.wheelProfileOffset = WheelPointsInput{{30, 40, 49.9}, {1, -1, 0.5}};
+  const Json j = Json::parse(resultJson(evaluated(withWheel)));
   std::set<std::string> written;
   leaves(j, "", &written);
   EXPECT_EQ(written, described);
-  // Without a measured topography there is no correction.
+  // Without a measured topography there is no correction, without a wheel offset no wheelOffset.
   const Json nominal = Json::parse(resultJson(evaluated(paperCase())));
   EXPECT_FALSE(nominal.contains("correction"));
+  EXPECT_FALSE(nominal.contains("wheelOffset"));
+  EXPECT_FALSE(nominal["wheelProfile"].contains("dressedR"));
   EXPECT_TRUE(nominal["setup"].contains("gashLead"));
   // Nor a verdict after it; the inspection of the simulated face is there, without spacing.
   EXPECT_FALSE(nominal["inspection"].contains("after"));

@@ -33,6 +33,10 @@ struct EnvelopePoint {
   // Implicit function theorem: dt / d(axis value) and dt / d(axis rate) at phi, X Y Z A B order.
   std::array<double, kAxisCount> dtdValue{};
   std::array<double, kAxisCount> dtdRate{};
+  // With a wheel profile offset delta(R) (wheel_surface.h): dt / d(delta) and dt / d(delta') at the
+  // conjugate wheel radius R of the contact (mm); the sensitivity to a knot value y_k of the
+  // offset's spline is dtdOffset B_k(R) + dtdOffsetSlope B_k'(R) (wheel_offset_sensitivity.h).
+  double dtdOffset = 0, dtdOffsetSlope = 0, wheelRadius = 0;
 
   // dt / d(a_k) for the coefficient of phi^k of `axis` (Eqs. 13-15).
   double sensitivity(Axis axis, int k) const;
@@ -54,6 +58,12 @@ struct EnvelopeSolverOptions {
   double helicalMotionWeight = 50.0;      // mm/rad (helical gash)
   double straightMotionWeight = 1.0;      // mm/mm (straight gash)
   double stepTolerance = 1e-11;           // mm
+  // With a dressed wheel (wheel_surface.h): the motion step either side of an envelope point at
+  // which the wheel's crossing of the normal line must not lie beyond it (the second-order
+  // condition of Eq. 11, envelope.cpp).
+  double helicalEdgeStep = 1e-3;          // rad (helical gash)
+  double straightEdgeStep = 0.05;         // mm (straight gash)
+  double edgeStep(bool helical) const { return helical ? helicalEdgeStep : straightEdgeStep; }
 };
 
 Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,

@@ -5,6 +5,7 @@
 #include "axis_polynomials.h"
 #include "tooth_face.h"
 #include "universal_settings.h"
+#include "wheel_surface.h"
 
 namespace hobsharp {
 
@@ -13,6 +14,7 @@ struct SharpeningSetup {
   UniversalSettings universal;
   MachineConstants machine;
   double normalSign = 1.0;  // see outwardNormalSign() in wheel_contact.h
+  WheelSurface wheel;       // the conjugate wheel, or one dressed with a profile offset
 
   // The setup with its normal sign, which the wheel contact of Eq. 3 fixes at the pitch point.
   static SharpeningSetup make(const ToothFace& face, const UniversalSettings& universal,

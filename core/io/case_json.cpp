@@ -326,6 +326,46 @@ Outcome<std::vector<PassInput>> readPasses(const Json& p) {
   return out;
 }
 
+// A list of numbers, each finite; `name` is its field.
+Outcome<std::vector<double>> readNumbers(const Json& v, const std::string& name) {
+  if (!v.is_array()) return refuse(name, std::string("must be a list of numbers; got ") + typeName(v) + ".");
+  std::vector<double> out;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    double d = 0;
+    HOBSHARP_ASSIGN(d, Node::toNumber(v[i], name + "[" + std::to_string(i) + "]"));
+    out.push_back(d);
+  }
+  return out;
+}
+
+// {"R": [...], "<values>": [...]} of equal lengths, or nothing when the wheel has no `key`.
+Outcome<std::optional<WheelPointsInput>> readWheelPoints(const Node& wheel, const char* key, const char* values) {
+  if (!wheel.find(key)) return std::optional<WheelPointsInput>();
+  auto o = wheel.object(key, true);
+  if (!o) return o.error();
+  HOBSHARP_TRY(o->onlyKnown({"R", values}));
+  WheelPointsInput in;
+  for (auto [name, target] : {std::pair{"R", &in.R}, std::pair{values, &in.values}}) {
+    const Json* v = o->find(name);
+    if (!v) return refuse(o->field(name), "is missing.");
+    HOBSHARP_ASSIGN(*target, readNumbers(*v, o->field(name)));
+  }
+  if (in.values.size() != in.R.size())
+    return refuse(o->field(values), "needs one value per radius in " + o->field("R") + " (" +
+                                        std::to_string(in.R.size()) + "); got " + std::to_string(in.values.size()) + ".");
+  return std::optional<WheelPointsInput>(std::move(in));
+}
+
+// wheel.profileOffset {R mm, offset µm} and wheel.measuredProfile {R mm, Z mm} (docs/case-format.md
+// §The wheel's profile); resolveJob checks them against the wheel's contact range.
+Outcome<void> readWheelProfile(const Node& wheel, CaseInput& in) {
+  HOBSHARP_ASSIGN(in.wheelProfileOffset, readWheelPoints(wheel, "profileOffset", "offset"));
+  HOBSHARP_ASSIGN(in.wheelMeasuredProfile, readWheelPoints(wheel, "measuredProfile", "Z"));
+  if (in.wheelProfileOffset && in.wheelMeasuredProfile)
+    return refuse(wheel.field("measuredProfile"), "give either wheel.profileOffset or wheel.measuredProfile, not both.");
+  return success();
+}
+
 Outcome<CorrectionInput> readCorrection(const Node& c) {
   HOBSHARP_TRY(c.onlyKnown({"method", "probeNoise", "resolution", "truncation", "amplification", "lockedAxes",
                             "locked"}));
@@ -485,8 +525,9 @@ Outcome<CaseInput> parseCase(const std::string& text) {
 
   auto wheel = root.object("wheel", true);
   if (!wheel) return wheel.error();
-  HOBSHARP_TRY(wheel->onlyKnown({"outerDiameter"}));
+  HOBSHARP_TRY(wheel->onlyKnown({"outerDiameter", "profileOffset", "measuredProfile"}));
   HOBSHARP_ASSIGN(in.wheelOuterDiameter, wheel->number("outerDiameter"));
+  HOBSHARP_TRY(readWheelProfile(*wheel, in));
 
   auto setup = root.object("setup", true);
   if (!setup) return setup.error();

@@ -263,6 +263,33 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
     v.text({grade.c_str(), "", "the check's grade predicted after the correction", kWithEitherCorrection},
            r ? gradeName(r->grade) : gradeName(Grade::NotGraded));
   }
+// The dressed or measured wheel (docs/case-format.md §The wheel's profile): present only when the
+// case gives wheel.profileOffset or wheel.measuredProfile.
+void visitWheelOffset(const Evaluation& e, ResultVisitor& v) {
+  constexpr const char* kWithOffset = "only with wheel.profileOffset or wheel.measuredProfile";
+  constexpr double kMicrometresPerMm = 1000.0;
+  const WheelSurface& wheel = e.job.setup.wheel;
+  if (!wheel.hasOffset() && !v.listsEveryField()) return;
+  auto micrometres = [&](const std::vector<double>& mm) {
+    std::vector<double> um;
+    for (double x : mm) um.push_back(x * kMicrometresPerMm);
+    return um;
+  };
+  const DressedProfile& d = e.dressedProfile;
+  numbers(v, {"wheelProfile.offset", "µm", "the wheel's profile offset at each point (+ = more wheel, less material)", kWithOffset},
+          micrometres(d.offset));
+  numbers(v, {"wheelProfile.dressedR", "mm", "wheel radius of the dressed (or measured) wheel's profile", kWithOffset}, d.dressedR);
+  numbers(v, {"wheelProfile.dressedZ", "mm", "axial position of the dressed (or measured) wheel's profile", kWithOffset}, d.dressedZ);
+  static const CubicSpline kNone;
+  const CubicSpline& spline = wheel.hasOffset() ? *wheel.offset : kNone;
+  numbers(v, {"wheelOffset.R", "mm", "the offset's spline points: conjugate wheel radius (for a measured wheel, the projected points)", kWithOffset},
+          spline.x());
+  numbers(v, {"wheelOffset.offset", "µm", "the offset at wheelOffset.R", kWithOffset}, micrometres(spline.y()));
+  const WheelOffsetSensitivity& S = e.offsetSensitivities;
+  v.matrices({"wheelOffset.sensitivities", "µm per µm", "per point of wheelOffset.R: the normal deviation of a 1 µm change of its offset",
+              kWithOffset}, S.normal.data(), static_cast<int>(S.normal.cols()), e.sensitivities.rows, e.sensitivities.cols);
+  eigenNumbers(v, {"wheelOffset.thickness", "µm per µm", "per point of wheelOffset.R: the thickness change of a 1 µm change", kWithOffset},
+               S.thickness);
 }
 
 }  // namespace
@@ -322,6 +349,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
           e.wheelProfile.w);
   numbers(v, {"wheelProfile.R", "mm", "wheel radius"}, e.wheelProfile.R);
   numbers(v, {"wheelProfile.Z", "mm", "axial position on the wheel"}, e.wheelProfile.Z);
+  visitWheelOffset(e, v);
 
   const MotionRange motion = motionRange(e.groundFace);
   v.number({"motion.min", kMotionUnit, "lowest motion parameter over the grid (at most 0)"}, motion.min);

@@ -56,6 +56,13 @@ struct PassInput {
   std::optional<CorrectionInput> correction;  // the options its correction was computed with
 };
 
+// Points along the wheel's radius as the case gives them (docs/case-format.md §The wheel's
+// profile): R with one value each, an offset (µm) or an axial position Z (mm).
+struct WheelPointsInput {
+  std::vector<double> R;       // mm
+  std::vector<double> values;  // offset µm, or Z mm
+};
+
 // What the case file's optional fields default to.
 constexpr int kDefaultDegree = 4;
 constexpr int kDefaultGridRadial = 5;
@@ -78,6 +85,8 @@ struct CaseInput {
   // The measuring machine's points, an alternative to `measured`; resolveJob() turns them into the
   // measured grid (measured_points.h).
   std::optional<std::vector<MeasuredPoint>> measuredPoints;
+  std::optional<WheelPointsInput> wheelProfileOffset;    // wheel.profileOffset: R mm, offset µm
+  std::optional<WheelPointsInput> wheelMeasuredProfile;  // wheel.measuredProfile: R mm, Z mm
 };
 
 // The largest grid the calculator takes, per direction.

@@ -36,6 +36,10 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
   e.groundFace = std::move(face).value();
   e.topography = topographyOf(e.groundFace);
   e.sensitivities = sensitivityMatrix(e.groundFace, allCoefficients(job.runAxes.degree()));
+  if (s.wheel.hasOffset()) {
+    e.dressedProfile = dressedProfile(s, e.wheelProfile);
+    e.offsetSensitivities = wheelOffsetSensitivity(e.groundFace, s.wheel);
+  }
   if (job.input.measured) {
     auto c = correctMeasuredFace(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction);
     if (!c) return c.error();

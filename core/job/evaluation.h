@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "correction.h"
+#include "dressed_wheel.h"
 #include "ground_face.h"
 #include "index_correction.h"
 #include "inspection.h"
@@ -13,6 +14,7 @@
 #include "sensitivity_matrix.h"
 #include "sharpening_job.h"
 #include "topography.h"
+#include "wheel_offset_sensitivity.h"
 #include "wheel_profile.h"
 
 namespace hobsharp {
@@ -33,6 +35,10 @@ struct Evaluation {
   Inspection inspection;
   std::optional<IndexCorrection> indexCorrection;
   std::optional<Inspection> inspectionAfter;
+  // With a wheel profile offset (job.setup.wheel): the dressed profile at wheelProfile's points and
+  // the face's sensitivity to the offset's knot values; empty for the conjugate wheel.
+  DressedProfile dressedProfile;
+  WheelOffsetSensitivity offsetSensitivities;
 };
 
 Outcome<Evaluation> evaluate(const SharpeningJob& job);

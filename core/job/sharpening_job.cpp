@@ -7,6 +7,7 @@
 #include "units.h"
 #include "universal_settings.h"
 #include "wheel_contact.h"
+#include "wheel_input.h"
 #include "wheel_profile.h"
 
 namespace hobsharp {
@@ -246,6 +247,11 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
                   "the wheel is too small to reach the gash root: at the root radius " + num(job.rootRadius) +
                       " mm the wheel needs a radius of " + num(ends->R[0]) + " mm, but it has " +
                       num(job.wheelRadius) + " mm. Use a larger wheel or a smaller setup.centerDistance.");
+
+  // The wheel as dressed or measured (wheel_input.h), or the conjugate wheel.
+  auto wheel = resolveWheelSurface(in, job.setup, job.rootRadius, job.outerRadius);
+  if (!wheel) return wheel.error();
+  job.setup.wheel = std::move(wheel).value();
 
   auto pitch = contactCoordinate(face, universal, job.setup.normalSign, 0.0);
   if (!pitch) return pitch.error();

@@ -1,0 +1,69 @@
+// The grinding wheel as a surface of its own: the surface of revolution of the conjugate profile
+// (Eqs. 3-6) moved along the profile's normal by an offset that is a function of the wheel radius R
+// of the conjugate point (README §The wheel's profile offset, docs/case-format.md).
+//
+// Sign: + is more wheel, so less material on the face. The face normal n_t at a contact point is
+// the wheel's normal too and points out of the tooth material, into the wheel; the dressed
+// profile point is therefore p - delta(R) n (meridian components), and a constant delta grinds
+// the face delta deeper (t = -delta).
+#pragma once
+
+#include <optional>
+
+#include "autodiff.h"
+#include "cubic_spline.h"
+#include "wheel_contact.h"
+
+namespace hobsharp {
+
+struct WheelSurface {
+  // The offset delta(R), mm over mm, a natural cubic spline; none for the conjugate wheel.
+  std::optional<CubicSpline> offset;
+  bool hasOffset() const { return offset.has_value(); }
+};
+
+// The offset's value and slope at R, with R's derivatives carried by the chain rule
+// (d delta = delta'(R) dR, d delta' = delta''(R) dR).
+inline double offsetValue(const CubicSpline& s, double R) { return s.value(R); }
+inline double offsetSlope(const CubicSpline& s, double R) { return s.slope(R); }
+template <class Der>
+Eigen::AutoDiffScalar<Der> offsetValue(const CubicSpline& s, const Eigen::AutoDiffScalar<Der>& R) {
+  return Eigen::AutoDiffScalar<Der>(s.value(R.value()), s.slope(R.value()) * R.derivatives());
+}
+template <class Der>
+Eigen::AutoDiffScalar<Der> offsetSlope(const CubicSpline& s, const Eigen::AutoDiffScalar<Der>& R) {
+  return Eigen::AutoDiffScalar<Der>(s.slope(R.value()), s.curvature(R.value()) * R.derivatives());
+}
+
+// The wheel's meridian at one conjugate point: the profile point (R, Z) and a normal (nR, nZ),
+// not normalised, pointing like n_t.
+template <class T>
+struct WheelMeridian {
+  T R, Z, nR, nZ;
+};
+
+// The dressed wheel at the conjugate point c (which must satisfy Eq. 5 for nR, nZ to be the
+// profile's unit normal). `valueShift` and `slopeShift` are added to delta(R) and delta'(R):
+// zero in value, they carry the derivatives with respect to the offset for the sensitivities.
+//
+// With the meridian tangent T = (nZ, -nR) and s its arc length, the dressed curve p - delta n
+// has the tangent (1 - delta kappa) T - delta' nZ n (kappa: the profile's curvature, n' = kappa T),
+// so its normal is (1 - delta kappa) n + delta' nZ T. The term delta kappa (a few µm over a
+// radius of curvature of tens of mm: below 1e-4) is left out, which tilts this normal by less than
+// 1e-4 of delta' and moves the envelope by its square only (Eq. 11 is stationary there).
+template <class T>
+WheelMeridian<T> wheelMeridian(const WheelSurface& wheel, const WheelContact<T>& c, const T& valueShift,
+                               const T& slopeShift) {
+  WheelMeridian<T> m{c.R(), c.Z(), c.nRadial(), c.n.z()};
+  if (!wheel.hasOffset()) return m;
+  const T delta = offsetValue(*wheel.offset, m.R) + valueShift;
+  const T slope = offsetSlope(*wheel.offset, m.R) + slopeShift;
+  const T nR = m.nR, nZ = m.nZ;
+  m.R = m.R - delta * nR;
+  m.Z = m.Z - delta * nZ;
+  m.nR = nR + slope * nZ * nZ;
+  m.nZ = nZ - slope * nZ * nR;
+  return m;
+}
+
+}  // namespace hobsharp

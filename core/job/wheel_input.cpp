@@ -1,0 +1,108 @@
+#include "wheel_input.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "dressed_wheel.h"
+#include "wheel_profile.h"
+
+namespace hobsharp {
+namespace {
+
+constexpr double kMicrometresPerMm = 1000.0;
+// The points of the conjugate profile the contact range is taken from (as Fig. 4 shows it).
+constexpr int kContactRangePoints = 41;
+// How far a given radius may lie past the contact range, mm (as a grid past the face).
+constexpr double kRangeTolerance = 1e-3;
+
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+std::string at(const std::string& name, size_t i) { return name + "[" + std::to_string(i) + "]"; }
+
+// R strictly increasing, every value finite, at least 2 points.
+Outcome<void> checkRadii(const std::vector<double>& R, const std::string& name) {
+  if (R.size() < 2)
+    return refuse(name, "needs at least 2 points for the spline; got " + std::to_string(R.size()) + ".");
+  for (size_t i = 0; i < R.size(); ++i) {
+    if (!std::isfinite(R[i])) return refuse(at(name, i), "must be a finite number.");
+    if (i > 0 && !(R[i] > R[i - 1]))
+      return refuse(at(name, i), "must be greater than the radius before it (" + num(R[i - 1]) + " mm); got " +
+                                     num(R[i]) + " mm. Give the radii in increasing order.");
+  }
+  return success();
+}
+
+}  // namespace
+
+Outcome<ContactRange> wheelContactRange(const SharpeningSetup& setup, double rootRadius, double outerRadius) {
+  auto p = wheelProfile(setup.face, setup.universal, setup.normalSign,
+                        evenRadii(rootRadius, outerRadius, kContactRangePoints));
+  if (!p) return p.error();
+  const auto [lo, hi] = std::minmax_element(p->R.begin(), p->R.end());
+  return ContactRange{*lo, *hi};
+}
+
+Outcome<WheelSurface> resolveWheelSurface(const CaseInput& in, const SharpeningSetup& setup, double rootRadius,
+                                          double outerRadius) {
+  WheelSurface wheel;
+  if (!in.wheelProfileOffset && !in.wheelMeasuredProfile) return wheel;
+  auto range = wheelContactRange(setup, rootRadius, outerRadius);
+  if (!range) return range.error();
+  const std::string rangeText = num(range->min) + " to " + num(range->max) + " mm";
+
+  if (in.wheelProfileOffset) {
+    const WheelPointsInput& o = *in.wheelProfileOffset;
+    const std::string R = "wheel.profileOffset.R", offset = "wheel.profileOffset.offset";
+    if (auto r = checkRadii(o.R, R); !r) return r.error();
+    std::vector<double> y;
+    for (size_t i = 0; i < o.R.size(); ++i) {
+      if (o.R[i] < range->min - kRangeTolerance || o.R[i] > range->max + kRangeTolerance)
+        return refuse(at(R, i), num(o.R[i]) + " mm lies outside the wheel's contact range: the wheel grinds the face "
+                                "from root to tip with the radii R = " + rangeText + ".");
+      if (!std::isfinite(o.values[i])) return refuse(at(offset, i), "must be a finite number.");
+      if (std::abs(o.values[i]) > kMaxWheelOffset)
+        return refuse(at(offset, i), "must lie within ±" + num(kMaxWheelOffset) + " µm (10 mm); got " +
+                                         num(o.values[i]) + " µm.");
+      y.push_back(o.values[i] / kMicrometresPerMm);
+    }
+    wheel.offset = CubicSpline(o.R, std::move(y));
+    return wheel;
+  }
+
+  // A measured wheel: projected onto the conjugate profile (dressed_wheel.h), searched over the
+  // face's radii and a quarter of its depth past either end.
+  const WheelPointsInput& m = *in.wheelMeasuredProfile;
+  const std::string R = "wheel.measuredProfile.R", Z = "wheel.measuredProfile.Z";
+  if (auto r = checkRadii(m.R, R); !r) return r.error();
+  for (size_t i = 0; i < m.values.size(); ++i)
+    if (!std::isfinite(m.values[i])) return refuse(at(Z, i), "must be a finite number.");
+  const double margin = 0.25 * (outerRadius - rootRadius);
+  const double rLow = std::max(rootRadius - margin, 0.5 * (rootRadius + std::abs(setup.face.rakeOffset)));
+  auto projected = projectOntoConjugateProfile(setup, m.R, m.values, rLow, outerRadius + margin, "wheel.measuredProfile");
+  if (!projected) return projected.error();
+  // The feet's radii in the order of the points, and covering the contact range.
+  for (size_t i = 1; i < projected->R.size(); ++i)
+    if (!(projected->R[i] > projected->R[i - 1]))
+      return refuse(at(R, i), "projected onto the conjugate profile, this point falls at R = " + num(projected->R[i]) +
+                                  " mm, not beyond the point before it (" + num(projected->R[i - 1]) +
+                                  " mm): the measured profile folds back.");
+  const double lo = projected->R.front(), hi = projected->R.back();
+  if (lo > range->min + kRangeTolerance || hi < range->max - kRangeTolerance)
+    return refuse("wheel.measuredProfile", "covers the conjugate wheel radii R = " + num(lo) + " to " + num(hi) +
+                                               " mm only; the wheel grinds the face with R = " + rangeText +
+                                               ". Measure the profile over the whole contact range.");
+  for (size_t i = 0; i < projected->offset.size(); ++i)
+    if (std::abs(projected->offset[i]) * kMicrometresPerMm > kMaxWheelOffset)
+      return refuse(at(Z, i), "lies " + num(projected->offset[i]) + " mm from the conjugate profile, more than " +
+                                  num(kMaxWheelOffset / kMicrometresPerMm) + " mm: not a profile of this wheel.");
+  wheel.offset = CubicSpline(projected->R, projected->offset);
+  return wheel;
+}
+
+}  // namespace hobsharp

@@ -1,0 +1,85 @@
+#include "cubic_spline.h"
+
+#include <algorithm>
+#include <utility>
+
+#include <Eigen/Sparse>
+
+namespace hobsharp {
+
+// The natural spline's equations for the interior second derivatives (i = 1 .. n-2):
+//   h_{i-1} m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_i m_{i+1} = 6 ((y_{i+1}-y_i)/h_i - (y_i-y_{i-1})/h_{i-1}),
+// with m_0 = m_{n-1} = 0: symmetric, tridiagonal and diagonally dominant, solved by Eigen's sparse
+// LDL^T once for the unit right-hand sides, so that m = s y.
+CubicSpline::CubicSpline(std::vector<double> x, std::vector<double> y) : x_(std::move(x)), y_(std::move(y)) {
+  const int n = static_cast<int>(x_.size());
+  s_ = Eigen::MatrixXd::Zero(n, n);
+  if (n > 2) {
+    const int k = n - 2;
+    Eigen::SparseMatrix<double> A(k, k);
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(k, n);  // right-hand side per knot value
+    for (int r = 0; r < k; ++r) {
+      const int i = r + 1;
+      const double h0 = x_[i] - x_[i - 1], h1 = x_[i + 1] - x_[i];
+      entries.emplace_back(r, r, 2 * (h0 + h1));
+      if (r > 0) entries.emplace_back(r, r - 1, h0);
+      if (r + 1 < k) entries.emplace_back(r, r + 1, h1);
+      C(r, i - 1) += 6 / h0;
+      C(r, i) -= 6 / h0 + 6 / h1;
+      C(r, i + 1) += 6 / h1;
+    }
+    A.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+    s_.middleRows(1, k) = ldlt.solve(C);
+  }
+  m_ = s_ * Eigen::Map<const Eigen::VectorXd>(y_.data(), n);
+}
+
+std::size_t CubicSpline::segment(double t) const {
+  const auto it = std::upper_bound(x_.begin(), x_.end(), t);
+  const std::size_t i = static_cast<std::size_t>(it - x_.begin());
+  return std::min(std::max<std::size_t>(i, 1), x_.size() - 1) - 1;
+}
+
+double CubicSpline::evaluate(double t, int derivative) const {
+  const std::size_t n = x_.size();
+  // Beyond the ends: the tangent line (m = 0 there).
+  if (t <= x_.front() || t >= x_.back()) {
+    const bool left = t <= x_.front();
+    const std::size_t a = left ? 0 : n - 2, b = a + 1;
+    const double h = x_[b] - x_[a];
+    const double slopeAtEnd = left ? (y_[b] - y_[a]) / h - h * (2 * m_(a) + m_(b)) / 6
+                                   : (y_[b] - y_[a]) / h + h * (m_(a) + 2 * m_(b)) / 6;
+    if (derivative == 2) return 0.0;
+    if (derivative == 1) return slopeAtEnd;
+    const double xe = left ? x_.front() : x_.back(), ye = left ? y_.front() : y_.back();
+    return ye + slopeAtEnd * (t - xe);
+  }
+  const std::size_t i = segment(t);
+  const double h = x_[i + 1] - x_[i];
+  const double a = (x_[i + 1] - t) / h, b = (t - x_[i]) / h;
+  if (derivative == 2) return a * m_(i) + b * m_(i + 1);
+  if (derivative == 1)
+    return (y_[i + 1] - y_[i]) / h + (-(3 * a * a - 1) * m_(i) + (3 * b * b - 1) * m_(i + 1)) * (h / 6);
+  return a * y_[i] + b * y_[i + 1] + ((a * a * a - a) * m_(i) + (b * b * b - b) * m_(i + 1)) * (h * h / 6);
+}
+
+CubicSpline::Basis CubicSpline::basis(double t) const {
+  const int n = static_cast<int>(x_.size());
+  Basis out{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
+  // The spline of each unit knot vector, evaluated at t.
+  for (int j = 0; j < n; ++j) {
+    std::vector<double> unit(n, 0.0);
+    unit[j] = 1.0;
+    CubicSpline e;
+    e.x_ = x_;
+    e.y_ = std::move(unit);
+    e.m_ = s_.col(j);
+    out.B(j) = e.value(t);
+    out.dB(j) = e.slope(t);
+  }
+  return out;
+}
+
+}  // namespace hobsharp

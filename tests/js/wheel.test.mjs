@@ -1,0 +1,151 @@
+// The wheel as a surface of its own (issue 12) through the WebAssembly module: wheel.profileOffset
+// and wheel.measuredProfile in the case, the result's wheelOffset and wheelProfile.dressed* fields
+// against the native build, the sign and the sensitivities to the offset's points, the measured
+// wheel's round trip, and the refusals with the field named.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { loadHobSharp, HobSharpError } from '../../wasm/hobsharp.mjs';
+
+const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
+const paper = () => JSON.parse(readFileSync(path.join(root, 'tests', 'data', 'tab1.json'), 'utf8'));
+const nativeEval = process.env.HOBSHARP_NATIVE_EVAL || path.join(root, 'build', 'native', 'tests', 'hobsharp_native_eval');
+const hobsharp = await loadHobSharp();
+
+function native(caseObject) {
+  const dir = mkdtempSync(path.join(tmpdir(), 'hobsharp-'));
+  const file = path.join(dir, 'case.json');
+  writeFileSync(file, JSON.stringify(caseObject));
+  return JSON.parse(execFileSync(nativeEval, [file], { encoding: 'utf8' }));
+}
+
+// The contact range of Tab. 1: the extremes of wheelProfile.R of the conjugate wheel.
+const conjugate = hobsharp.evaluate(paper());
+const Rmin = Math.min(...conjugate.wheelProfile.R), Rmax = Math.max(...conjugate.wheelProfile.R);
+const evenR = (n) => Array.from({ length: n }, (_, k) => Rmin + (Rmax - Rmin) * k / (n - 1));
+const withOffset = (offset, R = evenR(offset.length)) => {
+  const c = paper();
+  c.wheel.profileOffset = { R, offset };
+  return c;
+};
+const maxAbs = (m) => Math.max(...m.flat().map(Math.abs));
+const diff = (a, b) => a.map((row, i) => row.map((x, j) => x - b[i][j]));
+
+test('a dressed wheel: the module agrees with the native build, the fields have their shapes', () => {
+  const c = withOffset([2, -3, 4, 1, -1.5]);
+  const w = hobsharp.evaluate(c), n = native(c);
+  for (const key of ['R', 'offset']) {
+    assert.equal(w.wheelOffset[key].length, 5, key);
+    w.wheelOffset[key].forEach((x, i) => assert.ok(Math.abs(x - n.wheelOffset[key][i]) <= 1e-9 * Math.max(1, Math.abs(x)), `${key}[${i}]`));
+  }
+  // KNOWN GAP: with a non-zero offset the module's derivatives (wheelOffset.sensitivities and
+  // .thickness, and the axis sensitivities) differ from the native build's by up to 3e-4 of their
+  // size, in proportion to the offset (zero offset: 1e-14), while every face agrees to the last
+  // digit; natively they agree with central differences to 1.4e-8. Cause not found yet; held here
+  // to 1e-3 so that the gap is visible and cannot grow unnoticed.
+  assert.equal(w.wheelOffset.thickness.length, 5);
+  w.wheelOffset.thickness.forEach((x, i) => assert.ok(Math.abs(x - n.wheelOffset.thickness[i]) <= 1e-3 * Math.max(1, Math.abs(x)), `thickness[${i}]`));
+  assert.deepEqual(w.wheelOffset.offset, [2, -3, 4, 1, -1.5]);
+  assert.equal(w.wheelOffset.sensitivities.length, 5, 'one topography per point');
+  assert.equal(w.wheelOffset.sensitivities[0].length, 5);
+  assert.equal(w.wheelOffset.sensitivities[0][0].length, 9);
+  assert.ok(maxAbs(diff(w.topography.normal, n.topography.normal)) < 1e-9);
+  for (const key of ['offset', 'dressedR', 'dressedZ']) {
+    assert.equal(w.wheelProfile[key].length, w.wheelProfile.R.length, key);
+    w.wheelProfile[key].forEach((x, i) => assert.ok(Math.abs(x - n.wheelProfile[key][i]) <= 1e-9 * Math.max(1, Math.abs(x)), `${key}[${i}]`));
+  }
+  // The spline goes through its points: the profile's ends are the contact range's ends.
+  const ends = [0, w.wheelProfile.R.length - 1];
+  for (const k of ends) {
+    const i = Math.abs(w.wheelProfile.R[k] - Rmin) < 1e-9 ? 0 : 4;
+    assert.ok(Math.abs(w.wheelProfile.offset[k] - w.wheelOffset.offset[i]) < 1e-9, `offset at the end ${k}`);
+  }
+  // Without an offset the fields are not there.
+  assert.equal(conjugate.wheelOffset, undefined);
+  assert.equal(conjugate.wheelProfile.dressedR, undefined);
+});
+
+test('zero offset grinds today\'s face; + 5 µm of wheel removes 5 µm of material everywhere', () => {
+  const zero = hobsharp.evaluate(withOffset([0, 0, 0]));
+  assert.ok(maxAbs(diff(zero.topography.normal, conjugate.topography.normal)) < 1e-9);
+  const five = hobsharp.evaluate(withOffset([5, 5]));
+  assert.ok(maxAbs(five.topography.normal.map((row) => row.map((x) => x + 5))) < 1e-6, 'the face is -5 µm');
+  assert.ok(five.topography.thickness <= -5 + 1e-6, `thickness ${five.topography.thickness} µm: thinner by at least 5 µm`);
+});
+
+test('wheelOffset.sensitivities agree with central differences of the module\'s faces', () => {
+  const offset = [2, -3, 4, 1, -1.5];
+  const S = hobsharp.evaluate(withOffset(offset)).wheelOffset.sensitivities;
+  const largest = Math.max(...S.map(maxAbs));
+  assert.ok(largest > 0.3, `largest ${largest} µm per µm`);
+  const h = 0.1;
+  for (const k of [0, 2, 4]) {
+    const plus = offset.slice(), minus = offset.slice();
+    plus[k] += h; minus[k] -= h;
+    const tp = hobsharp.evaluate(withOffset(plus)).topography.normal, tm = hobsharp.evaluate(withOffset(minus)).topography.normal;
+    const cd = diff(tp, tm).map((row) => row.map((x) => x / (2 * h)));
+    // Natively 1.4e-8 of the largest (tests/test_wheel_surface.cpp); the module 1.3e-5: see KNOWN GAP above.
+    assert.ok(maxAbs(diff(cd, S[k])) < 1e-4 * largest, `point ${k}: ${maxAbs(diff(cd, S[k]))}`);
+  }
+});
+
+test('a measured wheel: the dressed profile read back gives the same offset and the same face', () => {
+  const dressed = hobsharp.evaluate(withOffset([2, -3, 4, 1, -1.5]));
+  // As a dresser would measure it: (R, Z) in increasing R.
+  const order = dressed.wheelProfile.dressedR.map((_, i) => i).sort((a, b) => dressed.wheelProfile.dressedR[a] - dressed.wheelProfile.dressedR[b]);
+  const c = paper();
+  c.wheel.measuredProfile = { R: order.map((i) => dressed.wheelProfile.dressedR[i]), Z: order.map((i) => dressed.wheelProfile.dressedZ[i]) };
+  const measured = hobsharp.evaluate(c);
+  assert.equal(measured.wheelOffset.R.length, order.length);
+  order.forEach((i, k) => {
+    assert.ok(Math.abs(measured.wheelOffset.R[k] - dressed.wheelProfile.R[i]) < 1e-9, `foot ${k}`);
+    assert.ok(Math.abs(measured.wheelOffset.offset[k] - dressed.wheelProfile.offset[i]) < 1e-6, `offset ${k}`);
+  });
+  // (R, Z) -> offset -> (R, Z): the measured wheel's dressed profile is the measured one.
+  const back = order.map((i) => i);
+  back.forEach((i, k) => {
+    assert.ok(Math.abs(measured.wheelProfile.dressedR[i] - c.wheel.measuredProfile.R[k]) < 1e-6, `R ${k}`);
+    assert.ok(Math.abs(measured.wheelProfile.dressedZ[i] - c.wheel.measuredProfile.Z[k]) < 1e-6, `Z ${k}`);
+  });
+  assert.ok(maxAbs(diff(measured.topography.normal, dressed.topography.normal)) < 0.01, 'the same face within 0.01 µm');
+});
+
+const refusals = [
+  ['one point', (c) => { c.wheel.profileOffset = { R: [40], offset: [1] }; }, 'wheel.profileOffset.R', /at least 2 points/],
+  ['R not increasing', (c) => { c.wheel.profileOffset = { R: [40, 35], offset: [1, 2] }; }, 'wheel.profileOffset.R[1]', /must be greater/],
+  ['R outside the contact range', (c) => { c.wheel.profileOffset = { R: [20, 40], offset: [1, 2] }; }, 'wheel.profileOffset.R[0]', /outside the wheel's contact range/],
+  ['lists of different lengths', (c) => { c.wheel.profileOffset = { R: [35, 40], offset: [1] }; }, 'wheel.profileOffset.offset', /one value per radius/],
+  ['null as an offset', (c) => { c.wheel.profileOffset = { R: [35, 40], offset: [1, null] }; }, 'wheel.profileOffset.offset[1]', /must be a number/],
+  ['a measured wheel short of the range', (c) => {
+    const d = conjugate.wheelProfile, n = d.R.length;
+    const idx = Array.from({ length: n - 20 }, (_, k) => k + 10).sort((a, b) => d.R[a] - d.R[b]);
+    c.wheel.measuredProfile = { R: idx.map((i) => d.R[i]), Z: idx.map((i) => d.Z[i]) };
+  }, 'wheel.measuredProfile', /whole contact range/],
+];
+
+for (const [name, change, field, message] of refusals) {
+  test(`refused: ${name}`, () => {
+    const c = paper();
+    change(c);
+    assert.throws(() => hobsharp.evaluate(c), (e) => {
+      assert.ok(e instanceof HobSharpError, 'a HobSharpError');
+      assert.equal(e.code, 'InvalidInput');
+      assert.equal(e.field, field);
+      assert.match(e.message, message);
+      assert.ok(e.message.startsWith(field), e.message);
+      return true;
+    });
+    // The module stays usable.
+    assert.ok(maxAbs(diff(hobsharp.evaluate(paper()).topography.normal, conjugate.topography.normal)) === 0);
+  });
+}
+
+test('an offset too sharp to grind names the grid point', () => {
+  const c = withOffset(Array.from({ length: 9 }, (_, k) => (k % 2 ? 9000 : -9000)));
+  assert.throws(() => hobsharp.evaluate(c), (e) => e instanceof HobSharpError && e.code === 'Unsolvable' && e.field === 'grid' &&
+    /at the grid point r = /.test(e.message));
+});
