@@ -37,6 +37,10 @@ install_missing() {
 }
 
 install_npm() {
+  # A node_modules that is a link belongs to another work tree: npm ci would empty it under that tree.
+  if [ -L node_modules ] && [ -d node_modules/plotly.js ] && [ -d node_modules/esbuild ] && [ -d node_modules/playwright-core ]; then
+    return
+  fi
   if [ ! -d node_modules/plotly.js ] || [ ! -d node_modules/esbuild ] || [ ! -d node_modules/playwright-core ] ||
      [ package-lock.json -nt node_modules/.package-lock.json ]; then
     echo "== npm ci"
