@@ -263,6 +263,8 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
     v.text({grade.c_str(), "", "the check's grade predicted after the correction", kWithEitherCorrection},
            r ? gradeName(r->grade) : gradeName(Grade::NotGraded));
   }
+}
+
 // The dressed or measured wheel (docs/case-format.md §The wheel's profile): present only when the
 // case gives wheel.profileOffset or wheel.measuredProfile.
 void visitWheelOffset(const Evaluation& e, ResultVisitor& v) {
