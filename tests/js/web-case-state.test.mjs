@@ -121,3 +121,23 @@ test('a history that does not fit its grid is refused by the calculator, naming 
   assert.throws(() => hobsharp.evaluate({ ...paper, passes: bad }),
     (e) => e.field === 'passes[1].correction.probeNoise' && /must be positive/.test(e.message));
 });
+
+test('what the form has no inputs for (inspection, dressed wheel) is kept from the loaded case, sent and saved', async () => {
+  const loaded = { ...paper, wheel: { ...paper.wheel, profileOffset: { R: [30, 40, 49.9], offset: [1, -1, 0.5] } },
+    inspection: { gashDeviations: [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1] } };
+  const inputs = inputsFromCase(loaded);
+  assert.deepEqual(inputs.extra, { wheel: { profileOffset: loaded.wheel.profileOffset }, inspection: loaded.inspection });
+  // The form keeps only its own fields; the state's extra puts the rest back.
+  const form = structuredClone(paper);
+  const state = stateWith({ form, extra: inputs.extra });
+  const sent = caseOf(state);
+  assert.deepEqual(sent.wheel, loaded.wheel);
+  assert.deepEqual(sent.inspection, loaded.inspection);
+  assert.deepEqual(JSON.parse(JSON.stringify(savedCase(state))).inspection, loaded.inspection);
+  inputs.extra.inspection.gashDeviations[0] = 99;
+  assert.equal(loaded.inspection.gashDeviations[0], 0, 'kept as a copy');
+  const hobsharp = await loadHobSharp();
+  const r = hobsharp.evaluate(sent);
+  assert.ok(r.inspection.cumulativeSpacing > 0, 'the calculator gets the gash deviations');
+  assert.ok(r.wheelOffset, 'and the dressed wheel');
+});

@@ -31,8 +31,8 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
     const formCase = form.write(inputs.formCase);
     const measured = setAside ? null : inputs.measured;
     measuredView.setText(setAside ? measuredText(setAside) : measured ? measuredText(measured) : '');
-    const { locked, lockedAxes, tuning, axes, offsets, passes } = inputs;
-    store.setInputs({ form: formCase, measured, locked, lockedAxes, tuning, axes, offsets, passes, paper },
+    const { locked, lockedAxes, tuning, axes, offsets, passes, extra } = inputs;
+    store.setInputs({ form: formCase, measured, locked, lockedAxes, tuning, axes, offsets, passes, paper, extra },
       { source: 'load', force: true });
     store.emit('commit');
   }

@@ -25,6 +25,7 @@ export function initialState() {
     tuning: {},              // the correction's thresholds a loaded case gave: truncation, amplification
     axes: null,              // the run axes of the pass under way (a loaded case's "axes"), or null
     passes: [],              // the grinding passes kept: [{axes, measured}], oldest first (pass-history.js)
+    extra: {},               // case members the form has no inputs for, kept as loaded (io/case-state.js extraOf)
     offsets: {},             // the what-if machine error: axis -> offset per coefficient
     paper: null,             // the paper's own gamma_m and E_t while its example is loaded as derived
     result: null,            // the last good result
@@ -40,6 +41,9 @@ export function initialState() {
 // The pass history is not: nothing computed depends on it (io/case-state.js saves it).
 export function caseOf(state) {
   const c = structuredClone(state.form);
+  for (const [k, v] of Object.entries(state.extra || {})) {
+    c[k] = v !== null && typeof v === 'object' && !Array.isArray(v) && c[k] ? { ...c[k], ...structuredClone(v) } : structuredClone(v);
+  }
   if (state.axes) c.axes = structuredClone(state.axes);
   if (state.measured) {
     c.measured = state.measured;
@@ -49,7 +53,7 @@ export function caseOf(state) {
 }
 
 // The inputs as one value, for undo and redo: everything the user gave.
-const INPUTS = ['form', 'measured', 'locked', 'lockedAxes', 'tuning', 'axes', 'passes', 'offsets', 'paper'];
+const INPUTS = ['form', 'measured', 'locked', 'lockedAxes', 'tuning', 'axes', 'passes', 'offsets', 'paper', 'extra'];
 export function inputsOf(state) {
   return structuredClone(Object.fromEntries(INPUTS.map((k) => [k, state[k]])));
 }

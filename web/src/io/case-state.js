@@ -34,6 +34,21 @@ export function savedCase(state) {
   return c;
 }
 
+// The members of a case the form has no inputs for (the inspection's gash deviations and
+// tolerance table, the measuring machine's points, a dressed or measured wheel): kept as they came
+// and put back into every case the page sends and saves (store.caseOf), so nothing is lost.
+const EXTRA = [['inspection'], ['measuredPoints'], ['wheel', 'profileOffset'], ['wheel', 'measuredProfile']];
+export function extraOf(c) {
+  const out = {};
+  for (const [group, key] of EXTRA) {
+    const v = key ? c[group] && c[group][key] : c[group];
+    if (v === undefined) continue;
+    if (key) out[group] = { ...(out[group] || {}), [key]: structuredClone(v) };
+    else out[group] = structuredClone(v);
+  }
+  return out;
+}
+
 export function calculatorCase(c) {
   if (!isPlainObject(c) || !('page' in c)) return c;
   const { page, ...rest } = c;
@@ -66,7 +81,7 @@ export function inputsFromCase(c) {
   const { measured, correction = {}, axes, passes = [], page, ...formCase } = c;
   const { locked = [], lockedAxes = [], ...tuning } = correction;
   return {
-    formCase, measured: measured === undefined ? null : measured,
+    formCase, measured: measured === undefined ? null : measured, extra: extraOf(formCase),
     locked: [...locked], lockedAxes: [...lockedAxes], tuning: { ...tuning },
     axes: axes === undefined ? null : structuredClone(axes), offsets,
     passes: passes.map(({ axes: a, measured: m, correction: o }) => ({ axes: structuredClone(a), measured: structuredClone(m),
