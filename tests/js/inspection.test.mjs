@@ -4,24 +4,12 @@
 // bad inspection input refused with the field named while the module stays usable.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
-import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { loadHobSharp, HobSharpError } from '../../wasm/hobsharp.mjs';
+import { native, paper, root } from './native-build.mjs';
 
-const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
-const paper = () => JSON.parse(readFileSync(path.join(root, 'tests', 'data', 'tab1.json'), 'utf8'));
-const nativeEval = process.env.HOBSHARP_NATIVE_EVAL || path.join(root, 'build', 'native', 'tests', 'hobsharp_native_eval');
 const hobsharp = await loadHobSharp();
-
-function native(caseObject) {
-  const dir = mkdtempSync(path.join(tmpdir(), 'hobsharp-'));
-  const file = path.join(dir, 'case.json');
-  writeFileSync(file, JSON.stringify(caseObject));
-  return JSON.parse(execFileSync(nativeEval, [file], { encoding: 'utf8' }));
-}
 
 // The paper's grid: radii 19 .. 40 mm (5), axial positions -70 .. 70 mm (9).
 const R = [19, 24.25, 29.5, 34.75, 40];

@@ -5,21 +5,10 @@ import { execFileSync, spawnSync } from 'node:child_process';
 import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { loadHobSharp, HobSharpError } from '../../wasm/hobsharp.mjs';
+import { native, paper, paperFile, root } from './native-build.mjs';
 
-const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
-const paperFile = path.join(root, 'tests', 'data', 'tab1.json');
-const paper = () => JSON.parse(readFileSync(paperFile, 'utf8'));
-const nativeEval = process.env.HOBSHARP_NATIVE_EVAL || path.join(root, 'build', 'native', 'tests', 'hobsharp_native_eval');
 const hobsharp = await loadHobSharp();
-
-function native(caseObject) {
-  const dir = mkdtempSync(path.join(tmpdir(), 'hobsharp-'));
-  const file = path.join(dir, 'case.json');
-  writeFileSync(file, JSON.stringify(caseObject));
-  return JSON.parse(execFileSync(nativeEval, [file], { encoding: 'utf8' }));
-}
 
 function assertClose(actual, expected, tol, what) {
   if (Array.isArray(expected)) {

@@ -56,7 +56,7 @@ test('the store restores a step: the restore event, and a recompute only when th
   for (const e of ['restore', 'inputs']) store.on(e, (d) => seen.push([e, d.source]));
   store.setInputs({ form: { format: 'hobsharp-case/1', setup: { tilt: 15 } }, offsets: { Y: [0.01] } });
   const step = inputsOf(store.state);
-  assert.deepEqual(Object.keys(step).sort(), ['axes', 'form', 'lockedAxes', 'locked', 'measured', 'offsets', 'paper', 'passes', 'tuning'].sort());
+  assert.deepEqual(Object.keys(step).sort(), ['axes', 'extra', 'form', 'lockedAxes', 'locked', 'measured', 'offsets', 'paper', 'passes', 'tuning'].sort());
   store.state.offsets.Y[0] = 0.5;  // a copy: later changes do not reach the step
   assert.deepEqual(step.offsets, { Y: [0.01] });
   seen.length = 0;

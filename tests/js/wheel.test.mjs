@@ -4,24 +4,10 @@
 // wheel's round trip, and the refusals with the field named.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
-import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import path from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { loadHobSharp, HobSharpError } from '../../wasm/hobsharp.mjs';
+import { native, paper } from './native-build.mjs';
 
-const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
-const paper = () => JSON.parse(readFileSync(path.join(root, 'tests', 'data', 'tab1.json'), 'utf8'));
-const nativeEval = process.env.HOBSHARP_NATIVE_EVAL || path.join(root, 'build', 'native', 'tests', 'hobsharp_native_eval');
 const hobsharp = await loadHobSharp();
-
-function native(caseObject) {
-  const dir = mkdtempSync(path.join(tmpdir(), 'hobsharp-'));
-  const file = path.join(dir, 'case.json');
-  writeFileSync(file, JSON.stringify(caseObject));
-  return JSON.parse(execFileSync(nativeEval, [file], { encoding: 'utf8' }));
-}
 
 // The contact range of Tab. 1: the extremes of wheelProfile.R of the conjugate wheel.
 const conjugate = hobsharp.evaluate(paper());
