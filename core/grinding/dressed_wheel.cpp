@@ -1,4 +1,5 @@
 #include "dressed_wheel.h"
+#include "number_text.h"
 
 #include <cmath>
 #include <limits>
@@ -28,13 +29,6 @@ Outcome<MeridianPoint> meridianAtRadius(const SharpeningSetup& s, double r, doub
 
 // Along the meridian tangent (nZ, -nR): zero where the normal through p passes through (R, Z).
 double along(const MeridianPoint& p, double R, double Z) { return (R - p.R) * p.nZ - (Z - p.Z) * p.nR; }
-
-std::string mm(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v << " mm";
-  return s.str();
-}
 
 }  // namespace
 
@@ -75,9 +69,9 @@ Outcome<ProjectedProfile> projectOntoConjugateProfile(const SharpeningSetup& set
     }
     const std::string name = field + "[" + std::to_string(i) + "]";
     if (best < 0)
-      return refuse(name, "the point (R = " + mm(R[i]) + ", Z = " + mm(Z[i]) +
+      return refuse(name, "the point (R = " + mmText(R[i]) + ", Z = " + mmText(Z[i]) +
                               ") has no foot on the wheel's conjugate profile (Eq. 6) between the face radii " +
-                              mm(rLow) + " and " + mm(rHigh) + ": it is not a point of this wheel's profile.");
+                              mmText(rLow) + " and " + mmText(rHigh) + ": it is not a point of this wheel's profile.");
     MeridianPoint a = samples[best], b = samples[best + 1];
     double ga = along(a, R[i], Z[i]), gb = along(b, R[i], Z[i]);
     MeridianPoint p = std::abs(ga) < std::abs(gb) ? a : b;

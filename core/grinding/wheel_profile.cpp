@@ -1,4 +1,5 @@
 #include "wheel_profile.h"
+#include "number_text.h"
 
 #include <cmath>
 #include <sstream>
@@ -9,17 +10,6 @@
 #include "wheel_contact.h"
 
 namespace hobsharp {
-namespace {
-
-std::string mm(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v << " mm";
-  return s.str();
-}
-
-}  // namespace
-
 Outcome<double> contactCoordinate(const ToothFace& face, const UniversalSettings& s,
                                   double normalSign, double u, double wGuess,
                                   const ContactSolverOptions& options) {
@@ -36,7 +26,7 @@ Outcome<double> contactCoordinate(const ToothFace& face, const UniversalSettings
     if (std::abs(step) < options.relativeStepTolerance * (1.0 + std::abs(w))) return w;
   }
   const double radius = std::hypot(u + face.y0Pitch(), face.rakeOffset);
-  return refuse("setup", "no contact between the wheel and the tooth face at radius r = " + mm(radius) +
+  return refuse("setup", "no contact between the wheel and the tooth face at radius r = " + mmText(radius) +
                            ": the equation of meshing (Eq. 5) has no solution there. Check the "
                            "setting angle, tilt and centre distance.",
                 ErrorCode::Unsolvable);
@@ -77,7 +67,7 @@ Outcome<WheelProfile> wheelProfile(const ToothFace& face, const UniversalSetting
       if (!(c.r.x() * side.x() + c.r.y() * side.y() > 0.0))
         return refuse("wheel.outerDiameter",
                       "the wheel is too small for this gash depth: its axis would pass "
-                      "through the tooth face at radius r = " + mm(radii[k]) + ".");
+                      "through the tooth face at radius r = " + mmText(radii[k]) + ".");
       p.w[k] = *w;
       p.R[k] = c.R();
       p.Z[k] = c.Z();
@@ -111,8 +101,8 @@ Outcome<double> centerDistanceFromWheelRim(const ToothFace& face, const Universa
     }
   }
   return refuse("wheel.outerDiameter",
-                "the wheel rim (radius " + mm(wheelRadius) + ") cannot be brought to touch the gash root "
-               "(radius " + mm(rootRadius) + "): no centre distance solves the boundary equation. "
+                "the wheel rim (radius " + mmText(wheelRadius) + ") cannot be brought to touch the gash root "
+               "(radius " + mmText(rootRadius) + "): no centre distance solves the boundary equation. "
                "Give setup.centerDistance or change the wheel.",
                 ErrorCode::Unsolvable);
 }

@@ -1,4 +1,5 @@
 #include "tolerance_table.h"
+#include "number_text.h"
 
 #include <cmath>
 #include <sstream>
@@ -7,13 +8,6 @@ namespace hobsharp {
 namespace {
 
 constexpr double kLargestTolerance = 1e4;  // µm
-
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
 
 }  // namespace
 
@@ -47,10 +41,10 @@ Outcome<void> checkToleranceTable(const ToleranceTable& table, const std::string
   for (std::size_t k = 0; k < table.moduleEdges.size(); ++k) {
     const double m = table.moduleEdges[k];
     const std::string cell = edges + "[" + std::to_string(k) + "]";
-    if (!std::isfinite(m) || m <= 0) return refuse(cell, "must be a positive module in mm; got " + num(m) + ".");
+    if (!std::isfinite(m) || m <= 0) return refuse(cell, "must be a positive module in mm; got " + numberText(m) + ".");
     if (k > 0 && m <= table.moduleEdges[k - 1])
-      return refuse(cell, "must be larger than the edge before it (" + num(table.moduleEdges[k - 1]) + " mm); got " +
-                              num(m) + " mm.");
+      return refuse(cell, "must be larger than the edge before it (" + numberText(table.moduleEdges[k - 1]) + " mm); got " +
+                              numberText(m) + " mm.");
   }
   for (Check check : kChecks) {
     for (ToleranceClass c : kClasses) {
@@ -64,11 +58,11 @@ Outcome<void> checkToleranceTable(const ToleranceTable& table, const std::string
         const std::string cell = row + "[" + std::to_string(b) + "]";
         const double t = *cells[b];
         if (!std::isfinite(t) || t <= 0 || t > kLargestTolerance)
-          return refuse(cell, "must be a tolerance in µm above 0 and at most 10000; got " + num(t) + ".");
+          return refuse(cell, "must be a tolerance in µm above 0 and at most 10000; got " + numberText(t) + ".");
         for (int tighter = 0; tighter < static_cast<int>(c); ++tighter) {
           const std::optional<double> u = table.at(check, kClasses[tighter], static_cast<int>(b));
           if (u && *u > t)
-            return refuse(cell, num(t) + " µm is tighter than class " + className(kClasses[tighter]) + "'s " + num(*u) +
+            return refuse(cell, numberText(t) + " µm is tighter than class " + className(kClasses[tighter]) + "'s " + numberText(*u) +
                                     " µm in the same band; a looser class needs a tolerance at least as large.");
         }
       }

@@ -1,4 +1,5 @@
 #include "sharpening_job.h"
+#include "number_text.h"
 
 #include <cmath>
 #include <sstream>
@@ -13,16 +14,9 @@
 namespace hobsharp {
 namespace {
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
-
 Outcome<void> positive(const std::string& field, double v, const char* unit) {
   if (!std::isfinite(v)) return refuse(field, "must be a finite number.");
-  if (v <= 0) return refuse(field, "must be positive; got " + num(v) + " " + unit + ".");
+  if (v <= 0) return refuse(field, "must be positive; got " + numberText(v) + " " + unit + ".");
   return success();
 }
 
@@ -40,36 +34,36 @@ Outcome<void> checkHob(const HobInput& h) {
     if (auto r = positive(field, v, unit); !r) return r;
   if (auto r = finite("hob.rakeOffset", h.rakeOffset); !r) return r;
   if (!(h.normalPressureAngle > 0 && h.normalPressureAngle < 45))
-    return refuse("hob.normalPressureAngle", "must lie between 0 and 45 deg; got " + num(h.normalPressureAngle) + " deg.");
+    return refuse("hob.normalPressureAngle", "must lie between 0 and 45 deg; got " + numberText(h.normalPressureAngle) + " deg.");
   if (h.pitchDiameter >= h.outerDiameter)
-    return refuse("hob.pitchDiameter", "must be smaller than hob.outerDiameter (" + num(h.outerDiameter) +
-                                           " mm); got " + num(h.pitchDiameter) + " mm.");
+    return refuse("hob.pitchDiameter", "must be smaller than hob.outerDiameter (" + numberText(h.outerDiameter) +
+                                           " mm); got " + numberText(h.pitchDiameter) + " mm.");
   const double ra = h.outerDiameter / 2, rp = h.pitchDiameter / 2;
   if (h.gashDepth >= ra)
-    return refuse("hob.gashDepth", "must be less than the hob radius (" + num(ra) + " mm); got " +
-                                       num(h.gashDepth) + " mm.");
+    return refuse("hob.gashDepth", "must be less than the hob radius (" + numberText(ra) + " mm); got " +
+                                       numberText(h.gashDepth) + " mm.");
   if (ra - h.gashDepth >= rp)
     return refuse("hob.gashDepth", "the gash must reach below the pitch diameter: the root radius " +
-                                       num(ra - h.gashDepth) + " mm is not below the pitch radius " +
-                                       num(rp) + " mm.");
+                                       numberText(ra - h.gashDepth) + " mm is not below the pitch radius " +
+                                       numberText(rp) + " mm.");
   if (std::abs(h.rakeOffset) >= rp)
-    return refuse("hob.rakeOffset", "|e| must be less than the pitch radius (" + num(rp) + " mm); got " +
-                                        num(h.rakeOffset) + " mm.");
+    return refuse("hob.rakeOffset", "|e| must be less than the pitch radius (" + numberText(rp) + " mm); got " +
+                                        numberText(h.rakeOffset) + " mm.");
   if (std::abs(h.rakeOffset) >= ra - h.gashDepth)
     return refuse("hob.rakeOffset", "|e| must be less than the gash root radius (" +
-                                        num(ra - h.gashDepth) + " mm); got " + num(h.rakeOffset) + " mm.");
+                                        numberText(ra - h.gashDepth) + " mm); got " + numberText(h.rakeOffset) + " mm.");
   if (h.gash == GashKind::Helical) {
     if (!h.gashLead && !h.gashHelixAngle)
       return refuse("hob.gashLead", "a helical gash needs hob.gashLead or hob.gashHelixAngle.");
     if (h.gashLead)
       if (auto r = positive("hob.gashLead", *h.gashLead, "mm"); !r) return r;
     if (h.gashHelixAngle && !(*h.gashHelixAngle > 0 && *h.gashHelixAngle < 90))
-      return refuse("hob.gashHelixAngle", "must lie between 0 and 90 deg; got " + num(*h.gashHelixAngle) + " deg.");
+      return refuse("hob.gashHelixAngle", "must lie between 0 and 90 deg; got " + numberText(*h.gashHelixAngle) + " deg.");
     if (h.gashLead && h.gashHelixAngle) {
       const double fromLead = helixAngleFromLead(*h.gashLead, rp) * kDegPerRad;
       if (std::abs(fromLead - *h.gashHelixAngle) > kHelixAngleAgreement)
-        return refuse("hob.gashHelixAngle", num(*h.gashHelixAngle) + " deg disagrees with hob.gashLead " +
-                                                num(*h.gashLead) + " mm, which gives " + num(fromLead) +
+        return refuse("hob.gashHelixAngle", numberText(*h.gashHelixAngle) + " deg disagrees with hob.gashLead " +
+                                                numberText(*h.gashLead) + " mm, which gives " + numberText(fromLead) +
                                                 " deg at the pitch diameter. Give one of the two.");
     }
   }
@@ -101,19 +95,19 @@ Outcome<FaceGrid> checkGrid(const GridInput& g, const SharpeningJob& job, double
                           std::pair{"grid.xMin", xMin}, std::pair{"grid.xMax", xMax}})
     if (auto r = finite(field, v); !r) return r.error();
   if (rMin < job.rootRadius - kGridTolerance)
-    return refuse("grid.rMin", num(rMin) + " mm lies below the gash root (radius " + num(job.rootRadius) + " mm).");
+    return refuse("grid.rMin", numberText(rMin) + " mm lies below the gash root (radius " + numberText(job.rootRadius) + " mm).");
   if (rMax > job.outerRadius + kGridTolerance)
-    return refuse("grid.rMax", num(rMax) + " mm lies beyond the hob's outer radius (" + num(job.outerRadius) + " mm).");
-  if (rMin >= rMax) return refuse("grid.rMax", "must be greater than grid.rMin (" + num(rMin) + " mm).");
-  if (xMin >= xMax) return refuse("grid.xMax", "must be greater than grid.xMin (" + num(xMin) + " mm).");
+    return refuse("grid.rMax", numberText(rMax) + " mm lies beyond the hob's outer radius (" + numberText(job.outerRadius) + " mm).");
+  if (rMin >= rMax) return refuse("grid.rMax", "must be greater than grid.rMin (" + numberText(rMin) + " mm).");
+  if (xMin >= xMax) return refuse("grid.xMax", "must be greater than grid.xMin (" + numberText(xMin) + " mm).");
   // The face spans the hob length: centred on the hob (x = 0) or, as the default grid is, on the
   // contact line at phi_1 = 0 (x = xCentre); either is accepted.
   const double tol = kGridTolerance * (1 + job.input.hob.length);
   const double reach = half + std::abs(xCentre) + tol;
   if (xMax - xMin > 2 * half + tol || xMin < -reach || xMax > reach)
     return refuse(xMin < -reach ? "grid.xMin" : "grid.xMax",
-                  "the grid (x = " + num(xMin) + " to " + num(xMax) + " mm) reaches past the hob's ends: the face is " +
-                      num(2 * half) + " mm long, centred at x = 0 or on the contact line at x = " + num(xCentre) + " mm.");
+                  "the grid (x = " + numberText(xMin) + " to " + numberText(xMax) + " mm) reaches past the hob's ends: the face is " +
+                      numberText(2 * half) + " mm long, centred at x = 0 or on the contact line at x = " + numberText(xCentre) + " mm.");
   return FaceGrid::even(radial, axial, rMin, rMax, xMin, xMax);
 }
 
@@ -143,8 +137,8 @@ Outcome<void> checkMeasured(const Eigen::MatrixXd& m, const FaceGrid& grid, cons
     for (int j = 0; j < m.cols(); ++j)
       if (!std::isfinite(m(i, j)) || std::abs(m(i, j)) > kMaxDeviation)
         return refuse(name + "[" + std::to_string(i) + "][" + std::to_string(j) + "]",
-                      std::isfinite(m(i, j)) ? "must lie within ±" + num(kMaxDeviation) + " µm (10 mm); got " +
-                                                   num(m(i, j)) + " µm."
+                      std::isfinite(m(i, j)) ? "must lie within ±" + numberText(kMaxDeviation) + " µm (10 mm); got " +
+                                                   numberText(m(i, j)) + " µm."
                                              : "must be a finite number.");
   return success();
 }
@@ -162,10 +156,10 @@ Outcome<CorrectionOptions> correctionOptions(const CorrectionInput& c, int degre
     if (!std::isfinite(*c.probeNoise)) return refuse(name + ".probeNoise", "must be a finite number.");
     if (*c.probeNoise <= 0)
       return refuse(name + ".probeNoise", "the probe's standard deviation must be positive; got " +
-                                                 num(*c.probeNoise) + " µm.");
+                                                 numberText(*c.probeNoise) + " µm.");
     if (*c.probeNoise > kMaxDeviation)
-      return refuse(name + ".probeNoise", "must be at most " + num(kMaxDeviation) + " µm (10 mm); got " +
-                                                 num(*c.probeNoise) + " µm.");
+      return refuse(name + ".probeNoise", "must be at most " + numberText(kMaxDeviation) + " µm (10 mm); got " +
+                                                 numberText(*c.probeNoise) + " µm.");
     o.probeNoise = *c.probeNoise;
   }
   for (Axis a : kAxes) {
@@ -178,19 +172,19 @@ Outcome<CorrectionOptions> correctionOptions(const CorrectionInput& c, int degre
     const double least = isRotary(a) ? kLeastRotaryResolution : kLeastLinearResolution;
     const double most = isRotary(a) ? kMostRotaryResolution : kMostLinearResolution;
     if (*r < least || *r > most)
-      return refuse(field, "must lie between " + num(least) + " and " + num(most) + (isRotary(a) ? " deg" : " µm") +
-                               "; got " + num(*r) + (isRotary(a) ? " deg." : " µm."));
+      return refuse(field, "must lie between " + numberText(least) + " and " + numberText(most) + (isRotary(a) ? " deg" : " µm") +
+                               "; got " + numberText(*r) + (isRotary(a) ? " deg." : " µm."));
     o.resolution.step[static_cast<int>(a)] = *r;
   }
   if (c.truncation) {
     if (!(*c.truncation > 0 && *c.truncation < 1))
-      return refuse(name + ".truncation", "must lie between 0 and 1; got " + num(*c.truncation) + ".");
+      return refuse(name + ".truncation", "must lie between 0 and 1; got " + numberText(*c.truncation) + ".");
     o.truncation = *c.truncation;
   }
   if (c.amplification) {
     if (!(*c.amplification >= 1 && std::isfinite(*c.amplification)))
       return refuse(name + ".amplification", "must be a finite number of at least 1; got " +
-                                                    num(*c.amplification) + ".");
+                                                    numberText(*c.amplification) + ".");
     o.amplification = *c.amplification;
   }
   for (const Coefficient& k : c.locked)
@@ -206,9 +200,9 @@ Outcome<CorrectionOptions> correctionOptions(const CorrectionInput& c, int degre
 Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   if (auto r = checkHob(in.hob); !r) return r.error();
   if (auto r = positive("wheel.outerDiameter", in.wheelOuterDiameter, "mm"); !r) return r.error();
-  if (!(std::abs(in.tilt) < 90)) return refuse("setup.tilt", "must lie between -90 and 90 deg; got " + num(in.tilt) + " deg.");
+  if (!(std::abs(in.tilt) < 90)) return refuse("setup.tilt", "must lie between -90 and 90 deg; got " + numberText(in.tilt) + " deg.");
   if (in.settingAngle && !(std::abs(*in.settingAngle) < 90))
-    return refuse("setup.settingAngle", "must lie between -90 and 90 deg; got " + num(*in.settingAngle) + " deg.");
+    return refuse("setup.settingAngle", "must lie between -90 and 90 deg; got " + numberText(*in.settingAngle) + " deg.");
   if (in.centerDistance)
     if (auto r = positive("setup.centerDistance", *in.centerDistance, "mm"); !r) return r.error();
   if (auto r = finite("machine.K1", in.machine.K1); !r) return r.error();
@@ -244,9 +238,9 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   if (!ends) return ends.error();
   if (ends->R[0] > job.wheelRadius + kGridTolerance)
     return refuse("wheel.outerDiameter",
-                  "the wheel is too small to reach the gash root: at the root radius " + num(job.rootRadius) +
-                      " mm the wheel needs a radius of " + num(ends->R[0]) + " mm, but it has " +
-                      num(job.wheelRadius) + " mm. Use a larger wheel or a smaller setup.centerDistance.");
+                  "the wheel is too small to reach the gash root: at the root radius " + numberText(job.rootRadius) +
+                      " mm the wheel needs a radius of " + numberText(ends->R[0]) + " mm, but it has " +
+                      numberText(job.wheelRadius) + " mm. Use a larger wheel or a smaller setup.centerDistance.");
 
   // The wheel as dressed or measured (wheel_input.h), or the conjugate wheel.
   auto wheel = resolveWheelSurface(in, job.setup, job.rootRadius, job.outerRadius);

@@ -1,4 +1,5 @@
 #include "wheel_input.h"
+#include "number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,13 +17,6 @@ constexpr int kContactRangePoints = 41;
 // How far a given radius may lie past the contact range, mm (as a grid past the face).
 constexpr double kRangeTolerance = 1e-3;
 
-std::string num(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
-
 std::string at(const std::string& name, size_t i) { return name + "[" + std::to_string(i) + "]"; }
 
 // R strictly increasing, every value finite, at least 2 points.
@@ -32,8 +26,8 @@ Outcome<void> checkRadii(const std::vector<double>& R, const std::string& name) 
   for (size_t i = 0; i < R.size(); ++i) {
     if (!std::isfinite(R[i])) return refuse(at(name, i), "must be a finite number.");
     if (i > 0 && !(R[i] > R[i - 1]))
-      return refuse(at(name, i), "must be greater than the radius before it (" + num(R[i - 1]) + " mm); got " +
-                                     num(R[i]) + " mm. Give the radii in increasing order.");
+      return refuse(at(name, i), "must be greater than the radius before it (" + numberText(R[i - 1]) + " mm); got " +
+                                     numberText(R[i]) + " mm. Give the radii in increasing order.");
   }
   return success();
 }
@@ -54,7 +48,7 @@ Outcome<WheelSurface> resolveWheelSurface(const CaseInput& in, const SharpeningS
   if (!in.wheelProfileOffset && !in.wheelMeasuredProfile) return wheel;
   auto range = wheelContactRange(setup, rootRadius, outerRadius);
   if (!range) return range.error();
-  const std::string rangeText = num(range->min) + " to " + num(range->max) + " mm";
+  const std::string rangeText = numberText(range->min) + " to " + numberText(range->max) + " mm";
 
   if (in.wheelProfileOffset) {
     const WheelPointsInput& o = *in.wheelProfileOffset;
@@ -63,12 +57,12 @@ Outcome<WheelSurface> resolveWheelSurface(const CaseInput& in, const SharpeningS
     std::vector<double> y;
     for (size_t i = 0; i < o.R.size(); ++i) {
       if (o.R[i] < range->min - kRangeTolerance || o.R[i] > range->max + kRangeTolerance)
-        return refuse(at(R, i), num(o.R[i]) + " mm lies outside the wheel's contact range: the wheel grinds the face "
+        return refuse(at(R, i), numberText(o.R[i]) + " mm lies outside the wheel's contact range: the wheel grinds the face "
                                 "from root to tip with the radii R = " + rangeText + ".");
       if (!std::isfinite(o.values[i])) return refuse(at(offset, i), "must be a finite number.");
       if (std::abs(o.values[i]) > kMaxWheelOffset)
-        return refuse(at(offset, i), "must lie within ±" + num(kMaxWheelOffset) + " µm (10 mm); got " +
-                                         num(o.values[i]) + " µm.");
+        return refuse(at(offset, i), "must lie within ±" + numberText(kMaxWheelOffset) + " µm (10 mm); got " +
+                                         numberText(o.values[i]) + " µm.");
       y.push_back(o.values[i] / kMicrometresPerMm);
     }
     wheel.offset = CubicSpline(o.R, std::move(y));
@@ -89,18 +83,18 @@ Outcome<WheelSurface> resolveWheelSurface(const CaseInput& in, const SharpeningS
   // The feet's radii in the order of the points, and covering the contact range.
   for (size_t i = 1; i < projected->R.size(); ++i)
     if (!(projected->R[i] > projected->R[i - 1]))
-      return refuse(at(R, i), "projected onto the conjugate profile, this point falls at R = " + num(projected->R[i]) +
-                                  " mm, not beyond the point before it (" + num(projected->R[i - 1]) +
+      return refuse(at(R, i), "projected onto the conjugate profile, this point falls at R = " + numberText(projected->R[i]) +
+                                  " mm, not beyond the point before it (" + numberText(projected->R[i - 1]) +
                                   " mm): the measured profile folds back.");
   const double lo = projected->R.front(), hi = projected->R.back();
   if (lo > range->min + kRangeTolerance || hi < range->max - kRangeTolerance)
-    return refuse("wheel.measuredProfile", "covers the conjugate wheel radii R = " + num(lo) + " to " + num(hi) +
+    return refuse("wheel.measuredProfile", "covers the conjugate wheel radii R = " + numberText(lo) + " to " + numberText(hi) +
                                                " mm only; the wheel grinds the face with R = " + rangeText +
                                                ". Measure the profile over the whole contact range.");
   for (size_t i = 0; i < projected->offset.size(); ++i)
     if (std::abs(projected->offset[i]) * kMicrometresPerMm > kMaxWheelOffset)
-      return refuse(at(Z, i), "lies " + num(projected->offset[i]) + " mm from the conjugate profile, more than " +
-                                  num(kMaxWheelOffset / kMicrometresPerMm) + " mm: not a profile of this wheel.");
+      return refuse(at(Z, i), "lies " + numberText(projected->offset[i]) + " mm from the conjugate profile, more than " +
+                                  numberText(kMaxWheelOffset / kMicrometresPerMm) + " mm: not a profile of this wheel.");
   wheel.offset = CubicSpline(projected->R, projected->offset);
   return wheel;
 }
