@@ -3,6 +3,7 @@
 // the travel in mm (straight gash), and a table of axis positions over the motion range.
 // The calculator's polynomials are of phi in rad with A and B in rad (docs/conventions.md).
 import { AXES, isRotary } from './limits.js';
+import { polynomialAt } from './polynomial.js';
 
 const DEG = 180 / Math.PI;
 
@@ -24,8 +25,6 @@ export const machineUnit = (axis, k, helical) => {
   return `${base}/${per}${k > 1 ? `^${k}` : ''}`;
 };
 
-const evaluate = (coefficients, t) => coefficients.reduceRight((acc, c) => acc * t + c, 0);
-
 // Positions over the motion range [min, max] (rad or mm, as the result gives it), every `step`
 // (deg or mm) from min, both ends included: rows [motion (deg or mm), X, Y, Z (mm), A, B (deg)].
 // Throws an Error naming the step when it is not a positive number or gives too many rows.
@@ -36,7 +35,7 @@ export function axisPositions(axes, min, max, step, helical) {
   const n = Math.floor((hi - lo) / step + 1e-9);
   if (n + 2 > MAX_POSITION_ROWS) throw new Error(`Step: ${step} ${helical ? 'deg' : 'mm'} gives more than ${MAX_POSITION_ROWS} rows over the motion range (${(hi - lo).toFixed(3)} ${helical ? 'deg' : 'mm'}); take a larger step.`);
   const m = machineCoefficients(axes, helical);
-  const at = (t) => [t, ...AXES.map((a) => evaluate(m[a], t))];
+  const at = (t) => [t, ...AXES.map((a) => polynomialAt(m[a], t))];
   const rows = [];
   for (let i = 0; i <= n; i++) rows.push(at(lo + i * step));
   if (hi - rows[rows.length - 1][0] > 1e-9 * Math.max(1, Math.abs(hi))) rows.push(at(hi));

@@ -3,9 +3,9 @@
 // motions themselves); without one, the nominal motions in mm and rad.
 import { AXES, isRotary } from '../limits.js';
 import { motionSymbol, motionUnit } from '../format.js';
+import { polynomialAt } from '../polynomial.js';
 
 const ARCSEC_PER_RAD = (180 / Math.PI) * 3600;
-const polyAt = (c, t) => c.reduceRight((acc, a) => acc * t + a, 0);
 
 export function drawAxisMotion(Plotly, el, r) {
   const n = 121, lo = r.motion.min, hi = r.motion.max;
@@ -14,7 +14,7 @@ export function drawAxisMotion(Plotly, el, r) {
   const traces = AXES.map((a) => {
     const scale = corrected ? (isRotary(a) ? ARCSEC_PER_RAD : 1000) : 1;
     const unit = corrected ? (isRotary(a) ? '″' : 'µm') : (isRotary(a) ? 'rad' : 'mm');
-    const y = t.map((v) => scale * (corrected ? polyAt(corrected[a], v) - polyAt(r.axes[a], v) : polyAt(r.axes[a], v)));
+    const y = t.map((v) => scale * (corrected ? polynomialAt(corrected[a], v) - polynomialAt(r.axes[a], v) : polynomialAt(r.axes[a], v)));
     return {
       x: t, y, name: corrected ? `Δ${a}` : a, mode: 'lines', yaxis: isRotary(a) ? 'y2' : 'y',
       line: { dash: isRotary(a) ? 'dot' : 'solid' },
