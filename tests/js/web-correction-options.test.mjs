@@ -26,9 +26,17 @@ test('an option typed, changed and blanked again: the case holds only what diffe
 });
 
 test('what the inputs show, and whether the noise is the page\'s own for a simulated grid', () => {
-  assert.deepEqual(optionTexts({}, 'nonlinear'), { method: 'nonlinear', probeNoise: '', resolution: {}, simulated: false });
+  assert.deepEqual(optionTexts({}, 'nonlinear'), { method: 'nonlinear', probeNoise: '', resolution: {}, simulated: false, wheel: false });
   const t = optionTexts({ probeNoise: SIMULATED_NOISE, resolution: { X: 0.5 }, method: 'linear' }, 'nonlinear');
-  assert.deepEqual(t, { method: 'linear', probeNoise: '0.0001', resolution: { X: '0.5' }, simulated: true });
+  assert.deepEqual(t, { method: 'linear', probeNoise: '0.0001', resolution: { X: '0.5' }, simulated: true, wheel: false });
+});
+
+test('the wheel tick: true is kept in the case, unticking leaves it out', () => {
+  const t = withOption({ probeNoise: 1 }, 'wheel', true, 'nonlinear');
+  assert.deepEqual(t, { probeNoise: 1, wheel: true });
+  assert.equal(optionTexts(t, 'nonlinear').wheel, true);
+  assert.deepEqual(withOption(t, 'wheel', false, 'nonlinear'), { probeNoise: 1 });
+  assert.ok(OPTION_FIELD.test('correction.wheel'));
 });
 
 test('the option fields are told from the grid and the locks', () => {

@@ -90,3 +90,13 @@ export function profileCsv(r) {
   p.r.forEach((radius, i) => rows.push(`${radius},${p.R[i]},${p.Z[i]}`));
   return rows.join('\n') + '\n';
 }
+
+// The dresser path: the wheel's axial profile after the proposed offset (correction.dresserPath),
+// in the frame of the profile points; read back by io/wheel-import.js as a measured wheel.
+export function dresserCsv(r) {
+  const d = r.correction.dresserPath;
+  const rows = ['# dresser path: the wheel axial profile with the proposed offset dressed (HobSharp correction.dresserPath)',
+    '# R wheel radius, Z along the wheel axis (mm), in the frame of the wheel profile points', 'R_mm,Z_mm'];
+  d.R.forEach((radius, i) => rows.push(`${radius},${d.Z[i]}`));
+  return rows.join('\n') + '\n';
+}

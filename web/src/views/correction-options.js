@@ -30,6 +30,7 @@ export function mountCorrectionOptions(store) {
   const show = (state) => {
     const t = optionTexts(state.tuning, CORRECTION.defaultMethod || 'nonlinear');
     $('#correction-method').value = t.method;
+    $('#correct-wheel').checked = t.wheel;
     const noise = $('#probe-noise');
     if (document.activeElement !== noise) noise.value = t.probeNoise;
     $('#probe-noise-note').textContent = t.simulated
@@ -42,10 +43,10 @@ export function mountCorrectionOptions(store) {
   };
   const changed = (event) => {
     const el = event.target;
-    const key = el.id === 'correction-method' ? 'method' : el.id === 'probe-noise' ? 'probeNoise'
+    const key = el.id === 'correction-method' ? 'method' : el.id === 'correct-wheel' ? 'wheel' : el.id === 'probe-noise' ? 'probeNoise'
       : el.dataset.resolution ? `resolution.${el.dataset.resolution}` : null;
     if (!key) return;
-    const tuning = withOption(store.state.tuning, key, el.value, CORRECTION.defaultMethod || 'nonlinear');
+    const tuning = withOption(store.state.tuning, key, el.type === 'checkbox' ? el.checked : el.value, CORRECTION.defaultMethod || 'nonlinear');
     store.setInputs({ tuning }, { source: 'correction-options', at: event.timeStamp });
     show(store.state);  // also when no measured grid is in use, and so nothing is recomputed
     if (event.type === 'change') store.emit('commit');
@@ -60,7 +61,8 @@ export function mountCorrectionOptions(store) {
     clearError();
     const [, , , axis] = /^correction\.(\w+)(\.([XYZAB]))?$/.exec(error.field) || [];
     const input = axis ? $(`[data-resolution="${axis}"]`)
-      : error.field === 'correction.probeNoise' ? $('#probe-noise') : error.field === 'correction.method' ? $('#correction-method') : null;
+      : error.field === 'correction.probeNoise' ? $('#probe-noise') : error.field === 'correction.method' ? $('#correction-method')
+        : error.field === 'correction.wheel' ? $('#correct-wheel') : null;
     if (input) { input.classList.add('invalid'); input.setAttribute('aria-invalid', 'true'); }
     const note = $('#correction-options-error');
     note.textContent = error.message;

@@ -1,8 +1,13 @@
-// The wheel's axial profile (Fig. 4), and its points as CSV for a dresser.
+// The wheel's axial profile (Fig. 4), with the offsets along its normal on a secondary scale in
+// µm (as dressed, proposed by the correction, and both: wheel-offsets.js), the dresser path the
+// correction proposes, and their points as CSV: the profile, and the dresser path for a CNC dresser.
 import { fixed } from '../format.js';
 import { download } from '../io/files.js';
-import { profileCsv } from '../io/results-csv.js';
+import { dresserCsv, profileCsv } from '../io/results-csv.js';
+import { offsetRange, wheelOffsetCurves } from '../wheel-offsets.js';
 import { pinnedProfile } from './pin.js';
+
+const OFFSET_COLOURS = ['#1b7837', '#b35806', '#542788'];
 
 function drawWheel(Plotly, r, state) {
   const p = r.wheelProfile;
@@ -10,20 +15,46 @@ function drawWheel(Plotly, r, state) {
   const note = document.querySelector('#wheel-pin');
   note.hidden = !pinned;
   note.textContent = pinned ? pinned.text : '';
-  return Plotly.react('plot-wheel', [...(pinned ? [pinned.trace] : []), {
-    x: p.Z, y: p.R, mode: 'lines+markers', marker: { size: 4 }, name: 'axial profile',
+  const dresser = r.correction && r.correction.dresserPath;
+  const curves = wheelOffsetCurves(r);
+  const traces = [...(pinned ? [pinned.trace] : []), {
+    x: p.Z, y: p.R, mode: 'lines+markers', marker: { size: 4 }, name: p.dressedR ? 'conjugate profile (Eqs. 3-6)' : 'axial profile',
     text: p.r.map((v) => `tooth-face radius r = ${fixed(v, 3)} mm`),
     hovertemplate: 'Z = %{x:.4f} mm<br>R = %{y:.4f} mm<br>%{text}<extra></extra>',
-  }], {
-    title: { text: 'Wheel axial profile (R against Z)' }, height: 360, margin: { t: 40, r: 20, b: 50, l: 60 },
+  }];
+  if (dresser) {
+    traces.push({ x: dresser.Z, y: dresser.R, mode: 'lines', name: 'dresser path (corrected)', line: { dash: 'dash', color: '#542788' },
+      hovertemplate: 'dresser path<br>Z = %{x:.5f} mm<br>R = %{y:.4f} mm<extra></extra>' });
+  }
+  curves.forEach((c, i) => traces.push({
+    x: c.offset, y: c.R, xaxis: 'x2', mode: c.R.length > 12 ? 'lines' : 'lines+markers', name: `${c.name} (µm, top scale)`,
+    line: { color: OFFSET_COLOURS[i % OFFSET_COLOURS.length], width: 2 },
+    hovertemplate: `${c.name}<br>R = %{y:.3f} mm<br>offset %{x:.3f} µm<extra></extra>`,
+  }));
+  const layout = {
+    // With the offsets' scale at the top, its title takes the title's place (the section's heading names the plot).
+    title: { text: curves.length ? '' : 'Wheel axial profile (R against Z)' }, height: curves.length ? 400 : 360,
+    margin: { t: curves.length ? 60 : 40, r: 20, b: 50, l: 60 },
     xaxis: { title: { text: 'Z, along the wheel axis (mm)' } },
     yaxis: { title: { text: 'R, wheel radius (mm)' }, scaleanchor: 'x', scaleratio: 1 },
-  }, { responsive: true, displaylogo: false });
+    legend: { orientation: 'h', y: -0.2 },
+  };
+  if (curves.length) {
+    layout.xaxis2 = { title: { text: 'offset along the profile normal, µm (+ = more wheel), exaggerated' }, overlaying: 'x',
+      side: 'top', range: offsetRange(curves), zeroline: true, showgrid: false };
+  }
+  return Plotly.react('plot-wheel', traces, layout, { responsive: true, displaylogo: false });
 }
 
 export function mountWheel(store, plots) {
   plots.add(({ Plotly, result, state }) => drawWheel(Plotly, result, state));
+  const dresserButton = document.querySelector('#download-dresser');
+  store.on('result', (_, state) => { dresserButton.disabled = !(state.result.correction && state.result.correction.dresserPath); });
   document.querySelector('#download-profile').addEventListener('click', () => {
     if (store.state.result) download('hobsharp-wheel-profile.csv', profileCsv(store.state.result), 'text/csv');
+  });
+  dresserButton.addEventListener('click', () => {
+    const r = store.state.result;
+    if (r && r.correction && r.correction.dresserPath) download('hobsharp-dresser-path.csv', dresserCsv(r), 'text/csv');
   });
 }

@@ -1,0 +1,126 @@
+// The wheel on the page (issue 12): a dressed or measured wheel loaded from CSV, shown on Fig. 4's
+// µm scale and ground into the face; a file the page cannot read, or a wheel the calculator
+// refuses, named at the wheel with nothing else lost; and, with "also correct the wheel's profile",
+// the proposed offset, the dresser path as CSV and the face split into axes, wheel and what is left.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
+import { afterError, afterResult, base, colours, openPage, plotted, root, shots, useBrowser } from './support.mjs';
+import { readWheelCsv } from '../../web/src/io/wheel-import.js';
+import { loadHobSharp } from '../../wasm/hobsharp.mjs';
+
+useBrowser();
+const desk = { viewport: { width: 1366, height: 900 } };
+const paper = JSON.parse(readFileSync(path.join(root, 'tests', 'data', 'tab1.json'), 'utf8'));
+const csvFile = (name, text) => ({ name, mimeType: 'text/csv', buffer: Buffer.from(text) });
+const rmsShown = async (page) => Number(/^rms ([\d.]+) µm/.exec(await page.textContent('#figures-before'))[1]);
+const wheelTraces = (page) => page.$eval('#plot-wheel', (el) => el.data.map((t) => ({ name: t.name, xaxis: t.xaxis || 'x' })));
+
+test('a dressed wheel from a CSV file grinds the face, and Fig. 4 shows its offset in µm', async () => {
+  const page = await openPage(base, desk);
+  await plotted(page);
+  assert.match(await page.textContent('#wheel-source'), /conjugate profile/);
+  assert.ok(await page.isDisabled('#wheel-conjugate'));
+  assert.ok(await page.isDisabled('#download-dresser'), 'no dresser path without a wheel correction');
+  assert.ok(await rmsShown(page) < 1e-3, 'nominal axes, conjugate wheel: no deviation');
+
+  // Semicolons and decimal commas, as a German dresser writes them; +4 µm in the middle of the contact range.
+  await afterResult(page, () => page.setInputFiles('#wheel-file', csvFile('dressed.csv', 'R (mm);offset (µm)\n29,6;0\n40;4\n49,9;0\n')));
+  assert.match(await page.textContent('#wheel-source'), /dressed wheel: an offset at 3 points, R 29\.6 to 49\.9 mm, 0 to 4 µm/);
+  assert.match(await page.textContent('#wheel-read'), /Read dressed\.csv: 3 points \(semicolons with decimal commas\)/);
+  const dressedRms = await rmsShown(page);
+  assert.ok(dressedRms > 0.5 && dressedRms < 4, `more wheel grinds deeper: rms ${dressedRms} µm`);
+  await plotted(page);
+  const traces = await wheelTraces(page);
+  assert.deepEqual(traces.filter((t) => t.xaxis === 'x2').map((t) => t.name), ['offset as dressed (µm, top scale)']);
+  assert.ok(await colours(page, '#plot-wheel') > 8, 'Fig. 4 draws');
+  await page.locator('#wheel-section').screenshot({ path: path.join(shots, 'wheel-dressed.png') });
+
+  // A file the page cannot read: named by line and column; the wheel in use stays.
+  await page.setInputFiles('#wheel-file', csvFile('bad.csv', 'R (mm),offset\n30,1\n40,2\n'));
+  assert.match(await page.textContent('#wheel-error'), /Line 1, column 2: "offset" has no unit; write offset \(µm\)\. The wheel in use is unchanged\./);
+  assert.match(await page.textContent('#wheel-source'), /offset at 3 points/);
+  assert.equal(await rmsShown(page), dressedRms);
+
+  // Back to the conjugate wheel, and undone.
+  await afterResult(page, () => page.click('#wheel-conjugate'));
+  assert.match(await page.textContent('#wheel-source'), /conjugate profile/);
+  assert.ok(await page.isHidden('#wheel-error'));
+  assert.ok(await rmsShown(page) < 1e-3);
+  await afterResult(page, () => page.click('#undo'));
+  assert.match(await page.textContent('#wheel-source'), /offset at 3 points/);
+  assert.equal(await rmsShown(page), dressedRms);
+
+  // A wheel the calculator refuses (beyond the contact range): named at the wheel, the form untouched.
+  await afterError(page, () => page.setInputFiles('#wheel-file', csvFile('wide.csv', 'R_mm,offset_um\n10,0\n60,1\n')));
+  assert.match(await page.textContent('#wheel-error'), /wheel\.profileOffset|contact range/);
+  assert.ok(await page.isHidden('#form-error'), 'not shown as a form error');
+  assert.equal(await page.inputValue('[data-field="hob.normalModule"]'), '7');
+  await afterResult(page, () => page.click('#wheel-conjugate'));
+  assert.ok(await page.isHidden('#wheel-error'));
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('the page\'s own profile export reads back as a measured wheel that grinds the nominal face', async () => {
+  const page = await openPage(base, desk);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-profile')]);
+  const text = readFileSync(await download.path(), 'utf8');
+  await afterResult(page, () => page.setInputFiles('#wheel-file', csvFile('profile.csv', text)));
+  assert.match(await page.textContent('#wheel-source'), /a measured wheel: 41 profile points/);
+  assert.match(await page.textContent('#wheel-read'), /column r left out/);
+  assert.ok(await rmsShown(page) < 1e-3, 'the conjugate profile measured: no deviation');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+// The true wheel has 4 µm too much in a second-degree shape over the contact range, and the machine
+// adds a Y and B error; the engineer's case knows neither, only the measured face.
+async function wheelAndAxisCase() {
+  const hobsharp = await loadHobSharp();
+  const nominal = hobsharp.evaluate(paper).axes;
+  const actual = structuredClone(nominal);
+  actual.Y[0] += 0.004; actual.B[1] += 2e-5;
+  const R = [29.6, 34.7, 39.8, 44.9, 49.9];
+  const offset = R.map((v) => 4 * (1 - ((v - 39.75) / 10.15) ** 2));
+  const measured = hobsharp.evaluate({ ...paper, axes: actual, wheel: { ...paper.wheel, profileOffset: { R, offset } } }).topography.normal;
+  return { ...paper, measured, correction: { probeNoise: 0.0001 } };
+}
+
+test('correcting the wheel too: the proposed offset on Fig. 4, the dresser path as CSV, the face split', async () => {
+  const c = await wheelAndAxisCase();
+  const page = await openPage(`${base}#case=${encodeURIComponent(JSON.stringify(c))}`, desk);
+  await plotted(page);
+  assert.ok(await page.isHidden('#wheel-split'));
+  const axesOnly = Number(await page.getAttribute('#verdict', 'data-sse-after'));
+  await afterResult(page, () => page.check('#correct-wheel'));
+  await plotted(page);
+  const sseAfter = Number(await page.getAttribute('#verdict', 'data-sse-after'));
+  assert.ok(sseAfter < 0.01 && sseAfter < axesOnly / 10, `with the wheel ${sseAfter} µm², axes only ${axesOnly} µm²`);
+  assert.ok(await page.isVisible('#wheel-split'));
+  assert.match(await page.textContent('#wheel-share'), /^Of the measured sum of squares, the axes remove [\d.]+ % and the wheel's proposed offset [\d.]+ %; [\d.]+ µm rms is left/);
+  for (const id of ['#plot-removed-axes', '#plot-removed-wheel', '#plot-left']) assert.ok(await colours(page, id) > 8, `${id} draws`);
+  const traces = await wheelTraces(page);
+  assert.ok(traces.some((t) => t.xaxis === 'x2' && /^proposed in addition/.test(t.name)), JSON.stringify(traces));
+  assert.ok(traces.some((t) => /^dresser path/.test(t.name)));
+
+  assert.ok(await page.isEnabled('#download-dresser'));
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-dresser')]);
+  assert.equal(download.suggestedFilename(), 'hobsharp-dresser-path.csv');
+  const dresser = readWheelCsv(readFileSync(await download.path(), 'utf8'));
+  const hobsharp = await loadHobSharp();
+  const expected = hobsharp.evaluate({ ...c, correction: { ...c.correction, wheel: true } }).correction.dresserPath;
+  assert.equal(dresser.kind, 'measuredProfile');
+  assert.deepEqual(dresser.points, expected, 'the CSV holds the dresser path as the module computes it');
+
+  await page.locator('#wheel-section').screenshot({ path: path.join(shots, 'wheel-corrected.png') });
+  await page.locator('#wheel-split').screenshot({ path: path.join(shots, 'wheel-split.png') });
+  // Unticked: the axes alone again, the split gone, the dresser button off.
+  await afterResult(page, () => page.uncheck('#correct-wheel'));
+  assert.equal(Number(await page.getAttribute('#verdict', 'data-sse-after')), axesOnly);
+  assert.ok(await page.isHidden('#wheel-split'));
+  assert.ok(await page.isDisabled('#download-dresser'));
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

@@ -1,0 +1,32 @@
+// With the wheel corrected too (correction.wheel): the measured face split into what the axes
+// remove, what the wheel's proposed offset removes, and what is left (correction.residual), as
+// three maps on one colour range, with the share of the measured sum of squares each removes.
+import { fixed } from '../format.js';
+import { colourRange } from '../plots/colours.js';
+import { drawMap } from '../plots/maps.js';
+
+const $ = (selector) => document.querySelector(selector);
+const hasSplit = (r) => Boolean(r && r.correction && r.correction.removedByWheel && r.correction.removedByAxes);
+const PLOTS = [['plot-removed-axes', 'removedByAxes', 'Removed by the axes'], ['plot-removed-wheel', 'removedByWheel', 'Removed by the wheel'],
+  ['plot-left', 'residual', 'Left after both']];
+
+export function shareText(c) {
+  const pct = (v) => `${fixed(100 * v, 1)} %`;
+  return `Of the measured sum of squares, the axes remove ${pct(c.axesShare)} and the wheel's proposed offset ${pct(c.wheelShare)}; ` +
+    `${fixed(c.rmsAfter, 3)} µm rms is left (re-simulated with both).`;
+}
+
+function drawSplit({ Plotly, result: r }) {
+  const box = $('#wheel-split');
+  box.hidden = !hasSplit(r);
+  if (!hasSplit(r)) return Promise.all(PLOTS.map(([id]) => Plotly.purge(id)));
+  const c = r.correction;
+  $('#wheel-share').textContent = shareText(c);
+  const range = colourRange(c.removedByAxes, c.removedByWheel, c.residual);
+  return Promise.all(PLOTS.map(([id, key, title]) =>
+    drawMap(Plotly, id, { x: r.topography.x, y: r.topography.r, z: c[key], range, title: `${title}, normal deviation` })));
+}
+
+export function mountWheelSplit(store, plots) {
+  plots.add(drawSplit);
+}
