@@ -215,6 +215,7 @@ TEST(Inspection, TheCaseCarriesGashDeviationsAndAnEditedTable) {
   Json r = Json::parse(resultJson(*e));
   EXPECT_EQ(r["inspection"]["source"], "simulated");
   EXPECT_EQ(r["inspection"]["moduleBand"], "over 6.3 to 10 mm");
+  EXPECT_EQ(r["inspection"]["moduleBandIndex"], 5);
   EXPECT_DOUBLE_EQ(r["inspection"]["adjacentSpacing"].get<double>(), 30);
   EXPECT_DOUBLE_EQ(r["inspection"]["cumulativeSpacing"].get<double>(), 30);
   EXPECT_EQ(r["inspection"]["class"], "A");  // 30 µm: over AA's 25, within A's 40

@@ -196,6 +196,8 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
     band = b.str();
   }
   v.text({"inspection.moduleBand", "", "the normal-module band of the tolerance table the checks are graded in"}, band);
+  v.number({"inspection.moduleBandIndex", "", "that band's place in the tolerance table: band b holds the normal modules over moduleBands[b] up to and including moduleBands[b + 1]; -1 outside the table"},
+           in.band ? *in.band : -1);
   v.number({"inspection.cuttingFaceForm", "µm", "cutting-face form deviation: spread about the straight line fitted root to tip, largest over the axial lines"},
            in.face.cuttingFaceForm);
   v.number({"inspection.radialAlignment", "µm", "radial alignment deviation: rise of that line from root to tip (plus = more material at the tip), largest magnitude over the axial lines, signed"},

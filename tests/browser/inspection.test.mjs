@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { base, openPage, root, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, openPage, root, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 
@@ -28,6 +28,47 @@ test('the class verdict sits above the topography maps, with its checks', async 
   assert.equal(rows[0].length, 6, 'with the columns after the correction');
   assert.doesNotMatch(JSON.stringify(rows), /NaN|undefined|Infinity/);
   await page.locator('#topography-section').screenshot({ path: path.join(shots, 'inspection.png') });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('the tolerance table and the gash deviations are edited on the page, refused cells named, and kept in the link', async () => {
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 } });
+  await page.click('#tolerance-editor summary');
+  assert.match(await page.textContent('#tolerance-band'), /band over 6\.3 to 10 mm of normal module, from the default table/);
+  const cell = (check, k) => `#tolerance-table input[data-check="${check}"][data-class="${k}"]`;
+  assert.equal(await page.inputValue(cell('radialAlignment', 'A')), '', 'no public value: blank');
+  assert.equal(await page.inputValue(cell('adjacentSpacing', 'AA')), '25');
+  assert.ok(await page.isDisabled('#tolerance-default'));
+  const grade = (check) => page.textContent(`#inspection-table tr[data-check="${check}"] td:nth-child(3)`);
+  assert.equal(await grade('radialAlignment'), 'not graded');
+
+  await afterResult(page, async () => { await page.fill('#gash-deviations', '0; 3; −2; 1,5'); await page.dispatchEvent('#gash-deviations', 'change'); });
+  assert.equal(await page.textContent('#inspection-table tr[data-check="cumulativeSpacing"] td:nth-child(2)'), '5.000 µm');
+  assert.match(await page.textContent('#inspection-verdict'), /class AA \(limited by the (cumulative|adjacent) spacing\)/);
+  await afterResult(page, async () => { await page.fill(cell('radialAlignment', 'A'), '25'); await page.dispatchEvent(cell('radialAlignment', 'A'), 'change'); });
+  assert.equal(await grade('radialAlignment'), 'A');
+  assert.match(await page.textContent('#inspection-table tr[data-check="radialAlignment"]'), /A 25\.0/);
+  assert.match(await page.textContent('#tolerance-band'), /the table this case carries \(edited\)/);
+  const linked = decodeURIComponent(await page.evaluate(() => location.hash));
+  assert.match(linked, /"gashDeviations":\[0,3,-2,1\.5\]/);
+  assert.match(linked, /"radialAlignment":\{"A":\[null,null,null,null,null,25,null,null,null\],"source":"edited on the page"\}/);
+  await page.locator('#inspection').screenshot({ path: path.join(shots, 'tolerance-editor.png') });
+
+  // A cell that is not a number: named at the table, the rest of the page as it was.
+  await afterError(page, async () => { await page.fill(cell('gashLead', 'B'), '1e'); await page.dispatchEvent(cell('gashLead', 'B'), 'change'); });
+  assert.match(await page.textContent('#tolerance-error'), /inspection\.tolerances\.checks\.gashLead\.B|gash lead/i);
+  assert.ok(await page.isHidden('#form-error'));
+  await afterResult(page, async () => { await page.fill(cell('gashLead', 'B'), ''); await page.dispatchEvent(cell('gashLead', 'B'), 'change'); });
+  assert.ok(await page.isHidden('#tolerance-error'));
+  // A gash list the page cannot read changes nothing.
+  await page.fill('#gash-deviations', '1, 2, x');
+  await page.dispatchEvent('#gash-deviations', 'change');
+  assert.match(await page.textContent('#tolerance-error'), /Gash deviation 3: "x" is not a number \(µm\)\. The gash deviations in use are unchanged\./);
+
+  await afterResult(page, () => page.click('#tolerance-default'));
+  assert.equal(await grade('radialAlignment'), 'not graded');
+  assert.equal(await page.textContent('#inspection-table tr[data-check="cumulativeSpacing"] td:nth-child(2)'), '5.000 µm', 'the gashes stay');
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

@@ -12,6 +12,9 @@ export const GRID = { min: 2 };
 // The correction's options: {methods, defaultMethod, probeNoise: {default, max, unit},
 // resolution: {X: {default, min, max, unit}, ...}}.
 export const CORRECTION = {};
+// The inspection's checks, classes and default tolerance table: {checks, classes, maxGashes,
+// maxGashDeviation, defaultTolerances} (README, "Rake-face inspection").
+export const INSPECTION = {};
 let rotary = new Set();
 export const isRotary = (axis) => rotary.has(axis);
 
@@ -24,7 +27,7 @@ export const AXIS_NAMES = {};
 
 // limits: what Module.limits() returns (README "The JS API"). Refuses a shape it cannot use.
 export function setModuleLimits(limits) {
-  const { format, maxGridLines, degree, defaultGrid, axes, correction } = limits || {};
+  const { format, maxGridLines, degree, defaultGrid, axes, correction, inspection } = limits || {};
   if (typeof format !== 'string' || !(maxGridLines >= GRID.min) || !degree || !defaultGrid || !Array.isArray(axes)) {
     throw new Error('The calculator gave no limits the page can use.');
   }
@@ -40,6 +43,8 @@ export function setModuleLimits(limits) {
   rotary = new Set(axes.filter((a) => a.kind === 'rotary').map((a) => a.name));
   for (const key of Object.keys(CORRECTION)) delete CORRECTION[key];
   if (correction) Object.assign(CORRECTION, structuredClone(correction));
+  for (const key of Object.keys(INSPECTION)) delete INSPECTION[key];
+  if (inspection) Object.assign(INSPECTION, structuredClone(inspection));
 }
 
 const SUPERSCRIPT = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];

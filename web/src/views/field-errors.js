@@ -24,6 +24,7 @@ function show(error) {
   const field = error.field || '';
   if (/^(measured|correction)/.test(field)) return;  // the measured view shows those
   if (/^wheel\.(profileOffset|measuredProfile)/.test(field)) return;  // the wheel's own view does (views/wheel-input.js)
+  if (/^inspection\b/.test(field)) return;  // and the inspection's (views/tolerance-table.js)
   const input = field && $(`#inputs [data-field="${field}"]`);
   const group = field && $(`#inputs fieldset[data-group="${field}"]`);
   if (input && input.closest('label') && !input.closest('label').hidden) {

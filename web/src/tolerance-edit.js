@@ -1,0 +1,77 @@
+// The inspection's inputs as the page edits them (pure, with Node tests): the tolerance table
+// (the case's inspection.tolerances, docs/case-format.md; the default table until a cell is
+// edited) in the hob's module band, and the gash deviations at the pitch radius. Both live in
+// state.extra.inspection, so the case keeps them. A cell left blank has no tolerance (null); a
+// text that is not a number is kept as text, so that the calculator names the cell.
+const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+const EDITED = 'edited on the page';
+
+export function tableInUse(extra, defaults) {
+  const t = extra && isObject(extra.inspection) && extra.inspection.tolerances;
+  return structuredClone(isObject(t) ? t : defaults);
+}
+
+export const isEdited = (extra) => Boolean(extra && isObject(extra.inspection) && extra.inspection.tolerances !== undefined);
+
+// The band's cells as the inputs show them: {check: {class: text}}, '' where there is none.
+export function cellTexts(table, band, checks, classes) {
+  const out = {};
+  for (const check of checks) {
+    out[check] = {};
+    for (const k of classes) {
+      const row = table.checks && table.checks[check] && table.checks[check][k];
+      const v = Array.isArray(row) ? row[band] : undefined;
+      out[check][k] = v === undefined || v === null ? '' : String(v);
+    }
+  }
+  return out;
+}
+
+const withInspection = (extra, change) => {
+  const next = structuredClone(extra || {});
+  const inspection = isObject(next.inspection) ? next.inspection : {};
+  change(inspection);
+  if (Object.keys(inspection).length) next.inspection = inspection; else delete next.inspection;
+  return next;
+};
+
+// extra with the band's cell of (check, class) set from the text typed.
+export function withCell(extra, defaults, { band, check, klass, text }) {
+  const table = tableInUse(extra, defaults);
+  const bands = table.moduleBands.length - 1;
+  table.checks = table.checks || {};
+  const entry = table.checks[check] = table.checks[check] || {};
+  const row = Array.isArray(entry[klass]) ? entry[klass] : Array(bands).fill(null);
+  while (row.length < bands) row.push(null);
+  const t = text.trim().replace(',', '.');
+  row[band] = t === '' ? null : Number.isFinite(Number(t)) ? Number(t) : text;
+  entry[klass] = row;
+  if (!String(entry.source || '').endsWith(EDITED)) entry.source = entry.source ? `${entry.source}; ${EDITED}` : EDITED;
+  return withInspection(extra, (i) => { i.tolerances = table; });
+}
+
+// extra with the default table again (the case then carries none).
+export const withDefaultTable = (extra) => withInspection(extra, (i) => { delete i.tolerances; });
+
+// The gash deviations typed: numbers separated by commas, semicolons or blanks (with semicolons,
+// decimal commas); blank removes them. Throws an Error naming the value that is not a number.
+export function parseGashDeviations(text) {
+  const t = text.trim();
+  if (t === '') return null;
+  const semicolon = t.includes(';');
+  const cells = (semicolon ? t.split(';').map((c) => c.trim().replace(',', '.')) : t.split(/[\s,]+/)).filter((c) => c !== '');
+  return cells.map((c, i) => {
+    const v = Number(c.replace(/^\u2212/, '-'));
+    if (!Number.isFinite(v) || !/\d/.test(c)) throw new Error(`Gash deviation ${i + 1}: "${c.slice(0, 20)}" is not a number (µm).`);
+    return v;
+  });
+}
+
+export const withGashDeviations = (extra, list) => withInspection(extra, (i) => {
+  if (list) i.gashDeviations = list; else delete i.gashDeviations;
+});
+
+export const gashText = (extra) => {
+  const list = extra && isObject(extra.inspection) && extra.inspection.gashDeviations;
+  return Array.isArray(list) ? list.join(', ') : '';
+};

@@ -1,0 +1,67 @@
+// The inspection's inputs under its table (web/src/tolerance-edit.js): the tolerance table's
+// cells for the hob's module band, AA to D per check, with a button back to the default table;
+// and the gash deviations at the pitch radius, for the spacing checks and the indexing correction.
+// The case keeps both (inspection.tolerances, inspection.gashDeviations); a refused value is named
+// here, and the details open to show it.
+import { INSPECTION } from '../limits.js';
+import { CHECK_WORDS } from '../inspection-table.js';
+import { escapeHtml } from '../format.js';
+import { cellTexts, gashText, isEdited, parseGashDeviations, tableInUse, withCell, withDefaultTable, withGashDeviations } from '../tolerance-edit.js';
+
+const $ = (selector) => document.querySelector(selector);
+export const isInspectionField = (field) => /^inspection\b/.test(field || '');
+
+function setError(text) {
+  $('#tolerance-error').textContent = text || '';
+  $('#tolerance-error').hidden = !text;
+  if (text) $('#tolerance-editor').open = true;
+}
+
+function render(state) {
+  const r = state.result;
+  if (!r || !r.inspection || !INSPECTION.defaultTolerances) return;
+  const band = r.inspection.moduleBandIndex;
+  const table = tableInUse(state.extra, INSPECTION.defaultTolerances);
+  const edited = isEdited(state.extra);
+  $('#tolerance-band').textContent = band < 0
+    ? `The hob's normal module lies outside the table's bands (${table.moduleBands[0]} to ${table.moduleBands[table.moduleBands.length - 1]} mm): nothing to grade.`
+    : `Tolerances in µm (gash lead in µm per 100 mm) for the band over ${table.moduleBands[band]} to ${table.moduleBands[band + 1]} mm of normal module, from ${
+      edited ? 'the table this case carries (edited)' : 'the default table (DIN 3968 as the README cites it)'}. Blank: no tolerance, not graded.`;
+  $('#tolerance-default').disabled = !edited;
+  const texts = cellTexts(table, Math.max(band, 0), INSPECTION.checks, INSPECTION.classes);
+  $('#tolerance-table thead').innerHTML = `<tr><th>check</th>${INSPECTION.classes.map((k) => `<th>${k}</th>`).join('')}</tr>`;
+  const active = document.activeElement;
+  if (active && active.closest && active.closest('#tolerance-table')) return;  // not under the user's typing
+  $('#tolerance-table tbody').innerHTML = INSPECTION.checks.map((check) => `<tr data-check="${check}"><th>${
+    escapeHtml((CHECK_WORDS[check] || { label: check }).label)}</th>${INSPECTION.classes.map((k) =>
+    `<td><input type="text" inputmode="decimal" size="5" data-check="${check}" data-class="${k}" value="${escapeHtml(texts[check][k])}"${
+      band < 0 ? ' disabled' : ''} aria-label="${escapeHtml(`${(CHECK_WORDS[check] || { label: check }).label}, class ${k}`)}"></td>`).join('')}</tr>`).join('');
+  if (document.activeElement !== $('#gash-deviations')) $('#gash-deviations').value = gashText(state.extra);
+}
+
+export function mountToleranceTable(store) {
+  const commit = (extra, event) => {
+    setError('');
+    store.setInputs({ extra }, { source: 'inspection', at: event.timeStamp });
+    store.emit('commit');
+  };
+  $('#tolerance-table').addEventListener('change', (event) => {
+    const el = event.target;
+    const band = store.state.result && store.state.result.inspection.moduleBandIndex;
+    if (!el.dataset.check || !(band >= 0)) return;
+    commit(withCell(store.state.extra, INSPECTION.defaultTolerances, { band, check: el.dataset.check, klass: el.dataset.class, text: el.value }), event);
+  });
+  $('#tolerance-default').addEventListener('click', (event) => commit(withDefaultTable(store.state.extra), event));
+  $('#gash-deviations').addEventListener('change', (event) => {
+    try {
+      commit(withGashDeviations(store.state.extra, parseGashDeviations(event.target.value)), event);
+    } catch (e) {
+      setError(`${e.message} The gash deviations in use are unchanged.`);
+    }
+  });
+  store.on('result', (_, state) => { setError(''); render(state); });
+  store.on('restore', () => { if (store.state.result) render(store.state); });
+  store.on('refusal', ({ error, caseObject }) => {
+    if (caseObject && isInspectionField(error.field)) setError(error.message);
+  });
+}
