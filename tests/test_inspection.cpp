@@ -7,10 +7,12 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <Eigen/QR>
 #include <nlohmann/json.hpp>
 
 #include "default_tolerances.h"
 #include "face_checks.h"
+#include "gash_faces.h"
 #include "gash_spacing.h"
 #include "index_correction.h"
 #include "inspection.h"
@@ -295,6 +297,88 @@ TEST(Inspection, BadInspectionInputIsRefusedNamingTheField) {
   EXPECT_EQ(refusal(tableWith(R"({"format": "other"})")).field, "inspection.tolerances.format");
   const Error e = refusal(tableWith(R"({"checks": {"adjacentSpacing": {"A": [20, -1]}}})"));
   EXPECT_EQ(e.message.rfind("inspection.tolerances.checks.adjacentSpacing.A[1]: ", 0), 0u) << e.message;
+}
+
+Json gridJson(const Eigen::MatrixXd& m) {
+  Json rows = Json::array();
+  for (int i = 0; i < m.rows(); ++i) {
+    Json row = Json::array();
+    for (int k = 0; k < m.cols(); ++k) row.push_back(m(i, k));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(Inspection, AGashsDeviationAtThePitchRadiusIsItsFittedLineThere) {
+  // 3 µm at the pitch radius, a tilt of 0.5 µm per mm and a shape along the gash that averages out.
+  const double rp = 31.25;
+  const Eigen::MatrixXd g = faceOf(kR, kX, [&](double r, double x) { return 3 + 0.5 * (r - rp) + 0.01 * x; });
+  EXPECT_NEAR(deviationAtRadius(g, kR, rp), 3, 1e-12);
+  // A bow over the radius: the least-squares line through it at rp, against the same fit by Eigen's QR.
+  const Eigen::MatrixXd bow = faceOf(kR, kX, [&](double r, double) { return 0.02 * (r - 19) * (r - 40); });
+  Eigen::MatrixXd A(kR.size(), 2);
+  Eigen::VectorXd y(kR.size());
+  for (std::size_t i = 0; i < kR.size(); ++i) A(i, 0) = 1, A(i, 1) = kR[i], y(i) = bow(i, 0);
+  const Eigen::Vector2d c = A.colPivHouseholderQr().solve(y);
+  EXPECT_NEAR(deviationAtRadius(bow, kR, rp), c(0) + c(1) * rp, 1e-12);
+}
+
+TEST(Inspection, OneTopographyPerGashGivesTheSpacingAndTheWorstGashsFace) {
+  // Four gashes: all with the same 2 µm face, gash 3 mis-indexed by 10 µm, gash 2 tilted 1 µm per mm.
+  const SharpeningJob job = test::jobOf(test::paperCase());
+  const double rp = job.setup.face.pitchRadius;
+  std::vector<Eigen::MatrixXd> gashes(4, faceOf(job.grid.r, job.grid.x, [](double, double) { return 2.0; }));
+  gashes[2].array() += 10;
+  gashes[1] = faceOf(job.grid.r, job.grid.x, [&](double r, double) { return 2 + (r - rp); });
+  const GashFaces f = inspectGashFaces(gashes, job.grid.r, job.grid.x, true, rp);
+  ASSERT_EQ(f.deviations.size(), 4u);
+  for (int k : {0, 1, 3}) EXPECT_NEAR(f.deviations[k], 2, 1e-12) << k;
+  EXPECT_NEAR(f.deviations[2], 12, 1e-12);
+  EXPECT_NEAR(f.worst.radialAlignment, job.grid.r.back() - job.grid.r.front(), 1e-9);
+  EXPECT_NEAR(f.faces[1].radialAlignment, f.worst.radialAlignment, 0);
+  EXPECT_NEAR(f.worst.cuttingFaceForm, 0, 1e-12);
+
+  Json j = paperJson();
+  for (const Eigen::MatrixXd& g : gashes) j["inspection"]["gashTopographies"].push_back(gridJson(g));
+  auto e = evaluateCase(j.dump());
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  Json r = Json::parse(resultJson(*e));
+  EXPECT_EQ(r["inspection"]["source"], "gashTopographies");
+  EXPECT_NEAR(r["inspection"]["cumulativeSpacing"].get<double>(), 10, 1e-9);
+  EXPECT_NEAR(std::abs(r["inspection"]["adjacentSpacing"].get<double>()), 10, 1e-9);
+  EXPECT_NEAR(r["inspection"]["radialAlignment"].get<double>(), f.worst.radialAlignment, 1e-12);
+  EXPECT_NEAR(r["inspection"]["perGash"]["deviation"][2].get<double>(), 12, 1e-9);
+  EXPECT_NEAR(r["inspection"]["perGash"]["radialAlignment"][1].get<double>(), f.worst.radialAlignment, 1e-12);
+  // The same spacing as the deviations given directly, and the same indexing correction.
+  Json d = paperJson();
+  d["inspection"]["gashDeviations"] = f.deviations;
+  Json rd = Json::parse(resultJson(*evaluateCase(d.dump())));
+  EXPECT_EQ(r["inspection"]["indexCorrection"], rd["inspection"]["indexCorrection"]);
+  EXPECT_EQ(r["inspection"]["after"]["cumulativeSpacing"], rd["inspection"]["after"]["cumulativeSpacing"]);
+  // The indexing correction leaves the faces' form: after it, the worst gash's alignment stays.
+  EXPECT_NEAR(r["inspection"]["after"]["radialAlignment"].get<double>(), f.worst.radialAlignment, 1e-12);
+}
+
+TEST(Inspection, BadGashTopographiesAreRefusedNamingTheGash) {
+  const SharpeningJob job = test::jobOf(test::paperCase());
+  const Json flat = gridJson(Eigen::MatrixXd::Zero(job.grid.rows(), job.grid.cols()));
+  Json j = paperJson();
+  j["inspection"]["gashTopographies"] = Json::array({flat});
+  EXPECT_EQ(refusal(j).field, "inspection.gashTopographies");  // one gash
+  j["inspection"]["gashTopographies"] = Json::array({flat, gridJson(Eigen::MatrixXd::Zero(3, 9))});
+  EXPECT_EQ(refusal(j).field, "inspection.gashTopographies[1]");
+  Json bad = flat;
+  bad[2][4] = "x";
+  j["inspection"]["gashTopographies"] = Json::array({flat, bad});
+  EXPECT_EQ(refusal(j).field, "inspection.gashTopographies[1][2][4]");
+  bad[2][4] = 2e4;
+  j["inspection"]["gashTopographies"] = Json::array({flat, bad});
+  EXPECT_EQ(refusal(j).field, "inspection.gashTopographies[1][2][4]");
+  j["inspection"]["gashTopographies"] = Json::array({flat, flat});
+  j["inspection"]["gashDeviations"] = Json::array({1, 2});
+  EXPECT_EQ(refusal(j).field, "inspection.gashTopographies");
+  j["inspection"]["gashTopographies"] = Json::array();
+  EXPECT_EQ(refusal(j).field, "inspection.gashTopographies");
 }
 
 }  // namespace

@@ -33,8 +33,9 @@ CaseInput measuredCase() {
   run[Axis::Y].a[0] += 0.01;
   run[Axis::B].a[2] += 0.001;
   in.measured = test::topographyFor(job, run).normal;
-  // Per-gash deviations, so that the spacing and the indexing correction are in the result too.
-  in.inspection.gashDeviations = {0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1};
+  // One topography per gash, so that the spacing, the indexing correction and the per-gash figures
+  // are in the result too.
+  for (double shift : {0.0, 1.5, -2.0, 0.5}) in.inspection.gashTopographies.push_back(in.measured->array() + shift);
   return in;
 }
 
@@ -60,7 +61,7 @@ TEST(ResultModel, FieldPathsAreUniqueAndOptionalOnesSayWhen) {
         f.path.rfind("inspection.checks.cumulativeSpacing.", 0) == 0 || f.path == "inspection.gashLead" ||
         f.path == "inspection.adjacentSpacing" || f.path == "inspection.cumulativeSpacing" ||
         f.path == "inspection.spacing.adjacent" || f.path == "inspection.indexCorrection" ||
-        f.path == "inspection.indexCorrectionDeg";
+        f.path == "inspection.indexCorrectionDeg" || f.path.rfind("inspection.perGash.", 0) == 0;
     const bool wheelOffset = f.path.rfind("wheelOffset.", 0) == 0 || f.path == "wheelProfile.offset" ||
                              f.path == "wheelProfile.dressedR" || f.path == "wheelProfile.dressedZ";
     const bool optional = f.path.rfind("correction.", 0) == 0 || f.path == "setup.gashLead" ||

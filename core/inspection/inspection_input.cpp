@@ -1,5 +1,7 @@
 #include "inspection_input.h"
 
+#include <string>
+
 #include "default_tolerances.h"
 #include "gash_spacing.h"
 
@@ -10,6 +12,12 @@ const ToleranceTable& toleranceTableOf(const InspectionInput& in) {
 }
 
 Outcome<void> checkInspectionInput(const InspectionInput& in) {
+  if (!in.gashDeviations.empty() && !in.gashTopographies.empty())
+    return refuse("inspection.gashTopographies", "give the gashes as gashDeviations or as gashTopographies, not both.");
+  if (!in.gashTopographies.empty() &&
+      (in.gashTopographies.size() < 2 || in.gashTopographies.size() > static_cast<std::size_t>(kMaxGashes)))
+    return refuse("inspection.gashTopographies", "needs one topography per gash, 2 to " + std::to_string(kMaxGashes) +
+                                                      " of them; got " + std::to_string(in.gashTopographies.size()) + ".");
   if (!in.gashDeviations.empty())
     if (auto r = checkGashDeviations(in.gashDeviations, "inspection.gashDeviations"); !r) return r;
   if (in.tolerances)

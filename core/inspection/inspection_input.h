@@ -1,9 +1,11 @@
 // What a case says about the inspection (`inspection`, docs/case-format.md): per-gash deviations
-// for the spacing, and an edited tolerance table that replaces the default one.
+// (or per-gash topographies) for the spacing, and an edited tolerance table that replaces the default one.
 #pragma once
 
 #include <optional>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "outcome.h"
 #include "tolerance_table.h"
@@ -13,6 +15,9 @@ namespace hobsharp {
 struct InspectionInput {
   std::vector<double> gashDeviations;        // µm at the pitch radius, gash 1 .. z; empty when not given
   std::optional<ToleranceTable> tolerances;  // empty: defaultToleranceTable()
+  // One measured topography per gash, gash 1 .. z (µm, the grid's shape), instead of gashDeviations
+  // (gash_faces.h); their shape is checked against the grid by resolveJob().
+  std::vector<Eigen::MatrixXd> gashTopographies;
 };
 
 // The table the inspection grades by: the case's, or the default one.

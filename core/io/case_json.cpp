@@ -480,7 +480,7 @@ Outcome<std::vector<MeasuredPoint>> readMeasuredPoints(const Json& p) {
 
 // `inspection`: per-gash deviations and an edited tolerance table (docs/case-format.md).
 Outcome<InspectionInput> readInspection(const Node& n) {
-  HOBSHARP_TRY(n.onlyKnown({"gashDeviations", "tolerances"}));
+  HOBSHARP_TRY(n.onlyKnown({"gashDeviations", "gashTopographies", "tolerances"}));
   InspectionInput out;
   if (const Json* d = n.find("gashDeviations")) {
     if (!d->is_array() || d->empty())
@@ -489,6 +489,15 @@ Outcome<InspectionInput> readInspection(const Node& n) {
       double v = 0;
       HOBSHARP_ASSIGN(v, Node::toNumber((*d)[k], n.field("gashDeviations") + "[" + std::to_string(k) + "]"));
       out.gashDeviations.push_back(v);
+    }
+  }
+  if (const Json* g = n.find("gashTopographies")) {  // one grid per gash; its shape is the job's to check
+    if (!g->is_array() || g->empty())
+      return refuse(n.field("gashTopographies"), "must be a list of measured grids, one per gash, each as `measured`.");
+    for (std::size_t k = 0; k < g->size(); ++k) {
+      Eigen::MatrixXd m;
+      HOBSHARP_ASSIGN(m, readMeasured((*g)[k], n.field("gashTopographies") + "[" + std::to_string(k) + "]"));
+      out.gashTopographies.push_back(std::move(m));
     }
   }
   if (n.find("tolerances")) {

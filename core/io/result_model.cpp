@@ -159,8 +159,9 @@ class FieldList final : public ResultVisitor {
 // As JS names them, which is how the engineer sees them in the page's messages.
 const char* nonFiniteName(double x) { return std::isnan(x) ? "NaN" : x > 0 ? "Infinity" : "-Infinity"; }
 
-constexpr const char* kWithGashes = "only with `inspection.gashDeviations`";
-constexpr const char* kWithEitherCorrection = "only with `measured` or `inspection.gashDeviations`";
+constexpr const char* kWithGashes = "only with `inspection.gashDeviations` or `inspection.gashTopographies`";
+constexpr const char* kWithEitherCorrection = "only with `measured`, `inspection.gashDeviations` or `inspection.gashTopographies`";
+constexpr const char* kWithGashTopographies = "only with `inspection.gashTopographies`";
 
 // The units of a check's value.
 const char* checkUnit(Check c) { return c == Check::GashLead ? "µm per 100 mm" : "µm"; }
@@ -187,8 +188,8 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
   const bool helical = e.job.setup.face.helical();
   const bool gashes = e.indexCorrection.has_value();
   const ToleranceTable& table = toleranceTableOf(e.job.input.inspection);
-  v.text({"inspection.source", "", "the face inspected: \"measured\" (the case's grid), \"measuredPoints\" (the case's points) or \"simulated\" (the axes run)"},
-         e.job.input.measuredPoints ? "measuredPoints" : e.job.input.measured ? "measured" : "simulated");
+  v.text({"inspection.source", "", "the face inspected: \"gashTopographies\" (the worst of the case's per-gash grids), \"measured\" (the case's grid), \"measuredPoints\" (the case's points) or \"simulated\" (the axes run)"},
+         e.gashFaces ? "gashTopographies" : e.job.input.measuredPoints ? "measuredPoints" : e.job.input.measured ? "measured" : "simulated");
   std::string band = "outside the table's module bands";
   if (in.band) {
     std::ostringstream b;
@@ -223,6 +224,22 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
             micro);
     numbers(v, {"inspection.indexCorrectionDeg", "deg", "the same in degrees, rounded to the A axis's resolution (correction.resolution.A)", kWithGashes},
             degrees);
+  }
+  if (e.gashFaces || every) {
+    static const GashFaces kNoFaces;
+    const GashFaces& g = e.gashFaces ? *e.gashFaces : kNoFaces;
+    std::vector<double> form, alignment, lead;
+    for (const FaceChecks& f : g.faces) {
+      form.push_back(f.cuttingFaceForm);
+      alignment.push_back(f.radialAlignment);
+      lead.push_back(f.gashLead.value_or(0));
+    }
+    numbers(v, {"inspection.perGash.deviation", "µm", "per gash: its mean deviation at the pitch radius (the straight line fitted over the radius to the deviations averaged along the gash)", kWithGashTopographies},
+            g.deviations);
+    numbers(v, {"inspection.perGash.cuttingFaceForm", "µm", "per gash: its cutting-face form deviation", kWithGashTopographies}, form);
+    numbers(v, {"inspection.perGash.radialAlignment", "µm", "per gash: its radial alignment deviation", kWithGashTopographies}, alignment);
+    if (helical || every)
+      numbers(v, {"inspection.perGash.gashLead", "µm per 100 mm", "per gash: its gash lead deviation (helical gash only)", kWithGashTopographies}, lead);
   }
   verdict(v, in, "inspection.", "");
   for (Check c : kChecks) {

@@ -9,18 +9,27 @@ void inspectEvaluation(Evaluation& e) {
   const bool helical = job.setup.face.helical();
   const double module = job.input.hob.normalModule;
   const Eigen::MatrixXd& face = job.input.measured ? *job.input.measured : e.topography.normal;
-  std::optional<GashSpacing> spacing;
-  if (!in.gashDeviations.empty()) {
-    spacing = gashSpacing(in.gashDeviations);
-    const double perRadian = deviationPerIndexAngle(job.setup, job.setup.face.pitchRadius, 0.0);
-    e.indexCorrection = indexCorrection(in.gashDeviations, perRadian, job.correction.resolution.inAxisUnit(Axis::A));
+  // One topography per gash: their deviations at the pitch radius, and the worst gash's face checks.
+  FaceChecks faceChecks = checkFace(face, job.grid.r, job.grid.x, helical);
+  std::vector<double> deviations = in.gashDeviations;
+  if (!in.gashTopographies.empty()) {
+    e.gashFaces = inspectGashFaces(in.gashTopographies, job.grid.r, job.grid.x, helical, job.setup.face.pitchRadius);
+    deviations = e.gashFaces->deviations;
+    faceChecks = e.gashFaces->worst;
   }
-  e.inspection = inspect(checkFace(face, job.grid.r, job.grid.x, helical), spacing, table, module);
+  std::optional<GashSpacing> spacing;
+  if (!deviations.empty()) {
+    spacing = gashSpacing(deviations);
+    const double perRadian = deviationPerIndexAngle(job.setup, job.setup.face.pitchRadius, 0.0);
+    e.indexCorrection = indexCorrection(deviations, perRadian, job.correction.resolution.inAxisUnit(Axis::A));
+  }
+  e.inspection = inspect(faceChecks, spacing, table, module);
   if (!e.correction && !e.indexCorrection) return;
-  const Eigen::MatrixXd& after = e.correction ? e.correction->after.normal : face;
+  // After: the corrected face's checks, or (only the gashes re-indexed) the faces as they are.
+  const FaceChecks after = e.correction ? checkFace(e.correction->after.normal, job.grid.r, job.grid.x, helical) : faceChecks;
   std::optional<GashSpacing> spacingAfter;
   if (e.indexCorrection) spacingAfter = gashSpacing(e.indexCorrection->after);
-  e.inspectionAfter = inspect(checkFace(after, job.grid.r, job.grid.x, helical), spacingAfter, table, module);
+  e.inspectionAfter = inspect(after, spacingAfter, table, module);
 }
 
 Outcome<Evaluation> evaluate(const SharpeningJob& job) {

@@ -7,6 +7,7 @@
 
 #include "correction.h"
 #include "dressed_wheel.h"
+#include "gash_faces.h"
 #include "ground_face.h"
 #include "index_correction.h"
 #include "inspection.h"
@@ -34,6 +35,7 @@ struct Evaluation {
   // gashes after the rounded indexing correction) when either correction exists.
   Inspection inspection;
   std::optional<IndexCorrection> indexCorrection;
+  std::optional<GashFaces> gashFaces;  // with inspection.gashTopographies: per gash, and the worst
   std::optional<Inspection> inspectionAfter;
   // With a wheel profile offset (job.setup.wheel): the dressed profile at wheelProfile's points and
   // the face's sensitivity to the offset's knot values; empty for the conjugate wheel.

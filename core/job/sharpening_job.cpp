@@ -284,6 +284,9 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   if (!options) return options.error();
   job.correction = *options;
   if (auto r = checkInspectionInput(in.inspection); !r) return r.error();  // README, "Rake-face inspection"
+  for (std::size_t k = 0; k < in.inspection.gashTopographies.size(); ++k)
+    if (auto r = checkMeasured(in.inspection.gashTopographies[k], grid, "inspection.gashTopographies[" + std::to_string(k) + "]"); !r)
+      return r.error();
   return job;
 }
 

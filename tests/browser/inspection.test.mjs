@@ -72,3 +72,29 @@ test('the tolerance table and the gash deviations are edited on the page, refuse
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+test('one topography per gash from CSV files: the per-gash table, the spacing, and a file that does not fit named', async () => {
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 } });
+  await page.click('#tolerance-editor summary');
+  const grid = (shift) => Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, () => (shift + 0.5 * i).toFixed(3)).join(', ')).join('\n');
+  const file = (name, text) => ({ name, mimeType: 'text/csv', buffer: Buffer.from(text) });
+  // A file of the wrong shape: named, nothing changes.
+  await page.setInputFiles('#gash-files', [file('gash-1.csv', grid(0)), file('gash-2.csv', '1, 2\n3, 4\n')]);
+  assert.match(await page.textContent('#tolerance-error'), /^gash-2\.csv: The grid has 5 radial lines .* The gashes in use are unchanged\.$/);
+  assert.ok(await page.isHidden('#per-gash'));
+  await afterResult(page, () => page.setInputFiles('#gash-files', ['gash-1.csv', 'gash-2.csv', 'gash-3.csv', 'gash-10.csv']
+    .map((name, k) => file(name, grid(k === 2 ? 12 : 2)))));
+  assert.match(await page.textContent('#gash-files-read'), /^Gashes 1 to 4: gash-1\.csv, gash-2\.csv, gash-3\.csv, gash-10\.csv\.$/);
+  assert.match(await page.textContent('#inspection-verdict'), /the worst of the gash topographies\): class/);
+  const rows = await page.$$eval('#per-gash tbody tr', (trs) => trs.map((r) => [...r.children].map((x) => x.textContent.trim())));
+  assert.equal(rows.length, 4);
+  const deviations = rows.map((r) => Number(r[1]));
+  assert.ok(Math.abs(deviations[2] - deviations[0] - 10) < 1e-9 && deviations[0] === deviations[1] && deviations[1] === deviations[3], JSON.stringify(rows));
+  assert.equal(await page.textContent('#inspection-table tr[data-check="cumulativeSpacing"] td:nth-child(2)'), '10.000 µm');
+  assert.equal(await page.getAttribute('#gash-deviations', 'placeholder'), 'from the 4 gash topographies');
+  await page.locator('#inspection').screenshot({ path: path.join(shots, 'per-gash.png') });
+  await afterResult(page, () => page.click('#gash-files-clear'));
+  assert.ok(await page.isHidden('#per-gash'));
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

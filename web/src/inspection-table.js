@@ -20,7 +20,8 @@ export function verdictSentence(inspection) {
   const klass = (c, limiting) => (c === 'not graded'
     ? 'not graded (the tolerance table has no value for this module on any check computed)'
     : `class ${c}${limiting ? ` (limited by the ${(CHECK_WORDS[limiting] || { label: limiting }).label})` : ''}`);
-  let text = `Rake face (DIN 3968, module band ${inspection.moduleBand}, ${inspection.source} face): ${klass(inspection.class, inspection.limitingCheck)}`;
+  const source = { gashTopographies: 'the worst of the gash topographies', measuredPoints: 'measured points' }[inspection.source] || `${inspection.source} face`;
+  let text = `Rake face (DIN 3968, module band ${inspection.moduleBand}, ${source}): ${klass(inspection.class, inspection.limitingCheck)}`;
   if (inspection.after && inspection.after.class) text += `; predicted after the correction: ${klass(inspection.after.class, inspection.after.limitingCheck)}`;
   return `${text}.`;
 }

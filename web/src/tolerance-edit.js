@@ -67,9 +67,21 @@ export function parseGashDeviations(text) {
   });
 }
 
+// The gashes as deviations or as one topography per gash: either replaces the other.
 export const withGashDeviations = (extra, list) => withInspection(extra, (i) => {
+  delete i.gashTopographies;
   if (list) i.gashDeviations = list; else delete i.gashDeviations;
 });
+
+export const withGashTopographies = (extra, grids) => withInspection(extra, (i) => {
+  delete i.gashDeviations;
+  if (grids) i.gashTopographies = grids; else delete i.gashTopographies;
+});
+
+export const gashTopographyCount = (extra) => {
+  const g = extra && isObject(extra.inspection) && extra.inspection.gashTopographies;
+  return Array.isArray(g) ? g.length : 0;
+};
 
 export const gashText = (extra) => {
   const list = extra && isObject(extra.inspection) && extra.inspection.gashDeviations;

@@ -6,7 +6,10 @@
 import { INSPECTION } from '../limits.js';
 import { CHECK_WORDS } from '../inspection-table.js';
 import { escapeHtml } from '../format.js';
-import { cellTexts, gashText, isEdited, parseGashDeviations, tableInUse, withCell, withDefaultTable, withGashDeviations } from '../tolerance-edit.js';
+import { cellTexts, gashText, gashTopographyCount, isEdited, parseGashDeviations, tableInUse, withCell, withDefaultTable, withGashDeviations,
+  withGashTopographies } from '../tolerance-edit.js';
+import { readGashTopographies } from '../io/gash-files.js';
+import { MAX_MEASURED_BYTES } from '../io/csv.js';
 
 const $ = (selector) => document.querySelector(selector);
 export const isInspectionField = (field) => /^inspection\b/.test(field || '');
@@ -37,6 +40,19 @@ function render(state) {
     `<td><input type="text" inputmode="decimal" size="5" data-check="${check}" data-class="${k}" value="${escapeHtml(texts[check][k])}"${
       band < 0 ? ' disabled' : ''} aria-label="${escapeHtml(`${(CHECK_WORDS[check] || { label: check }).label}, class ${k}`)}"></td>`).join('')}</tr>`).join('');
   if (document.activeElement !== $('#gash-deviations')) $('#gash-deviations').value = gashText(state.extra);
+  const n = gashTopographyCount(state.extra);
+  $('#gash-deviations').placeholder = n ? `from the ${n} gash topographies` : '0, 1.5, -2, …';
+  $('#gash-files-clear').disabled = !n;
+}
+
+// The chosen files' texts, each within the measured grid's size limit.
+async function chosenTexts(input) {
+  const files = [...input.files];
+  input.value = '';
+  return Promise.all(files.map(async (f) => {
+    if (f.size > MAX_MEASURED_BYTES) throw new Error(`${f.name} is ${(f.size / 1048576).toFixed(1)} MB; a measured grid is a few hundred kB.`);
+    return { name: f.name, text: await f.text() };
+  }));
 }
 
 export function mountToleranceTable(store) {
@@ -58,6 +74,21 @@ export function mountToleranceTable(store) {
     } catch (e) {
       setError(`${e.message} The gash deviations in use are unchanged.`);
     }
+  });
+  $('#gash-files').addEventListener('change', async (event) => {
+    try {
+      const files = await chosenTexts(event.target);
+      if (!files.length || !store.state.result) return;
+      const { names, grids } = readGashTopographies(files, store.state.result.topography);
+      commit(withGashTopographies(store.state.extra, grids), event);
+      $('#gash-files-read').textContent = `Gashes 1 to ${names.length}: ${names.join(', ')}.`;
+    } catch (e) {
+      setError(`${e.message} The gashes in use are unchanged.`);
+    }
+  });
+  $('#gash-files-clear').addEventListener('click', (event) => {
+    commit(withGashTopographies(store.state.extra, null), event);
+    $('#gash-files-read').textContent = '';
   });
   store.on('result', (_, state) => { setError(''); render(state); });
   store.on('restore', () => { if (store.state.result) render(store.state); });
