@@ -8,7 +8,12 @@ void inspectEvaluation(Evaluation& e) {
   const ToleranceTable& table = toleranceTableOf(in);
   const bool helical = job.setup.face.helical();
   const double module = job.input.hob.normalModule;
-  const Eigen::MatrixXd& face = job.input.measured ? *job.input.measured : e.topography.normal;
+  // measuredPoints off the grid: the measurement as the identified error explains it, on the grid
+  // (README, "Measured points").
+  const bool points = e.correction && e.correction->atProbes();
+  const Eigen::MatrixXd& face = job.input.measured ? *job.input.measured
+                                : points           ? e.correction->explainedOnGrid.normal
+                                                   : e.topography.normal;
   std::optional<GashSpacing> spacing;
   if (!in.gashDeviations.empty()) {
     spacing = gashSpacing(in.gashDeviations);
@@ -17,7 +22,7 @@ void inspectEvaluation(Evaluation& e) {
   }
   e.inspection = inspect(checkFace(face, job.grid.r, job.grid.x, helical), spacing, table, module);
   if (!e.correction && !e.indexCorrection) return;
-  const Eigen::MatrixXd& after = e.correction ? e.correction->after.normal : face;
+  const Eigen::MatrixXd& after = points ? e.correction->afterOnGrid.normal : e.correction ? e.correction->after.normal : face;
   std::optional<GashSpacing> spacingAfter;
   if (e.indexCorrection) spacingAfter = gashSpacing(e.indexCorrection->after);
   e.inspectionAfter = inspect(checkFace(after, job.grid.r, job.grid.x, helical), spacingAfter, table, module);
@@ -42,6 +47,11 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
   }
   if (job.input.measured) {
     auto c = correctMeasuredFace(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction);
+    if (!c) return c.error();
+    e.correction = std::move(c).value();
+  }
+  if (!job.probes.empty()) {  // README, "Measured points"
+    auto c = correctMeasuredPoints(s, job.nominalAxes, job.runAxes, job.grid, job.probes, job.probeMeasured, job.correction);
     if (!c) return c.error();
     e.correction = std::move(c).value();
   }
