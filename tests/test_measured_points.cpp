@@ -257,13 +257,14 @@ TEST(MeasuredPoints, ThePointsPathAtTheGridsPositionsAgreesWithTheGrid) {
   // On the grid the maps lack the part no axis makes (measured - explained), known at the points.
   for (int i = 0; i < job.grid.rows(); ++i)
     for (int k = 0; k < job.grid.cols(); ++k) {
-      EXPECT_NEAR(c->after.normal(i * job.grid.cols() + k, 0), g.after.normal(i, k), 1e-6);
-      EXPECT_NEAR(c->afterOnGrid.normal(i, k) + g.before.normal(i, k) - c->explainedOnGrid.normal(i, k), g.after.normal(i, k), 1e-6);
+      // To the identification's stopping tolerance: the two solves take other steps (a 0.00001 µm face).
+      EXPECT_NEAR(c->after.normal(i * job.grid.cols() + k, 0), g.after.normal(i, k), 1e-5);
+      EXPECT_NEAR(c->afterOnGrid.normal(i, k) + g.before.normal(i, k) - c->explainedOnGrid.normal(i, k), g.after.normal(i, k), 1e-5);
     }
   EXPECT_NEAR(c->before.sse, g.before.sse, 1e-9 * g.before.sse);
   EXPECT_NEAR(c->before.thickness, g.before.thickness, 1e-9) << "the 5 x 9 grid's centre is a grid point";
   for (int i = 0; i < kAxisCount; ++i)
-    EXPECT_NEAR(c->identifiedErrorSize[i], g.identifiedErrorSize[i], 1e-6 * (1 + std::abs(g.identifiedErrorSize[i])));
+    EXPECT_NEAR(c->identifiedErrorSize[i], g.identifiedErrorSize[i], 1e-5 * (1 + std::abs(g.identifiedErrorSize[i])));
   // The linear step likewise.
   CorrectionOptions linear = job.correction;
   linear.method = CorrectionMethod::Linear;
