@@ -28,9 +28,9 @@ test('--points corrects the case at the file\'s points, and --points-out writes 
   assert.deepEqual(c.pointMeasured, points, 'the rows are the file\'s points, in its order');
   assert.equal(c.pointResidual.length, 2000);
   assert.equal(r.inspection.source, 'measuredPoints');
-  // A known machine error: corrected down to what the file's rounding leaves.
-  assert.ok(c.rmsBefore > 1, `rms measured ${c.rmsBefore}`);
-  assert.ok(c.rmsAfter < 1e-3 * c.rmsBefore, `rms after ${c.rmsAfter}`);
+  // A known machine error: corrected to what the directions within the probe noise (0.5 µm) leave.
+  assert.ok(c.rmsBefore > 10, `rms measured ${c.rmsBefore}`);
+  assert.ok(c.rmsAfter < 0.02 * c.rmsBefore, `rms after ${c.rmsAfter}`);
   assert.match(c.verdict, /^Correctable/);
   assert.equal(c.residual.length, 5, 'the predicted face on the grid');
   // The same as the module given the points in the case.
@@ -43,7 +43,7 @@ test('--points corrects the case at the file\'s points, and --points-out writes 
   // And the predicted points, given back as a measurement, are what the corrected axes would leave:
   // nothing left to correct.
   const again = hobsharp.evaluate({ ...paper, axes: c.axes, measuredPoints: readPoints(readFileSync(`${prefix}-predicted.csv`, 'utf8')).points });
-  assert.ok(again.correction.rmsBefore < 1e-3 * c.rmsBefore);
+  assert.ok(Math.abs(again.correction.rmsBefore - c.rmsAfter) < 1e-6 * c.rmsBefore, `${again.correction.rmsBefore} ${c.rmsAfter}`);
 });
 
 test('malformed points files and refused points are named on stderr', () => {
@@ -67,7 +67,7 @@ test('malformed points files and refused points are named on stderr', () => {
   writeFileSync(bad, lines.join('\n'));
   run = cli(paperFile, '--points', bad);
   assert.match(run.stderr, /measuredPoints\[2\]: .* within 0\.001 mm of measuredPoints\[1\]/);
-  writeFileSync(bad, lines.slice(0, 11).join('\n'));
+  writeFileSync(bad, readFileSync(pointsFile, 'utf8').trim().split('\n').slice(0, 11).join('\n'));
   run = cli(paperFile, '--points', bad);
   assert.match(run.stderr, /measuredPoints: has 10 points, too few for the 25 free coefficients/);
   assert.equal(cli(paperFile, '--points').status, 2, 'a usage error');
