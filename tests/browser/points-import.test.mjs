@@ -48,7 +48,7 @@ test('a points CSV is previewed, corrected as points, and the maps show the grid
   assert.ok(Number(s.sseBefore) > 100, `a real error measured: ${s.sseBefore}`);
   assert.match(s.title, /^Measured at 2000 points/);
   await page.locator('#measured-section .pair > div:first-child').screenshot({ path: path.join(shots, 'points-import-preview.png') });
-  await page.screenshot({ path: path.join(shots, 'points-import-page.png'), fullPage: true });
+  await page.locator('#topography-section').screenshot({ path: path.join(shots, 'points-import-maps.png') });
 
   // A file the reader refuses (no units): the message names the line; nothing else changes.
   await page.setInputFiles('#measured-file', file('no-units.csv', 'r,x,deviation\n19,1,2\n'));
