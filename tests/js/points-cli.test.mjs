@@ -75,3 +75,25 @@ test('malformed points files and refused points are named on stderr', () => {
   assert.equal(run.status, 1);
   assert.match(run.stderr, /no measured points off the grid/);
 });
+
+test("the results CSV's point blocks read back as points CSVs, in either style", async () => {
+  const { resultsCsv } = await import('../../web/src/io/results-csv.js');
+  const { setModuleLimits } = await import('../../web/src/limits.js');
+  const hobsharp = await loadHobSharp();
+  setModuleLimits(hobsharp.limits());
+  const paper = JSON.parse(readFileSync(paperFile, 'utf8'));
+  const points = readPoints(readFileSync(pointsFile, 'utf8')).points.slice(0, 300);
+  const caseObject = { ...paper, measuredPoints: points };
+  const r = hobsharp.evaluate(caseObject);
+  for (const style of ['comma', 'semicolon']) {
+    const lines = resultsCsv(r, { caseObject, style }).split('\n');
+    const block = (title) => {
+      const start = lines.indexOf(`# ${title}`);
+      assert.ok(start > 0, title);
+      return lines.slice(start, lines.indexOf('', start)).join('\n');
+    };
+    assert.deepEqual(readPoints(block('measured points')).points, points, style);
+    assert.deepEqual(readPoints(block('predicted at the measured points after correction')).points, r.correction.pointResidual, style);
+    assert.ok(!lines.some((l) => l.startsWith('measuredPoints')), 'the points are not an input row');
+  }
+});
