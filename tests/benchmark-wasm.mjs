@@ -6,6 +6,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { loadHobSharp } from '../wasm/hobsharp.mjs';
+import { readPoints } from '../web/src/io/points-import.js';
 
 const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..');
 const nativeFile = process.argv[2];
@@ -38,11 +39,21 @@ const denseCase = { ...dense, axes: withError(dense, [['Z', 0, -0.01], ['B', 2, 
 const inspectionCase = { ...cycleCase, inspection: { gashDeviations: [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1] } };
 
 const best = (f, runs, repeats = 5) => Math.min(...Array.from({ length: repeats }, () => f(runs)));
+// Reading and correcting 2,000 measured points (README, "Measured points"): the page's and the
+// CLI's reader (web/src/io/points-import.js) on tests/data/points-2000.csv, plus evaluate() in the module.
+const pointsCsv = readFileSync(path.join(root, 'tests', 'data', 'points-2000.csv'), 'utf8');
+const pointsCase = { ...paper, measuredPoints: readPoints(pointsCsv).points };
+const readPointsMs = best((n) => {
+  const t = performance.now();
+  for (let i = 0; i < n; i++) readPoints(pointsCsv);
+  return (performance.now() - t) / n;
+}, 20);
 const wasm = {
   CorrectionCycle: best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(cycleCase), n), 200),
   CorrectionCycle51x26Degree6: best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(bigCase), n), 5, 3),
   DenseTopography101: best((n) => hobsharp.timeTopography(JSON.stringify(denseCase), n), 10),
   InspectionPaperCase: best((n) => hobsharp.timeInspection(JSON.stringify(inspectionCase), n), 2000),
+  CorrectPoints2000: readPointsMs + best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(pointsCase), n), 3, 3),
 };
 // End to end from JS, with the case in and the plain-JS result out (what the page's worker pays).
 const t0 = performance.now();
@@ -54,6 +65,7 @@ const rows = [
   ['correction cycle (51 x 26, degree 6, 35 coefficients)', 'CorrectionCycle51x26Degree6', 50],
   ['dense 101 x 101 topography', 'DenseTopography101', 15],
   ['rake-face inspection (Tab. 1, 9 x 5, 12 gashes)', 'InspectionPaperCase', 5],
+  ['reading and correcting 2,000 measured points (CSV)', 'CorrectPoints2000', 20],
 ];
 console.log('\nnative versus WebAssembly (Node ' + process.version + '), ms per run:');
 console.log('benchmark'.padEnd(52) + 'native'.padStart(10) + 'wasm'.padStart(10) + 'wasm/native'.padStart(13));
@@ -62,4 +74,5 @@ for (const [label, key] of rows) {
   console.log(label.padEnd(52) + n.toFixed(3).padStart(10) + w.toFixed(3).padStart(10) + (w / n).toFixed(2).padStart(12) + 'x');
 }
 console.log(`evaluate(case) end to end in JS, with the result as plain JS data: ${endToEnd.toFixed(3)} ms`);
+console.log(`of the 2,000 points, reading the CSV in JS: ${readPointsMs.toFixed(3)} ms`);
 console.log('target: wasm within 1.5x native');

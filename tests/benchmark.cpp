@@ -1,6 +1,8 @@
 // The benchmark command: the paper's correction cycle (and on 51 x 26 at degree 6), its rake-face inspection, the sensitivity matrix by the implicit
 // function theorem against the paper's central differences, and a dense topography.
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <map>
 #include <string>
 
@@ -125,7 +127,45 @@ void InspectionPaperCase(benchmark::State& state) {
   }
 }
 
+// Reading and correcting a 2,000-point measurement (README, "Measured points"): the points CSV
+// tests/data/points-2000.csv read (a plain reader here: the page's and the CLI's reader is
+// web/src/io/points-import.js, timed in the wasm benchmark), the job resolved, and evaluated: the
+// face simulated at the points, the default correction, the grid views re-simulated.
+std::vector<MeasuredPoint> readPointsCsv(const std::string& text) {
+  std::vector<MeasuredPoint> out;
+  const char* p = text.c_str();
+  p = std::strchr(p, '\n');  // the header
+  while (p && *++p) {
+    char* end = nullptr;
+    MeasuredPoint m;
+    m.r = std::strtod(p, &end);
+    m.x = std::strtod(end + 1, &end);
+    m.deviation = std::strtod(end + 1, &end);
+    out.push_back(m);
+    p = std::strchr(end, '\n');
+  }
+  return out;
+}
+
+void CorrectPoints2000(benchmark::State& state) {
+  std::ifstream f(std::string(HOBSHARP_TEST_DATA) + "/points-2000.csv");
+  std::stringstream s;
+  s << f.rdbuf();
+  const std::string csv = s.str();
+  const CaseInput paper = parseCase(paperCaseText()).value();
+  for (auto _ : state) {
+    CaseInput in = paper;
+    in.measuredPoints = readPointsCsv(csv);
+    auto job = resolveJob(in);
+    if (!job) { state.SkipWithError(job.error().message.c_str()); break; }
+    auto e = evaluate(*job);
+    if (!e) { state.SkipWithError(e.error().message.c_str()); break; }
+    benchmark::DoNotOptimize(e);
+  }
+}
+
 BENCHMARK(CorrectionCycle)->Unit(benchmark::kMicrosecond);
+BENCHMARK(CorrectPoints2000)->Unit(benchmark::kMillisecond);
 BENCHMARK(InspectionPaperCase)->Unit(benchmark::kMicrosecond);
 BENCHMARK(CorrectionCycle51x26Degree6)->Unit(benchmark::kMillisecond);
 BENCHMARK(SensitivityAnalytic)->Unit(benchmark::kMicrosecond);
@@ -159,6 +199,8 @@ int main(int argc, char** argv) {
     std::printf("correction cycle: %.3f ms (target < 1 ms)\n", 1e3 * s["CorrectionCycle"]);
   if (s.count("CorrectionCycle51x26Degree6"))
     std::printf("correction cycle, 51 x 26, degree 6: %.2f ms (target < 50 ms)\n", 1e3 * s["CorrectionCycle51x26Degree6"]);
+  if (s.count("CorrectPoints2000"))
+    std::printf("reading and correcting 2,000 measured points: %.2f ms (target < 20 ms)\n", 1e3 * s["CorrectPoints2000"]);
   if (s.count("InspectionPaperCase"))
     std::printf("rake-face inspection of the paper case: %.4f ms (target < 5 ms)\n", 1e3 * s["InspectionPaperCase"]);
   if (s.count("DenseTopography101"))

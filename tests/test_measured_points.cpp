@@ -1,8 +1,15 @@
 // A measurement at the measuring machine's own points (`measuredPoints`, README "Measured
-// points"): points at a grid's positions give exactly the grid's result, in any order; points off
-// the face, outside the ground region, at no grid position or twice at one, and a grid position
-// without a point, are refused naming the point.
+// points"): points at a grid's positions give exactly the grid's result, in any order; points
+// anywhere else on the face are corrected as points (the correction's rows are the points), as
+// well as the grid is; points off the face, outside the ground region, twice, not finite, or too
+// few for the coefficients are refused naming the point.
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -93,21 +100,34 @@ TEST(MeasuredPoints, BadPointsAreRefusedNamingThePoint) {
   e = refusal(with(3, Json::array({30.0, 400.0, 1.0})));  // beyond the hob's end
   EXPECT_EQ(e.field, "measuredPoints[3]");
   EXPECT_NE(e.message.find("outside the ground region"), std::string::npos) << e.message;
-  e = refusal(with(3, Json::array({r + 0.5, x, 1.0})));  // between grid lines
-  EXPECT_EQ(e.field, "measuredPoints[3]");
-  EXPECT_NE(e.message.find("not at a position of the grid"), std::string::npos) << e.message;
+  // Between grid lines: no longer refused, the points are corrected as points.
+  auto between = evaluateCase(with(3, Json::array({r + 0.5, x, 1.0})).dump());
+  ASSERT_TRUE(between.ok()) << between.error().message;
+  ASSERT_TRUE(between->correction && between->correction->atProbes());
+  EXPECT_EQ(between->correction->probes.size(), 45u);
   e = refusal(with(3, Json::array({r, x, 2.0})));  // a second point at the first one's position
   EXPECT_EQ(e.field, "measuredPoints[3]");
-  EXPECT_NE(e.message.find("same grid position as measuredPoints[0]"), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find("within 0.001 mm of measuredPoints[0]"), std::string::npos) << e.message;
+  e = refusal(with(3, Json::array({r + 6e-4, x - 6e-4, 2.0})));  // the same, within the tolerance
+  EXPECT_EQ(e.field, "measuredPoints[3]");
+  EXPECT_NE(e.message.find("measured twice"), std::string::npos) << e.message;
   EXPECT_EQ(refusal(with(3, Json::array({r, x, 2e4}))).field, "measuredPoints[3]");
   EXPECT_EQ(refusal(with(3, Json::array({r, x}))).field, "measuredPoints[3]");
   EXPECT_EQ(refusal(with(3, Json::array({r, "x", 1.0}))).field, "measuredPoints[3][1]");
   EXPECT_EQ(refusal(with(3, Json::array({r, x, nullptr}))).field, "measuredPoints[3][2]");
+  // A grid position without a point: the 44 points are corrected as points.
   Json missing = good;
   missing["measuredPoints"].erase(missing["measuredPoints"].begin() + 7);
-  e = refusal(missing);
+  auto fewer = evaluateCase(missing.dump());
+  ASSERT_TRUE(fewer.ok()) << fewer.error().message;
+  ASSERT_TRUE(fewer->correction && fewer->correction->atProbes());
+  EXPECT_EQ(fewer->correction->probes.size(), 44u);
+  // Fewer points than free coefficients (25 at degree 4).
+  Json few = good;
+  few["measuredPoints"].erase(few["measuredPoints"].begin() + 20, few["measuredPoints"].end());
+  e = refusal(few);
   EXPECT_EQ(e.field, "measuredPoints");
-  EXPECT_NE(e.message.find("has no point at the grid position"), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find("20 points, too few for the 25 free coefficients"), std::string::npos) << e.message;
   Json both = good;
   both["measured"] = gridCase()["measured"];
   EXPECT_EQ(refusal(both).field, "measuredPoints");
@@ -116,6 +136,212 @@ TEST(MeasuredPoints, BadPointsAreRefusedNamingThePoint) {
   EXPECT_EQ(refusal(empty).field, "measuredPoints");
   const Error m = refusal(with(3, Json::array({10.0, 0.0, 1.0})));
   EXPECT_EQ(m.message.rfind("measuredPoints[3]: ", 0), 0u) << m.message;
+}
+
+// Points scattered over the ground region (none at a grid position), seeded.
+ProbePoints scatteredPoints(const SharpeningJob& job, int n, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> r(job.grid.r.front(), job.grid.r.back()), x(job.grid.x.front(), job.grid.x.back());
+  ProbePoints p;
+  for (int k = 0; k < n; ++k) p.push_back(ProbePoint{r(random), x(random)});
+  return p;
+}
+
+// The benchmark's machine error (tests/benchmark.cpp): a face of some 15 µm rms.
+AxisPolynomials knownError(const SharpeningJob& job) {
+  AxisPolynomials e = job.nominalAxes;
+  e[Axis::Y].a[0] += 0.01;
+  e[Axis::Z].a[0] -= 0.01;
+  e[Axis::Z].a[1] += 0.003;
+  e[Axis::A].a[0] += 0.0002;
+  e[Axis::B].a[2] += 0.001;
+  return e;
+}
+
+// The paper's case measured after the machine error `actual` at `points` (the face simulated
+// there), or on the grid when `points` is empty; with the probe noise given (µm), if any.
+Json measuredCase(const ProbePoints& points, const AxisPolynomials& actual, double probeNoise = 0) {
+  const SharpeningJob job = test::jobOf(test::paperCase());
+  Json j = Json::parse(test::readFile("tab1.json"));
+  if (probeNoise > 0) j["correction"]["probeNoise"] = probeNoise;
+  if (points.empty()) {
+    const Eigen::MatrixXd m = test::topographyFor(job, actual).normal;
+    Json rows = Json::array();
+    for (int i = 0; i < m.rows(); ++i) {
+      Json row = Json::array();
+      for (int k = 0; k < m.cols(); ++k) row.push_back(m(i, k));
+      rows.push_back(row);
+    }
+    j["measured"] = rows;
+    return j;
+  }
+  auto face = simulateGroundFace(job.setup, actual, points, job.grid, Sensitivities::Skip);
+  EXPECT_TRUE(face.ok()) << (face.ok() ? "" : face.error().message);
+  Json list = Json::array();
+  for (std::size_t k = 0; k < points.size(); ++k)
+    list.push_back(Json::array({points[k].r, points[k].x, 1000.0 * face->envelope[k].t}));
+  j["measuredPoints"] = list;
+  return j;
+}
+
+double rms(const Eigen::MatrixXd& m) { return std::sqrt(m.squaredNorm() / static_cast<double>(m.size())); }
+
+TEST(MeasuredPoints, ScatteredPointsAreCorrectedAsWellAsTheGrid) {
+  const SharpeningJob job = test::jobOf(test::paperCase());
+  const AxisPolynomials actual = knownError(job);
+  const ProbePoints points = scatteredPoints(job, 300, 7);
+  for (const ProbePoint& p : points)  // none at a grid position: the points path
+    for (double r : job.grid.r) ASSERT_GT(std::abs(p.r - r), 1e-9);
+  // Noise-free (probe noise 1e-4 µm, as the page's what-if says): every identifiable direction is
+  // used, and the grid and the points both cancel the face down to rounding.
+  auto grid = evaluateCase(measuredCase({}, actual, 1e-4).dump());
+  auto scattered = evaluateCase(measuredCase(points, actual, 1e-4).dump());
+  ASSERT_TRUE(grid.ok()) << grid.error().message;
+  ASSERT_TRUE(scattered.ok()) << scattered.error().message;
+  const Correction& g = *grid->correction;
+  const Correction& c = *scattered->correction;
+  ASSERT_TRUE(c.atProbes());
+  ASSERT_FALSE(g.atProbes());
+  // The rows are the points: one per point, the measurement there as given.
+  ASSERT_EQ(c.before.normal.rows(), 300);
+  ASSERT_EQ(c.before.normal.cols(), 1);
+  EXPECT_GT(rms(c.before.normal), 10.0) << "a real error was measured";
+  EXPECT_LT(rms(c.after.normal), 1e-6 * rms(c.before.normal));
+  EXPECT_LT(rms(g.after.normal), 1e-6 * rms(g.before.normal));
+  EXPECT_EQ(c.rank, g.rank);
+  EXPECT_EQ(c.verdict.rfind("Correctable", 0), 0u) << c.verdict;
+  // The same face predicted on the grid, and the same machine error found (its face on the grid).
+  ASSERT_EQ(c.afterOnGrid.normal.rows(), job.grid.rows());
+  ASSERT_EQ(c.afterOnGrid.normal.cols(), job.grid.cols());
+  EXPECT_LT((c.afterOnGrid.normal - g.after.normal).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT((c.explainedOnGrid.normal - g.before.normal).cwiseAbs().maxCoeff(), 1e-6)
+      << "the measurement as the identified error explains it is the grid's measurement";
+  EXPECT_NEAR(c.identifiedErrorSize[1], 10.0, 1e-6) << "Y: the 10 µm offset";
+  // With the default probe noise (0.5 µm) the directions the data shows within it are left out,
+  // on the grid as at the points: 300 points correct at least as well as the grid's 45.
+  auto gridNoisy = evaluateCase(measuredCase({}, actual).dump());
+  auto pointsNoisy = evaluateCase(measuredCase(points, actual).dump());
+  ASSERT_TRUE(gridNoisy.ok() && pointsNoisy.ok());
+  const Correction &gn = *gridNoisy->correction, &cn = *pointsNoisy->correction;
+  EXPECT_LT(gn.after.rms, 0.02 * gn.before.rms);
+  EXPECT_LT(cn.after.rms, 0.02 * cn.before.rms);
+  EXPECT_LE(cn.after.rms, gn.after.rms);
+  // And the result carries the points.
+  Json r = Json::parse(resultJson(*scattered));
+  ASSERT_EQ(r["correction"]["pointResidual"].size(), 300u);
+  EXPECT_DOUBLE_EQ(r["correction"]["pointResidual"][5][0].get<double>(), points[5].r);
+  EXPECT_DOUBLE_EQ(r["correction"]["pointResidual"][5][1].get<double>(), points[5].x);
+  EXPECT_DOUBLE_EQ(r["correction"]["pointMeasured"][5][2].get<double>(), c.before.normal(5, 0));
+  EXPECT_EQ(r["correction"]["residual"].size(), 5u);
+  EXPECT_EQ(r["correction"]["measuredOnGrid"].size(), 5u);
+  EXPECT_EQ(r["inspection"]["source"], "measuredPoints");
+  EXPECT_NEAR(r["inspection"]["radialAlignment"].get<double>(), grid->inspection.face.radialAlignment, 1e-6);
+}
+
+TEST(MeasuredPoints, ThePointsPathAtTheGridsPositionsAgreesWithTheGrid) {
+  // The correction forced through the points path with the grid's own positions: the same
+  // correction as the grid's, to the solver's precision (the grid path is used for these points).
+  const SharpeningJob job = test::jobOf(test::paperCase());
+  auto grid = evaluateCase(gridCase().dump());
+  ASSERT_TRUE(grid.ok()) << grid.error().message;
+  const Correction& g = *grid->correction;
+  ProbePoints probes;
+  Eigen::VectorXd measured(job.grid.size());
+  for (int i = 0; i < job.grid.rows(); ++i)
+    for (int k = 0; k < job.grid.cols(); ++k) {
+      probes.push_back(ProbePoint{job.grid.r[i], job.grid.x[k]});
+      measured(i * job.grid.cols() + k) = g.before.normal(i, k);
+    }
+  auto c = correctMeasuredPoints(job.setup, job.nominalAxes, job.runAxes, job.grid, probes, measured, job.correction);
+  ASSERT_TRUE(c.ok()) << c.error().message;
+  // On the grid the maps lack the part no axis makes (measured - explained), known at the points.
+  for (int i = 0; i < job.grid.rows(); ++i)
+    for (int k = 0; k < job.grid.cols(); ++k) {
+      // To the identification's stopping tolerance: the two solves take other steps (a 0.00001 µm face).
+      EXPECT_NEAR(c->after.normal(i * job.grid.cols() + k, 0), g.after.normal(i, k), 1e-5);
+      EXPECT_NEAR(c->afterOnGrid.normal(i, k) + g.before.normal(i, k) - c->explainedOnGrid.normal(i, k), g.after.normal(i, k), 1e-5);
+    }
+  EXPECT_NEAR(c->before.sse, g.before.sse, 1e-9 * g.before.sse);
+  EXPECT_NEAR(c->before.thickness, g.before.thickness, 1e-9) << "the 5 x 9 grid's centre is a grid point";
+  for (int i = 0; i < kAxisCount; ++i)
+    EXPECT_NEAR(c->identifiedErrorSize[i], g.identifiedErrorSize[i], 1e-5 * (1 + std::abs(g.identifiedErrorSize[i])));
+  // The linear step likewise.
+  CorrectionOptions linear = job.correction;
+  linear.method = CorrectionMethod::Linear;
+  auto gl = correctMeasuredFace(job.setup, job.nominalAxes, job.runAxes, grid->groundFace, g.before.normal, linear);
+  auto cl = correctMeasuredPoints(job.setup, job.nominalAxes, job.runAxes, job.grid, probes, measured, linear);
+  ASSERT_TRUE(gl.ok() && cl.ok());
+  for (int j = 0; j < gl->change.size(); ++j) EXPECT_NEAR(cl->change(j), gl->change(j), 1e-9 * (1 + std::abs(gl->change(j))));
+}
+
+TEST(MeasuredPoints, CheckPointsRefusesNonFiniteAndDuplicatesNamingThePoint) {
+  const PointRegion region{18, 40, 60, 0.001, 1e4};
+  std::vector<MeasuredPoint> p = {{20, 0, 1}, {21, 1, 2}, {22, 2, 3}};
+  EXPECT_TRUE(checkPoints(p, region).ok());
+  p[1].x = std::nan("");
+  auto e = checkPoints(p, region);
+  ASSERT_FALSE(e.ok());
+  EXPECT_EQ(e.error().field, "measuredPoints[1]");
+  p[1] = {21, 1, std::numeric_limits<double>::infinity()};
+  EXPECT_EQ(checkPoints(p, region).error().field, "measuredPoints[1]");
+  p[1] = {22.0005, 2.0009, 5};  // within the tolerance of the third: the later one is named
+  e = checkPoints(p, region);
+  ASSERT_FALSE(e.ok());
+  EXPECT_EQ(e.error().field, "measuredPoints[2]");
+  EXPECT_NE(e.error().message.find("of measuredPoints[1]"), std::string::npos) << e.error().message;
+  p[1] = {22.0011, 2, 5};  // just beyond it: two points
+  EXPECT_TRUE(checkPoints(p, region).ok());
+  EXPECT_EQ(checkPoints({}, region).error().field, "measuredPoints");
+}
+
+TEST(MeasuredPoints, APointTheWheelDoesNotGrindIsNamed) {
+  const SharpeningJob job = test::jobOf(test::paperCase());
+  ProbePoints probes = scatteredPoints(job, 30, 3);
+  AxisPolynomials wild = job.nominalAxes;
+  wild[Axis::B].a[0] += 1.5;  // the wheel turned far off the face
+  auto f = simulateGroundFace(job.setup, wild, probes, job.grid, Sensitivities::Skip);
+  ASSERT_FALSE(f.ok());
+  EXPECT_EQ(f.error().field.rfind("measuredPoints[", 0), 0u) << f.error().field;
+}
+
+// tests/data/points-2000.csv, the benchmark's and the Node tests' measurement: the paper's face
+// ground with the benchmark's machine error (knownError), at 2,000 points scattered over the grid's region,
+// written as a machine writes them (positions to 0.001 mm, deviations to 1e-6 µm). With
+// HOBSHARP_WRITE_POINTS set, this test writes the file; otherwise it checks it.
+TEST(MeasuredPoints, ThePointsFileIsTheKnownErrorSampledAtScatteredPoints) {
+  const SharpeningJob job = test::jobOf(test::paperCase());
+  const AxisPolynomials actual = knownError(job);
+  const std::string path = std::string(HOBSHARP_TEST_DATA) + "/points-2000.csv";
+  if (std::getenv("HOBSHARP_WRITE_POINTS")) {
+    ProbePoints points = scatteredPoints(job, 2000, 2000);
+    for (ProbePoint& p : points) p.r = std::round(p.r * 1000) / 1000, p.x = std::round(p.x * 1000) / 1000;
+    auto face = simulateGroundFace(job.setup, actual, points, job.grid, Sensitivities::Skip);
+    ASSERT_TRUE(face.ok());
+    std::ofstream out(path);
+    out << "r (mm),x (mm),deviation (µm)\n";
+    char line[96];
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      std::snprintf(line, sizeof line, "%.3f,%.3f,%.6f\n", points[k].r, points[k].x, 1000.0 * face->envelope[k].t);
+      out << line;
+    }
+  }
+  std::istringstream in(test::readFile("points-2000.csv"));
+  std::string line;
+  std::getline(in, line);
+  ASSERT_EQ(line, "r (mm),x (mm),deviation (µm)");
+  ProbePoints points;
+  std::vector<double> deviation;
+  while (std::getline(in, line)) {
+    double r = 0, x = 0, d = 0;
+    ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf", &r, &x, &d), 3) << line;
+    points.push_back(ProbePoint{r, x});
+    deviation.push_back(d);
+  }
+  ASSERT_EQ(points.size(), 2000u);
+  auto face = simulateGroundFace(job.setup, actual, points, job.grid, Sensitivities::Skip);
+  ASSERT_TRUE(face.ok()) << face.error().message;
+  for (std::size_t k = 0; k < points.size(); ++k)
+    ASSERT_NEAR(deviation[k], 1000.0 * face->envelope[k].t, 1e-6) << "point " << k;
 }
 
 }  // namespace

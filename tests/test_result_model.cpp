@@ -85,7 +85,23 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   const Json j = Json::parse(resultJson(evaluated(withWheel)));
   std::set<std::string> written;
   leaves(j, "", &written);
+  // The fields only a measurement at points off the grid has (README, "Measured points"): the
+  // same measurement as points 0.01 mm off the grid's radii.
+  const std::set<std::string> pointsOnly = {"correction.pointMeasured", "correction.pointResidual", "correction.measuredOnGrid"};
+  for (const std::string& f : pointsOnly) EXPECT_EQ(written.count(f), 0u) << f << " with a grid";
+  CaseInput withPoints = withWheel;
+  const SharpeningJob job = test::jobOf(paperCase());
+  withPoints.measuredPoints.emplace();
+  for (int i = 0; i < job.grid.rows(); ++i)
+    for (int k = 0; k < job.grid.cols(); ++k)
+      withPoints.measuredPoints->push_back({job.grid.r[i] + (i == 0 ? 0.01 : -0.01), job.grid.x[k], (*withWheel.measured)(i, k)});
+  withPoints.measured.reset();
+  std::set<std::string> writtenWithPoints;
+  leaves(Json::parse(resultJson(evaluated(withPoints))), "", &writtenWithPoints);
+  for (const std::string& f : pointsOnly) EXPECT_EQ(writtenWithPoints.count(f), 1u) << f << " with points";
+  written.insert(pointsOnly.begin(), pointsOnly.end());
   EXPECT_EQ(written, described);
+  EXPECT_EQ(writtenWithPoints, written);
   // Without a measured topography there is no correction, without a wheel offset no wheelOffset.
   const Json nominal = Json::parse(resultJson(evaluated(paperCase())));
   EXPECT_FALSE(nominal.contains("correction"));

@@ -2,25 +2,74 @@
 // node wasm/cli.mjs case.json  - evaluates a hobsharp-case/1 file and prints the result as JSON,
 // exactly as the C++ writer wrote it (core/result_model.h). On bad input it prints the message on
 // stderr and exits with 1 (2 for a usage error).
-import { readFileSync } from 'node:fs';
+//   --points file.csv    the measurement as the measuring machine's points (README, "Measured
+//                        points"; web/src/io/points-import.js): replaces the case's `measured` and
+//                        `measuredPoints`
+//   --points-out prefix  writes prefix-measured.csv and prefix-predicted.csv: the measured points
+//                        and the face predicted after the correction at them (needs --points or
+//                        the case's measuredPoints off the grid)
+import { readFileSync, writeFileSync } from 'node:fs';
 import { loadHobSharp } from './hobsharp.mjs';
+import { pointsToCsv, readPoints } from '../web/src/io/points-import.js';
 
-const file = process.argv[2];
-if (!file || process.argv.length > 3) {
-  process.stderr.write('usage: node wasm/cli.mjs case.json\n');
+const usage = () => {
+  process.stderr.write('usage: node wasm/cli.mjs case.json [--points points.csv] [--points-out prefix]\n');
   process.exit(2);
+};
+const args = process.argv.slice(2);
+let file, pointsFile, pointsOut;
+for (let i = 0; i < args.length; ++i) {
+  if (args[i] === '--points' && i + 1 < args.length) pointsFile = args[++i];
+  else if (args[i] === '--points-out' && i + 1 < args.length) pointsOut = args[++i];
+  else if (!args[i].startsWith('--') && file === undefined) file = args[i];
+  else usage();
 }
-let text;
-try {
-  text = readFileSync(file, 'utf8');
-} catch (e) {
-  process.stderr.write(`${file}: ${e.code === 'ENOENT' ? 'no such file' : e.message}\n`);
-  process.exit(1);
+if (!file) usage();
+
+const read = (name) => {
+  try {
+    return readFileSync(name, 'utf8');
+  } catch (e) {
+    process.stderr.write(`${name}: ${e.code === 'ENOENT' ? 'no such file' : e.message}\n`);
+    process.exit(1);
+  }
+};
+let text = read(file);
+if (pointsFile) {
+  const csv = read(pointsFile);
+  let caseObject;
+  try {
+    caseObject = JSON.parse(text);
+  } catch (e) {
+    process.stderr.write(`${file}: not JSON (${e.message})\n`);
+    process.exit(1);
+  }
+  try {
+    const { points } = readPoints(csv);
+    if (caseObject && typeof caseObject === 'object') {
+      delete caseObject.measured;
+      caseObject.measuredPoints = points;
+    }
+  } catch (e) {
+    process.stderr.write(`${pointsFile}: ${e.message}\n`);
+    process.exit(1);
+  }
+  text = JSON.stringify(caseObject);
 }
 try {
   const hobsharp = await loadHobSharp();
-  process.stdout.write(hobsharp.evaluateToJson(text) + '\n');
+  const json = hobsharp.evaluateToJson(text);
+  if (pointsOut) {
+    const c = JSON.parse(json).correction;
+    if (!c || !c.pointMeasured) {
+      process.stderr.write('--points-out: the case has no measured points off the grid to write.\n');
+      process.exit(1);
+    }
+    writeFileSync(`${pointsOut}-measured.csv`, pointsToCsv(c.pointMeasured));
+    writeFileSync(`${pointsOut}-predicted.csv`, pointsToCsv(c.pointResidual));
+  }
+  process.stdout.write(json + '\n');
 } catch (e) {
-  process.stderr.write(`${file}: ${e.message}\n`);
+  process.stderr.write(`${pointsFile || file}: ${e.message}\n`);
   process.exit(1);
 }

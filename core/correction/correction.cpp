@@ -26,7 +26,13 @@ UnobservableCombination combination(const std::vector<Coefficient>& coefficients
 
 Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials& runAxes,
                                    const Eigen::MatrixXd& measured, const CorrectionOptions& o) {
-  const FaceGrid& grid = run.grid;
+  // The face's shape: the grid, or one column of probe points (ground_face.h).
+  struct Shape {
+    int r, c;
+    int rows() const { return r; }
+    int cols() const { return c; }
+    int size() const { return r * c; }
+  } const grid{run.rows(), run.cols()};
   if (measured.rows() != grid.rows() || measured.cols() != grid.cols())
     return refuse("measured", "the topography has " + std::to_string(measured.rows()) + " x " +
                                  std::to_string(measured.cols()) + " values; the grid is " +

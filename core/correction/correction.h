@@ -59,6 +59,15 @@ struct Correction {
   // axes are proposed unchanged, and `discardedSse` is what the discarded proposal predicted, µm².
   bool runKept = false;
   double discardedSse = 0;
+
+  // With a measurement at probe points (correctMeasuredPoints, README "Measured points"): `before`,
+  // `after` and `afterRounded` hold one column, a value per point in the points' order, and their
+  // figures are over the points. On the grid the plots show: the face the identified error grinds
+  // with the axes run (the measurement as the axes explain it) and the predicted face, both
+  // re-simulated, without the part no axis makes (known only at the points).
+  ProbePoints probes;
+  Topography explainedOnGrid, afterOnGrid;
+  bool atProbes() const { return !probes.empty(); }
 };
 
 // The paper's single linear step (Eq. 17), with the linear prediction in `after`.
@@ -72,5 +81,14 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
 Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                         const AxisPolynomials& run, const GroundFace& runFace,
                                         const Eigen::MatrixXd& measured, const CorrectionOptions& options);
+
+// The same for a measurement at a measuring machine's probe points (µm, one per point): the
+// correction's rows are exactly those points (the run face simulated there, its sensitivities
+// there; nothing interpolated), and the grid views are filled (measured_points_correction.cpp).
+// Refused as `measuredPoints` with fewer points than free coefficients.
+Outcome<Correction> correctMeasuredPoints(const SharpeningSetup& setup, const AxisPolynomials& nominal,
+                                          const AxisPolynomials& run, const FaceGrid& grid,
+                                          const ProbePoints& probes, const Eigen::VectorXd& measured,
+                                          const CorrectionOptions& options);
 
 }  // namespace hobsharp

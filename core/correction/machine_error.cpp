@@ -32,8 +32,8 @@ Eigen::VectorXd flat(const Eigen::MatrixXd& m) {
 }
 
 Eigen::VectorXd faceNormal(const GroundFace& f) {
-  Eigen::VectorXd v(f.grid.size());
-  for (int p = 0; p < f.grid.size(); ++p) v(p) = kMicrometresPerMm * f.envelope[p].t;
+  Eigen::VectorXd v(f.size());
+  for (int p = 0; p < f.size(); ++p) v(p) = kMicrometresPerMm * f.envelope[p].t;
   return v;
 }
 
@@ -44,14 +44,14 @@ AxisPolynomials plus(AxisPolynomials axes, const std::vector<Coefficient>& cs, c
 
 // r(theta) = face(run + P theta) - measured, µm; its Jacobian S(run + P theta) P (Eqs. 13-16).
 struct FaceResidual : Eigen::DenseFunctor<double> {
-  FaceResidual(const SharpeningSetup& s, const AxisPolynomials& r, const FaceGrid& g,
+  FaceResidual(const SharpeningSetup& s, const AxisPolynomials& r, const GroundFace& g,
                const std::vector<Coefficient>& cs, const Eigen::MatrixXd& basis, const Eigen::VectorXd& m)
       : Eigen::DenseFunctor<double>(static_cast<int>(basis.cols()), static_cast<int>(m.size())),
-        setup(s), run(r), grid(g), coefficients(cs), P(basis), measured(m) {}
+        setup(s), run(r), like(g), coefficients(cs), P(basis), measured(m) {}
 
   const SharpeningSetup& setup;
   const AxisPolynomials& run;
-  const FaceGrid& grid;
+  const GroundFace& like;  // simulated at its points: the grid, or the probe points
   const std::vector<Coefficient>& coefficients;
   const Eigen::MatrixXd& P;
   const Eigen::VectorXd& measured;
@@ -62,7 +62,7 @@ struct FaceResidual : Eigen::DenseFunctor<double> {
   const GroundFace* faceAt(const Eigen::VectorXd& x) {
     if (lastFace && lastX.size() == x.size() && lastX == x) return &*lastFace;
     ++evaluations;
-    auto f = simulateGroundFace(setup, plus(run, coefficients, P * x), grid);
+    auto f = simulateGroundFaceLike(like, setup, plus(run, coefficients, P * x));
     lastX = x;
     if (!f) {
       ++unsolvable;
@@ -159,7 +159,12 @@ const char* statusName(SolveStatus s) {
 Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup, const AxisPolynomials& run,
                                                    const GroundFace& runFace, const Eigen::MatrixXd& measured,
                                                    const CorrectionOptions& o) {
-  const FaceGrid& grid = runFace.grid;
+  // The face's shape: the grid, or one column of probe points (ground_face.h).
+  struct Shape {
+    int r, c;
+    int rows() const { return r; }
+    int cols() const { return c; }
+  } const grid{runFace.rows(), runFace.cols()};
   if (measured.rows() != grid.rows() || measured.cols() != grid.cols())
     return refuse("measured", "the topography has " + std::to_string(measured.rows()) + " x " +
                                   std::to_string(measured.cols()) + " values; the grid is " +
@@ -237,7 +242,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
       zE.setZero();
       break;
     }
-    FaceResidual residual(setup, run, grid, cs, P, d);
+    FaceResidual residual(setup, run, runFace, cs, P, d);
     if (round == 0) {
       residual.lastX = theta;
       residual.lastFace = runFace;

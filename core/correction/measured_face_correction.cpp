@@ -13,9 +13,9 @@ namespace {
 constexpr double kMicrometresPerMm = 1000.0;
 
 Eigen::MatrixXd normalOf(const GroundFace& f) {
-  Eigen::MatrixXd n(f.grid.rows(), f.grid.cols());
-  for (int i = 0; i < f.grid.rows(); ++i)
-    for (int j = 0; j < f.grid.cols(); ++j) n(i, j) = kMicrometresPerMm * f.envelope[i * f.grid.cols() + j].t;
+  Eigen::MatrixXd n(f.rows(), f.cols());
+  for (int i = 0; i < f.rows(); ++i)
+    for (int j = 0; j < f.cols(); ++j) n(i, j) = kMicrometresPerMm * f.envelope[i * f.cols() + j].t;
   return n;
 }
 
@@ -42,7 +42,7 @@ Outcome<Topography> predictedFace(const SharpeningSetup& setup, const GroundFace
                                   const Eigen::MatrixXd& unexplained, const AxisPolynomials& knownAxes) {
   const AxisPolynomials actual = plusError(commanded, error);
   if (sameAxes(actual, knownAxes)) return topographyFromNormal(runFace, normalOf(runFace) + unexplained);
-  auto f = simulateGroundFace(setup, actual, runFace.grid, Sensitivities::Skip);
+  auto f = simulateGroundFaceLike(runFace, setup, actual, Sensitivities::Skip);
   if (!f) return f.error();
   return topographyFromNormal(runFace, normalOf(*f) + unexplained);
 }
@@ -134,7 +134,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     for (Axis a : kAxes) std::fill(c.identifiedError[a].a.begin(), c.identifiedError[a].a.end(), 0.0);
     for (size_t j = 0; j < c.coefficients.size(); ++j)
       c.identifiedError[c.coefficients[j].axis].a[c.coefficients[j].degree] = -c.change(static_cast<int>(j));
-    auto explained = simulateGroundFace(setup, plusError(run, c.identifiedError), runFace.grid, Sensitivities::Skip);
+    auto explained = simulateGroundFaceLike(runFace, setup, plusError(run, c.identifiedError), Sensitivities::Skip);
     if (!explained) return explained.error();
     unexplained = measured - normalOf(*explained);
     coefficientCov = c.changeCovariancePerNoise;
@@ -202,7 +202,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.changePerNoise[i] = perNoise[i];
     c.uncertainty[i] = perNoise[i] * o.probeNoise;
   }
-  c.verdict = verdictOf(c, o, runFace.grid.size());
+  c.verdict = verdictOf(c, o, runFace.size());
   return c;
 }
 

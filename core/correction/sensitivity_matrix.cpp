@@ -19,10 +19,10 @@ SensitivityMatrix sensitivityMatrix(const GroundFace& face, const std::vector<Co
   constexpr double kMicrometresPerMm = 1000.0;
   SensitivityMatrix S;
   S.coefficients = coefficients;
-  S.rows = face.grid.rows();
-  S.cols = face.grid.cols();
+  S.rows = face.rows();  // at probe points: one row per point, one column
+  S.cols = face.cols();
   const int q = static_cast<int>(coefficients.size());
-  S.normal.resize(face.grid.size(), q);
+  S.normal.resize(face.size(), q);
   S.thickness.resize(q);
   S.motionRange = 0;
   for (const EnvelopePoint& e : face.envelope) S.motionRange = std::max(S.motionRange, std::abs(e.phi));
@@ -31,7 +31,7 @@ SensitivityMatrix sensitivityMatrix(const GroundFace& face, const std::vector<Co
   // the powers of phi formed once per point and the matrix filled column by column.
   int degree = 0;
   for (const Coefficient& c : coefficients) degree = std::max(degree, c.degree);
-  const int n = face.grid.size();
+  const int n = face.size();
   Eigen::MatrixXd power(n, degree + 1);
   Eigen::MatrixXd value(n, kAxisCount), rate(n, kAxisCount);
   for (int p = 0; p < n; ++p) {

@@ -1,4 +1,5 @@
-// The sensitivity matrix of Eq. 16: the change of the normal deviation at every grid point, and
+// The sensitivity matrix of Eq. 16: the change of the normal deviation at every grid point (or
+// probe point, for a face simulated at a measuring machine's points: rows = points, cols = 1), and
 // of the thickness at the mean point, per unit change of each chosen polynomial coefficient.
 // Built analytically (Eqs. 13-15) by the implicit function theorem on the solved envelope, not by
 // the paper's finite differences.

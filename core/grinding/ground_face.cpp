@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
 
 #include "wheel_profile.h"
 
@@ -47,6 +48,79 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
   auto e = solveEnvelopePoint(setup, axes, f.meanPoint, nominalGuess(f.meanPoint, *contactW), sensitivities,
                               options);
   if (!e) return e.error();
+  f.meanEnvelope = *e;
+  return f;
+}
+
+Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisPolynomials& axes,
+                                       const ProbePoints& probes, const FaceGrid& grid, Sensitivities sensitivities,
+                                       const EnvelopeSolverOptions& options) {
+  GroundFace f;
+  f.gash = setup.face.gash;
+  f.grid = grid;
+  f.probes = probes;
+  f.points.reserve(probes.size());
+  f.envelope.reserve(probes.size());
+  double lastR = 0, contactW = 0;
+  for (std::size_t k = 0; k < probes.size(); ++k) {
+    const GridPoint g = gridPoint(setup, probes[k].r, probes[k].x);
+    // A machine probes along lines: a point at the previous one's radius starts from its solution
+    // moved along the nominal screw motion (as along a grid row), any other from the nominal motion.
+    const bool sameLine = k > 0 && probes[k].r == lastR;
+    if (!sameLine) {
+      auto w = contactAt(setup, probes[k].r);
+      if (!w) return refuse("measuredPoints[" + std::to_string(k) + "]", w.error().message, w.error().code);
+      contactW = *w;
+    }
+    const EnvelopeGuess guess =
+        sameLine ? EnvelopeGuess{f.envelope.back().t, f.envelope.back().phi - (g.w - f.points.back().w),
+                                 f.envelope.back().u, f.envelope.back().w}
+                 : nominalGuess(g, contactW);
+    auto e = solveEnvelopePoint(setup, axes, g, guess, sensitivities, options);
+    if (!e) {
+      std::string why = e.error().message;
+      const std::string gridWords = "grid: the ground face cannot be solved at the grid point";
+      if (why.rfind(gridWords, 0) == 0) why = "the ground face cannot be solved at the point" + why.substr(gridWords.size());
+      return refuse("measuredPoints[" + std::to_string(k) + "]", why, e.error().code);
+    }
+    lastR = probes[k].r;
+    f.points.push_back(g);
+    f.envelope.push_back(*e);
+  }
+  auto meanW = contactAt(setup, grid.rMean());
+  if (!meanW) return meanW.error();
+  f.meanPoint = gridPoint(setup, grid.rMean(), grid.xMean());
+  auto e = solveEnvelopePoint(setup, axes, f.meanPoint, nominalGuess(f.meanPoint, *meanW), sensitivities, options);
+  if (!e) return e.error();
+  f.meanEnvelope = *e;
+  return f;
+}
+
+Outcome<GroundFace> simulateGroundFaceLike(const GroundFace& like, const SharpeningSetup& setup,
+                                           const AxisPolynomials& axes, Sensitivities sensitivities) {
+  if (!like.atProbes()) return simulateGroundFace(setup, axes, like.grid, sensitivities);
+  // At probe points each solve starts from `like`'s solution at the same point: axes that differ
+  // by a correction move the envelope point little, so Newton's method needs a few steps, and no
+  // contact line is solved for.
+  GroundFace f;
+  f.gash = like.gash;
+  f.grid = like.grid;
+  f.probes = like.probes;
+  f.points = like.points;
+  f.envelope.reserve(like.envelope.size());
+  for (std::size_t k = 0; k < like.points.size(); ++k) {
+    const EnvelopePoint& from = like.envelope[k];
+    auto e = solveEnvelopePoint(setup, axes, like.points[k], EnvelopeGuess{from.t, from.phi, from.u, from.w}, sensitivities);
+    if (!e) {  // too far for the warm start: from the nominal motion, as the first simulation did
+      auto fresh = simulateGroundFace(setup, axes, like.probes, like.grid, sensitivities);
+      return fresh;
+    }
+    f.envelope.push_back(*e);
+  }
+  f.meanPoint = like.meanPoint;
+  const EnvelopePoint& m = like.meanEnvelope;
+  auto e = solveEnvelopePoint(setup, axes, f.meanPoint, EnvelopeGuess{m.t, m.phi, m.u, m.w}, sensitivities);
+  if (!e) return simulateGroundFace(setup, axes, like.probes, like.grid, sensitivities);
   f.meanEnvelope = *e;
   return f;
 }

@@ -1,5 +1,6 @@
-// The simulated ground face on a measuring grid: an envelope point (Eqs. 7, 10, 11) at every grid
-// point, and one more at the mean point for the circular thickness.
+// The simulated ground face on a measuring grid, or at a measuring machine's probe points: an
+// envelope point (Eqs. 7, 10, 11) at every grid point (or probe point), and one more at the grid's
+// mean point for the circular thickness.
 #pragma once
 
 #include <vector>
@@ -7,6 +8,7 @@
 #include "envelope.h"
 #include "face_grid.h"
 #include "outcome.h"
+#include "probe_points.h"
 
 namespace hobsharp {
 
@@ -17,6 +19,15 @@ struct GroundFace {
   std::vector<EnvelopePoint> envelope;   // same order
   GridPoint meanPoint;                   // the grid centre (rMean, xMean)
   EnvelopePoint meanEnvelope;
+  // At probe points (simulateGroundFace with ProbePoints): the points, in the caller's order;
+  // `points` and `envelope` follow it, and `grid` only gives the mean point. Empty on the grid.
+  ProbePoints probes;
+
+  bool atProbes() const { return !probes.empty(); }
+  // The shape of a deviation matrix on this face: the grid's, or one column of the probe points.
+  int rows() const { return atProbes() ? static_cast<int>(probes.size()) : grid.rows(); }
+  int cols() const { return atProbes() ? 1 : grid.cols(); }
+  int size() const { return static_cast<int>(envelope.size()); }
 };
 
 // The range of the motion parameter phi over the grid's envelope points, widened to include 0
@@ -30,5 +41,18 @@ MotionRange motionRange(const GroundFace& face);
 Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisPolynomials& axes,
                                        const FaceGrid& grid, Sensitivities sensitivities = Sensitivities::Compute,
                                        const EnvelopeSolverOptions& options = {});
+
+// The same at probe points: one envelope point at each (r, x), each solve started from the nominal
+// screw motion at its own radius; `grid` gives the mean point. A point the wheel does not grind
+// is refused as measuredPoints[k] (k its index in `probes`).
+Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisPolynomials& axes,
+                                       const ProbePoints& probes, const FaceGrid& grid,
+                                       Sensitivities sensitivities = Sensitivities::Compute,
+                                       const EnvelopeSolverOptions& options = {});
+
+// The face ground with `axes` at the points `like` was simulated at (its grid, or its probes).
+Outcome<GroundFace> simulateGroundFaceLike(const GroundFace& like, const SharpeningSetup& setup,
+                                           const AxisPolynomials& axes,
+                                           Sensitivities sensitivities = Sensitivities::Compute);
 
 }  // namespace hobsharp

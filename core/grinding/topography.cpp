@@ -1,6 +1,7 @@
 #include "topography.h"
 
 #include <cmath>
+#include <limits>
 
 namespace hobsharp {
 namespace {
@@ -16,10 +17,22 @@ double atCentre(const Eigen::MatrixXd& m) {
   return (1 - a) * ((1 - b) * m(i0, j0) + b * m(i0, j1)) + a * ((1 - b) * m(i1, j0) + b * m(i1, j1));
 }
 
+// At probe points: the deviation of the point nearest the grid's mean point (no interpolation;
+// README, "Measured points").
+double atNearestToMean(const GroundFace& face, const Eigen::MatrixXd& m) {
+  int best = 0;
+  double bestD = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < face.size(); ++k) {
+    const double d = std::hypot(face.points[k].r - face.meanPoint.r, face.points[k].x - face.meanPoint.x);
+    if (d < bestD) bestD = d, best = k;
+  }
+  return m(best, 0);
+}
+
 }  // namespace
 
 double circularFactor(const GroundFace& face, int i, int j) {
-  const GridPoint& g = face.points[i * face.grid.cols() + j];
+  const GridPoint& g = face.points[i * face.cols() + j];
   return face.grid.rMean() / (g.r * g.cosCircle);
 }
 
@@ -32,7 +45,7 @@ Topography topographyFromNormal(const GroundFace& face, const Eigen::MatrixXd& n
   t.circular.resize(normal.rows(), normal.cols());
   for (int i = 0; i < normal.rows(); ++i)
     for (int j = 0; j < normal.cols(); ++j) t.circular(i, j) = normal(i, j) * circularFactor(face, i, j);
-  t.thickness = atCentre(normal) * thicknessFactor(face);
+  t.thickness = (face.atProbes() ? atNearestToMean(face, normal) : atCentre(normal)) * thicknessFactor(face);
   t.sse = normal.squaredNorm();
   t.max = normal.cwiseAbs().maxCoeff();
   t.rms = std::sqrt(t.sse / static_cast<double>(normal.size()));
@@ -41,10 +54,9 @@ Topography topographyFromNormal(const GroundFace& face, const Eigen::MatrixXd& n
 }
 
 Topography topographyOf(const GroundFace& face) {
-  Eigen::MatrixXd normal(face.grid.rows(), face.grid.cols());
-  for (int i = 0; i < face.grid.rows(); ++i)
-    for (int j = 0; j < face.grid.cols(); ++j)
-      normal(i, j) = kMicrometresPerMm * face.envelope[i * face.grid.cols() + j].t;
+  Eigen::MatrixXd normal(face.rows(), face.cols());
+  for (int i = 0; i < face.rows(); ++i)
+    for (int j = 0; j < face.cols(); ++j) normal(i, j) = kMicrometresPerMm * face.envelope[i * face.cols() + j].t;
   Topography t = topographyFromNormal(face, normal);
   t.thickness = kMicrometresPerMm * face.meanEnvelope.t * thicknessFactor(face);
   return t;

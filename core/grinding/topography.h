@@ -12,7 +12,7 @@
 namespace hobsharp {
 
 struct Topography {
-  FaceGrid grid;
+  FaceGrid grid;             // at probe points: the grid whose mean point gives the thickness
   Eigen::MatrixXd normal;    // rows root to tip, columns xMin to xMax, µm
   Eigen::MatrixXd circular;  // µm of arc at the mean radius
   double thickness = 0;      // µm
@@ -30,7 +30,9 @@ double thicknessFactor(const GroundFace& face);
 Topography topographyOf(const GroundFace& face);
 
 // A topography from normal deviations given on the grid of `face` (a measured one, or a residual).
-// The thickness at the mean point is interpolated bilinearly from the grid.
+// The thickness at the mean point is interpolated bilinearly from the grid. On a face at probe
+// points `normal` is one column, a value per point, and the thickness is the deviation of the
+// point nearest the mean point (nothing interpolated).
 Topography topographyFromNormal(const GroundFace& face, const Eigen::MatrixXd& normal);
 
 }  // namespace hobsharp

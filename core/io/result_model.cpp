@@ -182,6 +182,23 @@ void verdict(ResultVisitor& v, const Inspection& in, const std::string& prefix, 
          in.limiting ? checkName(*in.limiting) : "");
 }
 
+// A correction at measuredPoints off the grid (README, "Measured points"): per point [r, x, µm],
+// and the measurement as the identified error explains it, on the grid.
+void visitPointCorrection(const Correction& c, ResultVisitor& v) {
+  constexpr const char* kWithPoints = "only with `measuredPoints` off the grid's positions";
+  const int n = static_cast<int>(c.probes.size());
+  Eigen::MatrixXd measured(n, 3), residual(n, 3);
+  for (int k = 0; k < n; ++k) {
+    measured.row(k) << c.probes[k].r, c.probes[k].x, c.before.normal(k, 0);
+    residual.row(k) << c.probes[k].r, c.probes[k].x, c.after.normal(k, 0);
+  }
+  matrix(v, {"correction.pointMeasured", "mm, mm, µm", "per measured point [r, x, deviation], in the case's order", kWithPoints}, measured);
+  matrix(v, {"correction.pointResidual", "mm, mm, µm", "per measured point [r, x, deviation predicted after the pass]: re-simulated at the point with correction.axes and the identified error, plus the part no axis makes", kWithPoints},
+         residual);
+  matrix(v, {"correction.measuredOnGrid", "µm", "on the grid: the face the identified error grinds with the axes run, re-simulated (the measurement as the axes explain it; what no axis makes is known only at the points)", kWithPoints},
+         c.explainedOnGrid.normal);
+}
+
 // The rake-face inspection (README, "Rake-face inspection"), then the one predicted after the correction.
 void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
   const Inspection& in = e.inspection;
@@ -445,11 +462,14 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
       v.number({kChangePerNoise[i], isRotary(a) ? "µrad per µm" : "µm per µm", "precision demand: standard uncertainty of the axis change per µm of probe noise",
                 kWithMeasured}, c.changePerNoise[i]);
     }
-    matrix(v, {"correction.residual", "µm", "the face predicted after the pass: re-simulated with correction.axes and the identified error, plus the part no axis makes", kWithMeasured}, c.after.normal);
+    // With measuredPoints off the grid the grid views are the re-simulated faces (README, "Measured points").
+    const Topography& gridAfter = c.atProbes() ? c.afterOnGrid : c.after;
+    const Topography& gridMeasured = c.atProbes() ? c.explainedOnGrid : c.before;
+    matrix(v, {"correction.residual", "µm", "the face predicted after the pass: re-simulated with correction.axes and the identified error, plus the part no axis makes", kWithMeasured}, gridAfter.normal);
     matrix(v, {"correction.residualCircular", "µm", "the same along the circle about the hob axis", kWithMeasured},
-           c.after.circular);
+           gridAfter.circular);
     matrix(v, {"correction.measuredCircular", "µm", "the measured deviation along the circle about the hob axis",
-               kWithMeasured}, c.before.circular);
+               kWithMeasured}, gridMeasured.circular);
     v.number({"correction.sseBefore", "µm²", "sum of squares, measured", kWithMeasured}, c.before.sse);
     v.number({"correction.sseAfter", "µm²", "sum of squares of the face predicted after the pass (re-simulated)", kWithMeasured}, c.after.sse);
     v.number({"correction.maxBefore", "µm", "largest absolute deviation, measured", kWithMeasured}, c.before.max);
@@ -489,6 +509,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     v.number({"correction.uncorrectableShare", "", "share of the measured sum of squares predicted to stay after the pass, 0..1",
               kWithMeasured}, c.uncorrectableShare);
     v.text({"correction.verdict", "", "one sentence for the engineer", kWithMeasured}, c.verdict);
+    if (c.atProbes() || every) visitPointCorrection(c, v);
   }
   visitInspection(e, v, every);
 }

@@ -8,7 +8,12 @@ void inspectEvaluation(Evaluation& e) {
   const ToleranceTable& table = toleranceTableOf(in);
   const bool helical = job.setup.face.helical();
   const double module = job.input.hob.normalModule;
-  const Eigen::MatrixXd& face = job.input.measured ? *job.input.measured : e.topography.normal;
+  // measuredPoints off the grid: the measurement as the identified error explains it, on the grid
+  // (README, "Measured points").
+  const bool points = e.correction && e.correction->atProbes();
+  const Eigen::MatrixXd& face = job.input.measured ? *job.input.measured
+                                : points           ? e.correction->explainedOnGrid.normal
+                                                   : e.topography.normal;
   // One topography per gash: their deviations at the pitch radius, and the worst gash's face checks.
   FaceChecks faceChecks = checkFace(face, job.grid.r, job.grid.x, helical);
   std::vector<double> deviations = in.gashDeviations;
@@ -25,8 +30,11 @@ void inspectEvaluation(Evaluation& e) {
   }
   e.inspection = inspect(faceChecks, spacing, table, module);
   if (!e.correction && !e.indexCorrection) return;
-  // After: the corrected face's checks, or (only the gashes re-indexed) the faces as they are.
-  const FaceChecks after = e.correction ? checkFace(e.correction->after.normal, job.grid.r, job.grid.x, helical) : faceChecks;
+  // After: the corrected face's checks (on the grid, for points off it), or (only the gashes
+  // re-indexed) the faces as they are.
+  const FaceChecks after = points ? checkFace(e.correction->afterOnGrid.normal, job.grid.r, job.grid.x, helical)
+                           : e.correction ? checkFace(e.correction->after.normal, job.grid.r, job.grid.x, helical)
+                                          : faceChecks;
   std::optional<GashSpacing> spacingAfter;
   if (e.indexCorrection) spacingAfter = gashSpacing(e.indexCorrection->after);
   e.inspectionAfter = inspect(after, spacingAfter, table, module);
@@ -51,6 +59,11 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
   }
   if (job.input.measured) {
     auto c = correctMeasuredFace(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction);
+    if (!c) return c.error();
+    e.correction = std::move(c).value();
+  }
+  if (!job.probes.empty()) {  // README, "Measured points"
+    auto c = correctMeasuredPoints(s, job.nominalAxes, job.runAxes, job.grid, job.probes, job.probeMeasured, job.correction);
     if (!c) return c.error();
     e.correction = std::move(c).value();
   }

@@ -1,8 +1,9 @@
 #include "measured_points.h"
 #include "number_text.h"
 
+#include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <numeric>
 
 namespace hobsharp {
 namespace {
@@ -18,16 +19,13 @@ int lineAt(const std::vector<double>& lines, double v, double tolerance) {
 
 }  // namespace
 
-Outcome<Eigen::MatrixXd> gridFromPoints(const std::vector<MeasuredPoint>& points, const FaceGrid& grid,
-                                        const PointRegion& region) {
-  if (points.empty()) return refuse("measuredPoints", "is empty; it needs one [r, x, deviation] per grid position.");
-  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(grid.rows(), grid.cols());
-  std::vector<int> owner(static_cast<std::size_t>(grid.size()), -1);
+Outcome<void> checkPoints(const std::vector<MeasuredPoint>& points, const PointRegion& region) {
+  if (points.empty()) return refuse("measuredPoints", "is empty; it needs the measured points [r, x, deviation].");
   for (std::size_t k = 0; k < points.size(); ++k) {
     const MeasuredPoint& p = points[k];
-    const std::string at = "(r, x) = (" + numberText(p.r, 7) + ", " + numberText(p.x, 7) + ") mm";
     if (!std::isfinite(p.r) || !std::isfinite(p.x) || !std::isfinite(p.deviation))
       return refuse(pointName(k), "must hold three finite numbers [r, x, deviation].");
+    const std::string at = "(r, x) = (" + numberText(p.r, 7) + ", " + numberText(p.x, 7) + ") mm";
     if (std::abs(p.deviation) > region.maxDeviation)
       return refuse(pointName(k), "the deviation must lie within ±" + numberText(region.maxDeviation, 7) + " µm (10 mm); got " +
                                       numberText(p.deviation, 7) + " µm.");
@@ -38,28 +36,56 @@ Outcome<Eigen::MatrixXd> gridFromPoints(const std::vector<MeasuredPoint>& points
     if (std::abs(p.x) > region.axialReach)
       return refuse(pointName(k), at + " lies outside the ground region: the face ends at x = ±" +
                                       numberText(region.axialReach, 7) + " mm.");
-    const int i = lineAt(grid.r, p.r, region.tolerance), j = lineAt(grid.x, p.x, region.tolerance);
-    if (i < 0 || j < 0)
-      return refuse(pointName(k), at + " is not at a position of the grid (" + std::to_string(grid.rows()) +
-                                      " radii from " + numberText(grid.r.front(), 7) + " to " + numberText(grid.r.back(), 7) + " mm, " +
-                                      std::to_string(grid.cols()) + " axial positions from " + numberText(grid.x.front(), 7) +
-                                      " to " + numberText(grid.x.back(), 7) + " mm, within " + numberText(region.tolerance, 7) +
-                                      " mm). The calculator takes points at its grid's positions only; set the grid "
-                                      "to the measuring pattern.");
-    int& o = owner[static_cast<std::size_t>(i * grid.cols() + j)];
-    if (o >= 0)
-      return refuse(pointName(k), at + " is at the same grid position as " + pointName(static_cast<std::size_t>(o)) +
-                                      "; each position is measured once.");
-    o = static_cast<int>(k);
+  }
+  // Duplicates: sorted by r, each point is compared with those within the tolerance in r after it.
+  std::vector<std::size_t> order(points.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return points[a].r != points[b].r ? points[a].r < points[b].r : a < b;
+  });
+  std::size_t worst = points.size(), first = 0;
+  for (std::size_t i = 0; i < order.size(); ++i)
+    for (std::size_t j = i + 1; j < order.size() && points[order[j]].r - points[order[i]].r <= region.tolerance; ++j) {
+      if (std::abs(points[order[j]].x - points[order[i]].x) > region.tolerance) continue;
+      const std::size_t later = std::max(order[i], order[j]), earlier = std::min(order[i], order[j]);
+      if (later < worst) worst = later, first = earlier;  // the first duplicate in the list's order
+    }
+  if (worst < points.size()) {
+    const MeasuredPoint& p = points[worst];
+    return refuse(pointName(worst), "(r, x) = (" + numberText(p.r, 7) + ", " + numberText(p.x, 7) + ") mm is within " +
+                                        numberText(region.tolerance, 7) + " mm of " + pointName(first) +
+                                        ": the same point measured twice; give each point once.");
+  }
+  return success();
+}
+
+std::optional<Eigen::MatrixXd> gridFromPoints(const std::vector<MeasuredPoint>& points, const FaceGrid& grid,
+                                              double tolerance) {
+  if (static_cast<int>(points.size()) != grid.size()) return std::nullopt;
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(grid.rows(), grid.cols());
+  std::vector<bool> taken(static_cast<std::size_t>(grid.size()), false);
+  for (const MeasuredPoint& p : points) {
+    const int i = lineAt(grid.r, p.r, tolerance), j = lineAt(grid.x, p.x, tolerance);
+    if (i < 0 || j < 0) return std::nullopt;
+    const std::size_t at = static_cast<std::size_t>(i * grid.cols() + j);
+    if (taken[at]) return std::nullopt;
+    taken[at] = true;
     m(i, j) = p.deviation;
   }
-  for (int i = 0; i < grid.rows(); ++i)
-    for (int j = 0; j < grid.cols(); ++j)
-      if (owner[static_cast<std::size_t>(i * grid.cols() + j)] < 0)
-        return refuse("measuredPoints", "has no point at the grid position (r, x) = (" + numberText(grid.r[i], 7) + ", " +
-                                            numberText(grid.x[j], 7) + ") mm (row " + std::to_string(i) + ", column " +
-                                            std::to_string(j) + "); the points must cover the whole grid.");
-  return m;
+  return m;  // as many points as positions, none twice: every position covered
+}
+
+ProbePoints probePointsOf(const std::vector<MeasuredPoint>& points) {
+  ProbePoints out;
+  out.reserve(points.size());
+  for (const MeasuredPoint& p : points) out.push_back(ProbePoint{p.r, p.x});
+  return out;
+}
+
+Eigen::VectorXd deviationsOf(const std::vector<MeasuredPoint>& points) {
+  Eigen::VectorXd d(static_cast<Eigen::Index>(points.size()));
+  for (std::size_t k = 0; k < points.size(); ++k) d(static_cast<Eigen::Index>(k)) = points[k].deviation;
+  return d;
 }
 
 }  // namespace hobsharp

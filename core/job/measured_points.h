@@ -1,10 +1,11 @@
 // A measurement at the measuring machine's own points (`measuredPoints`, docs/case-format.md):
 // each point a radius r and axial position x on the rake face (mm) and the normal deviation there
-// (µm). The correction and the inspection take the points as the grid's rows: a point lies at a
-// grid position when it is within the grid tolerance of it, and the points must cover every grid
-// position once. No value is interpolated (README, "Measured points").
+// (µm). The points may lie anywhere on the ground face: the correction's rows are the points
+// themselves (correctMeasuredPoints, correction.h), nothing is interpolated. Points exactly at
+// the grid's positions, covering each once, are taken as the grid (README, "Measured points").
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 
 #include "face_grid.h"
 #include "outcome.h"
+#include "probe_points.h"
 
 namespace hobsharp {
 
@@ -21,16 +23,25 @@ struct MeasuredPoint {
 };
 
 // Where the points may lie: on the rake face between the gash root and the outer radius, and
-// along the gash within `axialReach` of x = 0 (the hob's ends), each with `tolerance` (mm).
+// along the gash within `axialReach` of x = 0 (the hob's ends), each with `tolerance` (mm). Two
+// points within `tolerance` of each other in both r and x are one point measured twice.
 struct PointRegion {
   double rootRadius = 0, outerRadius = 0, axialReach = 0, tolerance = 0;
   double maxDeviation = 0;  // µm
 };
 
-// The measured grid the points make, or a refusal naming the point (measuredPoints[k]): a
-// deviation beyond maxDeviation, a point off the face or outside the ground region, one at no
-// grid position, a second point at one position; or naming the grid position no point covers.
-Outcome<Eigen::MatrixXd> gridFromPoints(const std::vector<MeasuredPoint>& points, const FaceGrid& grid,
-                                        const PointRegion& region);
+// Every point checked, or a refusal naming the first bad one (measuredPoints[k]): not three finite
+// numbers, a deviation beyond maxDeviation, off the face, outside the ground region, or within
+// the tolerance of an earlier point (a duplicate); an empty list is refused as measuredPoints.
+Outcome<void> checkPoints(const std::vector<MeasuredPoint>& points, const PointRegion& region);
+
+// The measured grid when the points are the grid's positions (each within `tolerance` of one,
+// every position once, in any order); otherwise none: the points are corrected as points.
+std::optional<Eigen::MatrixXd> gridFromPoints(const std::vector<MeasuredPoint>& points, const FaceGrid& grid,
+                                              double tolerance);
+
+// The points' positions and their deviations (µm), in the points' order.
+ProbePoints probePointsOf(const std::vector<MeasuredPoint>& points);
+Eigen::VectorXd deviationsOf(const std::vector<MeasuredPoint>& points);
 
 }  // namespace hobsharp

@@ -268,9 +268,13 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
     const double tol = kGridTolerance * (1 + in.hob.length);
     const PointRegion region{job.rootRadius, job.outerRadius, in.hob.length / 2 + std::abs(face.axialAt(*pitch)) + tol,
                              kGridTolerance, kMaxDeviation};
-    auto m = gridFromPoints(*in.measuredPoints, grid, region);
-    if (!m) return m.error();
-    job.input.measured = std::move(m).value();
+    if (auto ok = checkPoints(*in.measuredPoints, region); !ok) return ok.error();
+    if (auto m = gridFromPoints(*in.measuredPoints, grid, kGridTolerance)) {
+      job.input.measured = std::move(m);
+    } else {
+      job.probes = probePointsOf(*in.measuredPoints);
+      job.probeMeasured = deviationsOf(*in.measuredPoints);
+    }
   }
   // The pass history is not computed with, but it must fit the job as `axes` and `measured` do.
   for (size_t i = 0; i < in.passes.size(); ++i) {

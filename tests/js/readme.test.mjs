@@ -24,9 +24,18 @@ test('every listed field is in the result of a measured case, and nothing else i
   const r = hobsharp.evaluate(c);
   const fields = hobsharp.resultFields();
   const listed = new Set(fields.map((f) => f.path));
+  // The fields of a measurement at points off the grid (README, "Measured points"): in the result
+  // of the same values as points 0.01 mm off the grid's radii, and not in the grid's.
+  const { measured, ...withoutGrid } = c;
+  const measuredPoints = measured.flatMap((row, i) => row.map((v, j) => [r.topography.r[i] + (i === 0 ? 0.01 : -0.01), r.topography.x[j], v]));
+  const rp = hobsharp.evaluate({ ...withoutGrid, measuredPoints });
+  const pointsOnly = fields.filter((f) => /measuredPoints/.test(f.when)).map((f) => f.path);
+  assert.deepEqual(pointsOnly, ['correction.pointMeasured', 'correction.pointResidual', 'correction.measuredOnGrid']);
   for (const f of fields) {
-    const v = f.path.split('.').reduce((o, k) => (o === undefined ? undefined : o[k]), r);
-    assert.notEqual(v, undefined, `${f.path} is in the result`);
+    const at = (result) => f.path.split('.').reduce((o, k) => (o === undefined ? undefined : o[k]), result);
+    const pointsField = pointsOnly.includes(f.path);
+    assert.notEqual(at(pointsField ? rp : r), undefined, `${f.path} is in the result`);
+    if (pointsField) assert.equal(at(r), undefined, `${f.path} only with points`);
   }
   // The leaves of the result (an axes object {X: [a0..], .., B: [..]} counts as one field; a
   // per-axis object {X: number, ..} as five).
@@ -39,5 +48,5 @@ test('every listed field is in the result of a measured case, and nothing else i
     } else found.push(p);
   }
   assert.deepEqual(found.filter((p) => !listed.has(p)), []);
-  assert.equal(found.length, listed.size);
+  assert.equal(found.length + pointsOnly.length, listed.size);
 });

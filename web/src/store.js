@@ -45,8 +45,10 @@ export function caseOf(state) {
     c[k] = v !== null && typeof v === 'object' && !Array.isArray(v) && c[k] ? { ...c[k], ...structuredClone(v) } : structuredClone(v);
   }
   if (state.axes) c.axes = structuredClone(state.axes);
-  if (state.measured) {
-    c.measured = state.measured;
+  if (state.measured) c.measured = state.measured;
+  // A measurement as a grid, or as the measuring machine's points (kept in extra), is corrected
+  // with the locks and options.
+  if (state.measured || c.measuredPoints) {
     c.correction = { ...state.tuning, lockedAxes: [...state.lockedAxes], locked: [...state.locked] };
   }
   return c;

@@ -14,7 +14,7 @@ function inputRows(c, prefix = '') {
   const rows = [];
   for (const [k, v] of Object.entries(c || {})) {
     const path = prefix ? `${prefix}.${k}` : k;
-    if (['measured', 'axes', 'passes', 'page'].includes(path)) continue;
+    if (['measured', 'measuredPoints', 'axes', 'passes', 'page'].includes(path)) continue;
     if (v !== null && typeof v === 'object' && !Array.isArray(v)) rows.push(...inputRows(v, path));
     else rows.push([path, Array.isArray(v) ? v.join(' ') : v]);
   }
@@ -80,6 +80,16 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   grid('simulated normal deviation (µm) for the axes run', r.topography.normal);
   grid('simulated circular deviation (µm at the mean radius)', r.topography.circular);
   if (c) grid('predicted normal deviation after correction (µm)', c.residual);
+  // At the measuring machine's points (README, "Measured points"): each block reads back as a
+  // points CSV (io/points-import.js), its title line a comment.
+  const points = (title, list) => {
+    lines.push('', `# ${title}`, row('r (mm)', 'x (mm)', 'deviation (µm)'));
+    for (const p of list) lines.push(row(...p));
+  };
+  if (c && c.pointMeasured) {
+    points('measured points', c.pointMeasured);
+    points('predicted at the measured points after correction', c.pointResidual);
+  }
   lines.push('', row('# thickness error at the mean point (µm)', r.topography.thickness));
   return BOM + lines.join('\n') + '\n';
 }

@@ -4,6 +4,7 @@
 import { verdictText } from '../words.js';
 import { MAX_MEASURED_BYTES, measuredText, tooLargeMessage } from '../io/csv.js';
 import { ORIENT_OPTIONS, checkShape, orient, readMeasured } from '../io/measured-import.js';
+import { looksLikePoints, readPoints } from '../io/points-import.js';
 import { escapeHtml, fixed } from '../format.js';
 import { chosenFileText } from '../io/files.js';
 import { tuningFor } from '../probe-noise.js';
@@ -57,6 +58,9 @@ export function mountMeasured(store) {
     $('#measured-preview').hidden = !r || text.trim() === '';
     if ($('#measured-preview').hidden) return;
     const t = r.topography;
+    const points = looksLikePoints(text);
+    for (const o of ['transpose', 'flipRadial', 'flipAxial']) $(`[data-orient="${o}"]`).disabled = points;
+    if (points) { previewPoints(text); return; }
     let read = null, g = null, problem = '';
     try {
       read = readMeasured(text, t);
@@ -84,24 +88,80 @@ export function mountMeasured(store) {
       .map((v) => `<td>${escapeHtml(fixed(v, 3))}</td>`).join('')}${row.length > 12 ? '<td>…</td>' : ''}</tr>`).join('');
     table.innerHTML = `<thead>${head}</thead><tbody>${body}${g.length > 12 ? '<tr><th>…</th></tr>' : ''}</tbody>`;
   };
+  // The preview of a points CSV (README, "Measured points"): what was read, what looks wrong, the
+  // first points as they would be used (only "change sign" and "values in mm" apply to points).
+  const previewPoints = (text) => {
+    let read = null, problem = '';
+    try {
+      read = readPoints(text);
+    } catch (e) {
+      problem = e.message;
+    }
+    const ticked = options();
+    const used = read ? pointsOriented(read.points) : [];
+    $('#measured-read').textContent = read
+      ? `Read a points file: ${read.notes.join(', ')}. Preview (r and x in mm, deviation in µm, as it would be used${
+        ticked.mm ? ', the deviations in mm multiplied by 1000' : ''}):`
+      : '';
+    const warnings = [...(read ? read.warnings.filter((w) => !ticked[w.kind]).map((w) => w.text) : []), ...(problem ? [problem] : [])];
+    $('#measured-warning').hidden = !warnings.length;
+    $('#measured-warning').textContent = warnings.join(' ');
+    const table = $('#measured-preview-table');
+    table.hidden = Boolean(problem);
+    if (problem) return;
+    const body = used.slice(0, 12).map((p, k) => `<tr><th>${k + 1}</th>${p.map((v) => `<td>${escapeHtml(fixed(v, 3))}</td>`).join('')}</tr>`).join('');
+    table.innerHTML = `<thead><tr><th>point</th><th>r (mm)</th><th>x (mm)</th><th>deviation (µm)</th></tr></thead>` +
+      `<tbody>${body}${used.length > 12 ? `<tr><th>…</th><td colspan="3">${used.length - 12} more</td></tr>` : ''}</tbody>`;
+  };
+  // The points with the ticked options that apply to them: change sign, mm to µm.
+  const pointsOriented = (list) => {
+    const o = options();
+    const scale = (o.negate ? -1 : 1) * (o.mm ? 1000 : 1);
+    return list.map(([r, x, d]) => [r, x, scale === 1 || d === 0 ? d : d * scale]);
+  };
   let pending = null;
   const previewSoon = () => { clearTimeout(pending); pending = setTimeout(preview, 150); };
   box.addEventListener('input', previewSoon);
   $('#measured-preview').addEventListener('change', preview);
   store.on('result', () => { if (!$('#measured-preview').hidden || box.value.trim() !== '') preview(); });
 
+  // The inputs before a points file was used: put back if the calculator refuses the points, so
+  // that nothing on screen is lost.
+  let beforePoints = null;
+  const withoutPoints = (extra) => {
+    const { measuredPoints, ...rest } = extra || {};
+    return rest;
+  };
   const use = (text) => {
     const r = store.state.result;
     if (!r) { refuse('Compute a setup first, so that the grid is known.'); return; }
     try {
+      if (looksLikePoints(text)) {
+        const measuredPoints = pointsOriented(readPoints(text).points);
+        message.hidden = true;
+        beforePoints = { measured: store.state.measured, extra: structuredClone(store.state.extra), tuning: store.state.tuning };
+        store.setInputs({ measured: null, extra: { ...store.state.extra, measuredPoints }, tuning: tuningFor(store.state.tuning, false) },
+          { source: 'measured', force: true });
+        store.emit('commit');
+        return;
+      }
       const measured = gridOf(text, r.topography).grid;
       message.hidden = true;
-      store.setInputs({ measured, tuning: tuningFor(store.state.tuning, false) }, { source: 'measured', force: true });
+      store.setInputs({ measured, extra: withoutPoints(store.state.extra), tuning: tuningFor(store.state.tuning, false) },
+        { source: 'measured', force: true });
       store.emit('commit');
     } catch (e) {
       refuse(e.message);
     }
   };
+  let keepMessage = false;
+  store.on('refusal', ({ error, caseObject }) => {
+    if (!beforePoints || !caseObject || !caseObject.measuredPoints || !/^measuredPoints/.test(error.field || '')) return;
+    const back = beforePoints;
+    beforePoints = null;
+    keepMessage = true;  // the refusal stays in view while the inputs before are computed again
+    store.setInputs(back, { source: 'measured', force: true });
+  });
 
   guardSize(box, refuse);
   $('#use-measured').addEventListener('click', () => use(box.value));
@@ -109,7 +169,7 @@ export function mountMeasured(store) {
     box.value = '';
     message.hidden = true;
     preview();
-    store.setInputs({ measured: null }, { source: 'measured', force: true });
+    store.setInputs({ measured: null, extra: withoutPoints(store.state.extra) }, { source: 'measured', force: true });
     store.emit('commit');
   });
   $('#measured-file').addEventListener('change', async (e) => {
@@ -138,7 +198,9 @@ export function mountMeasured(store) {
     used = state.measured;
   });
   store.on('result', ({ result, caseObject }) => {
-    if (caseObject.measured) message.hidden = true;
+    if (caseObject.measuredPoints) beforePoints = null;
+    if ((caseObject.measured || caseObject.measuredPoints) && !keepMessage) message.hidden = true;
+    keepMessage = false;
     $('#grid-shape').textContent = `${result.topography.r.length} rows × ${result.topography.x.length} values`;
     renderVerdict(result);
   });

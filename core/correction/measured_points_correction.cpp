@@ -1,0 +1,53 @@
+// correctMeasuredPoints (correction.h): the correction of a measurement at probe points, on the
+// run face simulated at those points (README, "Measured points").
+#include <string>
+
+#include "correction.h"
+
+namespace hobsharp {
+namespace {
+
+AxisPolynomials plusError(AxisPolynomials axes, const AxisPolynomials& error) {
+  for (Axis a : kAxes)
+    for (size_t k = 0; k < axes[a].a.size(); ++k) axes[a].a[k] += error[a].coefficient(static_cast<int>(k));
+  return axes;
+}
+
+Outcome<Topography> onGrid(const SharpeningSetup& setup, const AxisPolynomials& axes, const FaceGrid& grid) {
+  auto f = simulateGroundFace(setup, axes, grid, Sensitivities::Skip);
+  if (!f) return f.error();
+  return topographyOf(*f);
+}
+
+}  // namespace
+
+Outcome<Correction> correctMeasuredPoints(const SharpeningSetup& setup, const AxisPolynomials& nominal,
+                                          const AxisPolynomials& run, const FaceGrid& grid,
+                                          const ProbePoints& probes, const Eigen::VectorXd& measured,
+                                          const CorrectionOptions& o) {
+  if (measured.size() != static_cast<Eigen::Index>(probes.size()))
+    return refuse("measuredPoints", "holds " + std::to_string(probes.size()) + " points but " +
+                                        std::to_string(measured.size()) + " deviations.", ErrorCode::Internal);
+  int free = 0;
+  for (const Coefficient& k : allCoefficients(run.degree())) free += isLocked(k, o) ? 0 : 1;
+  if (static_cast<int>(probes.size()) < free)
+    return refuse("measuredPoints", "has " + std::to_string(probes.size()) + " points, too few for the " +
+                                        std::to_string(free) + " free coefficients of degree " + std::to_string(run.degree()) +
+                                        " (one equation per point): measure at least " + std::to_string(free) +
+                                        " points, or lower the degree, or lock coefficients.");
+  auto runFace = simulateGroundFace(setup, run, probes, grid);
+  if (!runFace) return runFace.error();
+  auto corrected = correctMeasuredFace(setup, nominal, run, *runFace, measured, o);
+  if (!corrected) return corrected.error();
+  Correction c = std::move(corrected).value();
+  c.probes = probes;
+  auto explained = onGrid(setup, plusError(run, c.identifiedError), grid);
+  if (!explained) return explained.error();
+  c.explainedOnGrid = std::move(explained).value();
+  auto after = onGrid(setup, plusError(c.axes, c.identifiedError), grid);
+  if (!after) return after.error();
+  c.afterOnGrid = std::move(after).value();
+  return c;
+}
+
+}  // namespace hobsharp

@@ -1,0 +1,71 @@
+// A measurement at the measuring machine's own points in the page (issue 11, item 1; README,
+// "Measured points"): a points CSV uploaded is previewed, then corrected as points; a file the
+// reader refuses, or points the calculator refuses, leave the page as it was.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { afterResult, base, openPage, root, shots, useBrowser } from './support.mjs';
+
+useBrowser();
+const desk = { viewport: { width: 1366, height: 900 } };
+const pointsCsv = readFileSync(path.join(root, 'tests', 'data', 'points-2000.csv'), 'utf8');
+const dir = mkdtempSync(path.join(tmpdir(), 'hobsharp-points-'));
+const file = (name, text) => {
+  const p = path.join(dir, name);
+  writeFileSync(p, text);
+  return p;
+};
+const previewRows = (page) => page.$$eval('#measured-preview-table tbody tr', (rows) => rows.map((r) => [...r.querySelectorAll('td')].map((c) => c.textContent)));
+const state = (page) => page.evaluate(() => ({
+  verdict: document.querySelector('#verdict').textContent,
+  sseBefore: document.querySelector('#verdict').dataset.sseBefore,
+  box: document.querySelector('#measured-csv').value.length,
+  title: document.querySelector('#before-title').textContent,
+}));
+
+test('a points CSV is previewed, corrected as points, and the maps show the grid', async () => {
+  const page = await openPage(base, desk);
+  await page.waitForFunction(() => window.hobsharpTimings.results > 0);
+  // The machine's file, as a German spreadsheet saves it: semicolons, decimal commas, a BOM, CRLF.
+  const german = '\uFEFF' + pointsCsv.trim().split('\n').map((l) => l.replace(/,/g, ';').replace(/\./g, ',')).join('\r\n') + '\r\n';
+  const n = Number(await page.getAttribute('#measured-preview', 'data-previews'));
+  await afterResult(page, () => page.setInputFiles('#measured-file', file('probe-run.csv', german)));
+  await page.waitForFunction((k) => Number(document.querySelector('#measured-preview').dataset.previews) > k, n);
+  assert.equal(await page.textContent('#measured-read'),
+    'Read a points file: 2000 points, semicolons with decimal commas. Preview (r and x in mm, deviation in µm, as it would be used):');
+  const first = pointsCsv.split('\n')[1].split(',').map(Number);
+  const rows = await previewRows(page);
+  assert.equal(rows.length, 13, '12 points and a row saying how many more');
+  assert.deepEqual(rows[0].map(Number), first.map((v) => Math.round(v * 1000) / 1000));
+  assert.equal(await page.isDisabled('[data-orient="transpose"]'), true, 'a grid option does not apply to points');
+  assert.equal(await page.isHidden('#measured-error'), true);
+  // The correction: made at the points, down to rounding (the file is a known machine error).
+  const verdict = await page.textContent('#verdict');
+  assert.match(verdict, /Correctable/);
+  const s = await state(page);
+  assert.ok(Number(s.sseBefore) > 100, `a real error measured: ${s.sseBefore}`);
+  assert.match(s.title, /^Measured at 2000 points/);
+  await page.locator('#measured-section .pair > div:first-child').screenshot({ path: path.join(shots, 'points-import-preview.png') });
+  await page.locator('#topography-section').screenshot({ path: path.join(shots, 'points-import-maps.png') });
+
+  // A file the reader refuses (no units): the message names the line; nothing else changes.
+  await page.setInputFiles('#measured-file', file('no-units.csv', 'r,x,deviation\n19,1,2\n'));
+  await page.waitForFunction(() => !document.querySelector('#measured-error').hidden);
+  assert.equal(await page.textContent('#measured-error'), 'Line 1, column 1: the column "r" has no unit: write "r (mm)".');
+  assert.equal((await state(page)).sseBefore, s.sseBefore);
+  assert.match((await state(page)).title, /^Measured at 2000 points/);
+
+  // Points the calculator refuses (one off the rake face): named, and the points before stay in use.
+  const lines = pointsCsv.trim().split('\n');
+  lines[3] = '5,0,1';
+  await afterResult(page, () => page.setInputFiles('#measured-file', file('off-face.csv', lines.join('\n'))));
+  assert.match(await page.textContent('#measured-error'), /^measuredPoints\[2\]: \(r, x\) = \(5, 0\) mm is off the rake face/);
+  const after = await state(page);
+  assert.equal(after.sseBefore, s.sseBefore, 'the correction shown is the one before');
+  assert.match(after.title, /^Measured at 2000 points/);
+  await page.locator('#measured-section .pair > div:first-child').screenshot({ path: path.join(shots, 'points-import-refused.png') });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
