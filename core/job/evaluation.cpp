@@ -46,6 +46,7 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
     e.correction = std::move(c).value();
   }
   inspectEvaluation(e);
+  gearEvaluation(e);
   return e;
 }
 
