@@ -13,6 +13,7 @@ namespace {
 constexpr int kMaxIterations = 30;
 constexpr double kStepTolerance = 1e-11;  // mm
 constexpr double kDifferenceStep = 1e-6;  // mm, forward differences of the Jacobian
+constexpr int kJacobianAge = 8;           // steps between two Jacobians
 
 struct Residual {
   Eigen::Vector2d F;
@@ -41,14 +42,18 @@ Outcome<EdgePoint> cuttingEdgePoint(const ActualRakeFace& face, const BasicRack&
     return out;
   };
   // Start at the nominal edge point: on the nominal face its radius is R and psi is 0.
+  // The Jacobian changes little over the few micrometres the edge moves: it is formed at the start
+  // and every kJacobianAge steps after (a chord Newton method; each step then costs one residual).
   Eigen::Vector2d v(R, flankAxial(rack, toothCentre, flank, R));
+  Eigen::Matrix2d J;
   for (int it = 1; it <= kMaxIterations; ++it) {
     const Residual f = residual(v);
-    Eigen::Matrix2d J;
-    for (int k = 0; k < 2; ++k) {
-      Eigen::Vector2d w = v;
-      w(k) += kDifferenceStep;
-      J.col(k) = (residual(w).F - f.F) / kDifferenceStep;
+    if ((it - 1) % kJacobianAge == 0) {
+      for (int k = 0; k < 2; ++k) {
+        Eigen::Vector2d w = v;
+        w(k) += kDifferenceStep;
+        J.col(k) = (residual(w).F - f.F) / kDifferenceStep;
+      }
     }
     const Eigen::Vector2d step = J.fullPivLu().solve(-f.F);
     if (!step.allFinite()) break;
