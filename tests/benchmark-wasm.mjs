@@ -37,6 +37,8 @@ const denseCase = { ...dense, axes: withError(dense, [['Z', 0, -0.01], ['B', 2, 
 
 // The rake-face inspection of the cycle's case with 12 gashes' deviations (as tests/benchmark.cpp).
 const inspectionCase = { ...cycleCase, inspection: { gashDeviations: [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1] } };
+// The same with the gear effect: a relief of 4.5 mm over 12 gashes (as tests/benchmark.cpp).
+const gearCase = { ...inspectionCase, hob: { ...inspectionCase.hob, gashes: 12, relief: 4.5 } };
 
 const best = (f, runs, repeats = 5) => Math.min(...Array.from({ length: repeats }, () => f(runs)));
 // Reading and correcting 2,000 measured points (README, "Measured points"): the page's and the
@@ -54,6 +56,7 @@ const wasm = {
   DenseTopography101: best((n) => hobsharp.timeTopography(JSON.stringify(denseCase), n), 10),
   InspectionPaperCase: best((n) => hobsharp.timeInspection(JSON.stringify(inspectionCase), n), 2000),
   CorrectPoints2000: readPointsMs + best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(pointsCase), n), 3, 3),
+  InspectionAndGearEffectPaperCase: best((n) => hobsharp.timeInspectionAndGearEffect(JSON.stringify(gearCase), n), 100),
 };
 // End to end from JS, with the case in and the plain-JS result out (what the page's worker pays).
 const t0 = performance.now();
@@ -66,6 +69,7 @@ const rows = [
   ['dense 101 x 101 topography', 'DenseTopography101', 15],
   ['rake-face inspection (Tab. 1, 9 x 5, 12 gashes)', 'InspectionPaperCase', 5],
   ['reading and correcting 2,000 measured points (CSV)', 'CorrectPoints2000', 20],
+  ['inspection and gear effect (Tab. 1, 12 gashes, relief)', 'InspectionAndGearEffectPaperCase', 5],
 ];
 console.log('\nnative versus WebAssembly (Node ' + process.version + '), ms per run:');
 console.log('benchmark'.padEnd(52) + 'native'.padStart(10) + 'wasm'.padStart(10) + 'wasm/native'.padStart(13));

@@ -164,9 +164,32 @@ void CorrectPoints2000(benchmark::State& state) {
   }
 }
 
+// The inspection and the gear effect of the paper's case (README "The effect on the gear"): the
+// above, then the cutting edges of 5 teeth x 2 flanks x 21 radii on the measured face, with a
+// relief of 4.5 mm over 12 gashes.
+void InspectionAndGearEffectPaperCase(benchmark::State& state) {
+  SharpeningJob job = paperJob(5, 9);
+  job.input.measured = measuredFor(job);
+  job.input.inspection.gashDeviations = {0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1};
+  job.input.hob.relief.gashes = 12;
+  job.input.hob.relief.relief = 4.5;
+  auto evaluated = evaluate(job);
+  if (!evaluated || !evaluated->gearEffect) {
+    state.SkipWithError(evaluated ? evaluated->gearEffectReason.c_str() : evaluated.error().message.c_str());
+    return;
+  }
+  Evaluation e = std::move(evaluated).value();
+  for (auto _ : state) {
+    inspectEvaluation(e);
+    gearEvaluation(e);
+    benchmark::DoNotOptimize(e.gearEffect);
+  }
+}
+
 BENCHMARK(CorrectionCycle)->Unit(benchmark::kMicrosecond);
 BENCHMARK(CorrectPoints2000)->Unit(benchmark::kMillisecond);
 BENCHMARK(InspectionPaperCase)->Unit(benchmark::kMicrosecond);
+BENCHMARK(InspectionAndGearEffectPaperCase)->Unit(benchmark::kMicrosecond);
 BENCHMARK(CorrectionCycle51x26Degree6)->Unit(benchmark::kMillisecond);
 BENCHMARK(SensitivityAnalytic)->Unit(benchmark::kMicrosecond);
 BENCHMARK(SensitivityCentralDifferences)->Unit(benchmark::kMicrosecond);
@@ -203,6 +226,9 @@ int main(int argc, char** argv) {
     std::printf("reading and correcting 2,000 measured points: %.2f ms (target < 20 ms)\n", 1e3 * s["CorrectPoints2000"]);
   if (s.count("InspectionPaperCase"))
     std::printf("rake-face inspection of the paper case: %.4f ms (target < 5 ms)\n", 1e3 * s["InspectionPaperCase"]);
+  if (s.count("InspectionAndGearEffectPaperCase"))
+    std::printf("inspection and gear effect of the paper case: %.4f ms (target < 5 ms)\n",
+                1e3 * s["InspectionAndGearEffectPaperCase"]);
   if (s.count("DenseTopography101"))
     std::printf("101 x 101 topography: %.2f ms (target < 15 ms)\n", 1e3 * s["DenseTopography101"]);
   benchmark::Shutdown();

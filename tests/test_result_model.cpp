@@ -64,8 +64,10 @@ TEST(ResultModel, FieldPathsAreUniqueAndOptionalOnesSayWhen) {
         f.path == "inspection.indexCorrectionDeg" || f.path.rfind("inspection.perGash.", 0) == 0;
     const bool wheelOffset = f.path.rfind("wheelOffset.", 0) == 0 || f.path == "wheelProfile.offset" ||
                              f.path == "wheelProfile.dressedR" || f.path == "wheelProfile.dressedZ";
+    // The gear effect: its reason always, its figures with the hob's relief.
+    const bool gearEffect = f.path.rfind("gearEffect.", 0) == 0 && f.path != "gearEffect.reason";
     const bool optional = f.path.rfind("correction.", 0) == 0 || f.path == "setup.gashLead" ||
-                          f.path == "setup.gashHelixAngle" || optionalInspection || wheelOffset;
+                          f.path == "setup.gashHelixAngle" || optionalInspection || wheelOffset || gearEffect;
     EXPECT_EQ(!f.when.empty(), optional) << f.path;
   }
   EXPECT_EQ(paths.count("topography.normal"), 1u);
@@ -82,6 +84,7 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   // A dressed wheel as well (wheel.profileOffset: the contact range is R = 29.53 to 50.0 mm).
   CaseInput withWheel = measuredCase();
   withWheel.wheelProfileOffset = WheelPointsInput{{30, 40, 49.9}, {1, -1, 0.5}};
+  withWheel.hob.relief = HobReliefInput{12, 4.5, std::nullopt};  // and the gear effect
   const Json j = Json::parse(resultJson(evaluated(withWheel)));
   std::set<std::string> written;
   leaves(j, "", &written);
@@ -112,6 +115,9 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   EXPECT_FALSE(nominal["inspection"].contains("after"));
   EXPECT_TRUE(nominal["inspection"].contains("radialAlignment"));
   EXPECT_FALSE(nominal["inspection"].contains("adjacentSpacing"));
+  // Without the hob's relief, the gear effect is only the reason there is none.
+  EXPECT_EQ(nominal["gearEffect"].size(), 1u);
+  EXPECT_NE(nominal["gearEffect"]["reason"].get<std::string>(), "");
 }
 
 TEST(ResultModel, ShapesAndUnitsAsTheJsApiStatesThem) {

@@ -51,6 +51,23 @@ double timeInspection(const std::string& text, int runs) {
   return (emscripten_get_now() - start) / runs;
 }
 
+// The inspection and the gear effect (inspectEvaluation, gearEvaluation), on the case evaluated once.
+double timeInspectionAndGearEffect(const std::string& text, int runs) {
+  auto in = parseCase(text);
+  if (!in) return -1;
+  auto job = resolveJob(*in);
+  if (!job) return -1;
+  auto e = evaluate(*job);
+  if (!e || !e->gearEffect) return -1;
+  Evaluation evaluated = std::move(e).value();
+  const double start = emscripten_get_now();
+  for (int i = 0; i < runs; ++i) {
+    inspectEvaluation(evaluated);
+    gearEvaluation(evaluated);
+  }
+  return (emscripten_get_now() - start) / runs;
+}
+
 }  // namespace
 }  // namespace hobsharp
 
@@ -58,4 +75,5 @@ EMSCRIPTEN_BINDINGS(hobsharp_bench) {
   emscripten::function("timeCorrectionCycle", &hobsharp::timeCorrectionCycle);
   emscripten::function("timeTopography", &hobsharp::timeTopography);
   emscripten::function("timeInspection", &hobsharp::timeInspection);
+  emscripten::function("timeInspectionAndGearEffect", &hobsharp::timeInspectionAndGearEffect);
 }

@@ -301,6 +301,72 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
   }
 }
 
+// The effect on the gear (README, "The effect on the gear"): the reason always, the figures with the
+// hob's relief. Per flank: the headline figures, then along the hob per tooth, then the profiles.
+void visitGearEffect(const Evaluation& e, ResultVisitor& v, bool every) {
+  constexpr const char* kWithRelief = "only with the hob's relief (hob.gashes and hob.relief, or hob.sideReliefAngle)";
+  constexpr double kArcMinPerRad = kDegPerRad * 60;
+  v.text({"gearEffect.reason", "", "why there is no gear effect (no relief in the case, or the grid holds no whole tooth); \"\" when there is one"},
+         e.gearEffect ? "" : e.gearEffectReason);
+  if (!e.gearEffect && !every) return;
+  static const GearEffect kNone;
+  const GearEffect& g = e.gearEffect ? *e.gearEffect : kNone;
+  v.text({"gearEffect.source", "", "the rake face the edges lie on: \"measured\", \"measuredPoints\" or \"simulated\" (as inspection.source)", kWithRelief},
+         e.job.input.measuredPoints ? "measuredPoints" : e.job.input.measured ? "measured" : "simulated");
+  v.number({"gearEffect.reliefPerRadian", "mm/rad", "k = K z / 2 pi: the radial drop of the relieved profile per radian behind the rake face", kWithRelief},
+           g.reliefPerRadian);
+  v.number({"gearEffect.sideReliefAngle", "deg", "the side relief angle at the pitch radius, atan(k sin(alpha_n) / r_p)", kWithRelief},
+           g.sideReliefAngle * kDegPerRad);
+  v.number({"gearEffect.activeFrom", "mm", "the hob radius where the evaluated active profile starts (it generates the gear's tip)", kWithRelief}, g.rFrom);
+  v.number({"gearEffect.activeTo", "mm", "the hob radius where it ends (it generates the gear's root side)", kWithRelief}, g.rTo);
+  struct FlankFields {
+    const char *slope, *angle, *form, *scatter, *alongSlope, *alongAngle, *alongForm, *profile;
+  };
+  static const FlankFields kLeft{"gearEffect.left.profileSlope", "gearEffect.left.pressureAngleError", "gearEffect.left.profileForm",
+                                 "gearEffect.left.slopeScatter", "gearEffect.alongHob.left.profileSlope",
+                                 "gearEffect.alongHob.left.pressureAngleError", "gearEffect.alongHob.left.profileForm",
+                                 "gearEffect.profile.left"};
+  static const FlankFields kRight{"gearEffect.right.profileSlope", "gearEffect.right.pressureAngleError", "gearEffect.right.profileForm",
+                                  "gearEffect.right.slopeScatter", "gearEffect.alongHob.right.profileSlope",
+                                  "gearEffect.alongHob.right.pressureAngleError", "gearEffect.alongHob.right.profileForm",
+                                  "gearEffect.profile.right"};
+  for (const bool left : {true, false}) {
+    const FlankFields& f = left ? kLeft : kRight;
+    const ProfileFigures& p = left ? g.left : g.right;
+    v.number({f.slope, "µm", "profile slope deviation fH_alpha on the gear flank cut by the hob's left (or right) flank: largest magnitude over the teeth, signed (plus = more material toward the gear's tip)", kWithRelief},
+             p.slope);
+    v.number({f.angle, "arc-min", "the pressure-angle error of that tooth's edge: -fH_alpha over the evaluated profile length (plus = larger pressure angle)", kWithRelief},
+             p.pressureAngle * kArcMinPerRad);
+    v.number({f.form, "µm", "profile form deviation ff_alpha: width of the band about the least-squares profile line, largest over the teeth", kWithRelief}, p.form);
+    v.number({f.scatter, "µm", "scatter of fH_alpha along the hob: largest minus smallest over the teeth", kWithRelief},
+             left ? g.leftScatter : g.rightScatter);
+  }
+  std::vector<double> x;
+  for (const ToothEdges& t : g.teeth) x.push_back(t.x);
+  numbers(v, {"gearEffect.alongHob.x", "mm", "the axial positions of the teeth evaluated (tooth centres, one axial pitch pi m_n apart)", kWithRelief}, x);
+  const std::size_t n = g.height.size();
+  for (const bool left : {true, false}) {
+    const FlankFields& f = left ? kLeft : kRight;
+    std::vector<double> slope, angle, form, profile;
+    for (const ToothEdges& t : g.teeth) {
+      const ProfileFigures& p = left ? t.left : t.right;
+      slope.push_back(p.slope);
+      angle.push_back(p.pressureAngle * kArcMinPerRad);
+      form.push_back(p.form);
+      const std::vector<double>& row = left ? t.leftProfile : t.rightProfile;
+      profile.insert(profile.end(), row.begin(), row.end());
+    }
+    numbers(v, {f.alongSlope, "µm", "per tooth of gearEffect.alongHob.x: fH_alpha of the flank", kWithRelief}, slope);
+    numbers(v, {f.alongAngle, "arc-min", "per tooth: the pressure-angle error", kWithRelief}, angle);
+    numbers(v, {f.alongForm, "µm", "per tooth: ff_alpha", kWithRelief}, form);
+    if (left)
+      numbers(v, {"gearEffect.profile.height", "mm", "heights on the gear tooth from its reference line, root (-) to tip (+), where the profiles are given", kWithRelief},
+              g.height);
+    v.matrix({f.profile, "µm", "per tooth (rows, as gearEffect.alongHob.x), the gear's profile deviation at gearEffect.profile.height (plus = more material)", kWithRelief},
+             profile.data(), static_cast<int>(g.teeth.size()), static_cast<int>(n));
+  }
+}
+
 // The dressed or measured wheel (docs/case-format.md §The wheel's profile): present only when the
 // case gives wheel.profileOffset or wheel.measuredProfile.
 void visitWheelOffset(const Evaluation& e, ResultVisitor& v) {
@@ -512,6 +578,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     if (c.atProbes() || every) visitPointCorrection(c, v);
   }
   visitInspection(e, v, every);
+  visitGearEffect(e, v, every);
 }
 
 std::string firstNonFinite(const Evaluation& e) {

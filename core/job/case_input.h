@@ -12,6 +12,7 @@
 
 #include "axis_polynomials.h"
 #include "coefficient.h"
+#include "hob_relief.h"
 #include "inspection_input.h"
 #include "measured_points.h"
 #include "tooth_face.h"
@@ -30,6 +31,7 @@ struct HobInput {
   Hand hand = Hand::Right;
   std::optional<double> gashLead;        // L_c, mm, positive
   std::optional<double> gashHelixAngle;  // deg, at the pitch diameter
+  HobReliefInput relief;                 // hob.gashes, hob.relief, hob.sideReliefAngle (the gear effect)
 };
 
 struct GridInput {

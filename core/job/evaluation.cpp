@@ -2,18 +2,22 @@
 
 namespace hobsharp {
 
+const Eigen::MatrixXd& inspectedFace(const Evaluation& e) {
+  // measuredPoints off the grid: the measurement as the identified error explains it, on the grid
+  // (README, "Measured points").
+  if (e.job.input.measured) return *e.job.input.measured;
+  if (e.correction && e.correction->atProbes()) return e.correction->explainedOnGrid.normal;
+  return e.topography.normal;
+}
+
 void inspectEvaluation(Evaluation& e) {
   const SharpeningJob& job = e.job;
   const InspectionInput& in = job.input.inspection;
   const ToleranceTable& table = toleranceTableOf(in);
   const bool helical = job.setup.face.helical();
   const double module = job.input.hob.normalModule;
-  // measuredPoints off the grid: the measurement as the identified error explains it, on the grid
-  // (README, "Measured points").
   const bool points = e.correction && e.correction->atProbes();
-  const Eigen::MatrixXd& face = job.input.measured ? *job.input.measured
-                                : points           ? e.correction->explainedOnGrid.normal
-                                                   : e.topography.normal;
+  const Eigen::MatrixXd& face = inspectedFace(e);
   // One topography per gash: their deviations at the pitch radius, and the worst gash's face checks.
   FaceChecks faceChecks = checkFace(face, job.grid.r, job.grid.x, helical);
   std::vector<double> deviations = in.gashDeviations;
@@ -68,6 +72,7 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
     e.correction = std::move(c).value();
   }
   inspectEvaluation(e);
+  gearEvaluation(e);
   return e;
 }
 

@@ -8,6 +8,7 @@
 #include "correction.h"
 #include "dressed_wheel.h"
 #include "gash_faces.h"
+#include "gear_effect.h"
 #include "ground_face.h"
 #include "index_correction.h"
 #include "inspection.h"
@@ -41,6 +42,10 @@ struct Evaluation {
   // the face's sensitivity to the offset's knot values; empty for the conjugate wheel.
   DressedProfile dressedProfile;
   WheelOffsetSensitivity offsetSensitivities;
+  // The effect of the face inspected on the gear (README, "The effect on the gear"): with the hob's
+  // relief; else, or when it cannot be computed, the sentence that says why.
+  std::optional<GearEffect> gearEffect;
+  std::string gearEffectReason;
 };
 
 Outcome<Evaluation> evaluate(const SharpeningJob& job);
@@ -48,5 +53,13 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job);
 // Fills e.inspection, e.indexCorrection and e.inspectionAfter from the rest of `e` (evaluate()
 // calls it last; the benchmark times it alone).
 void inspectEvaluation(Evaluation& e);
+
+// Fills e.gearEffect (or e.gearEffectReason) from the face inspectEvaluation() inspects
+// (gear_evaluation.cpp; evaluate() calls it after the inspection; the benchmark times it alone).
+void gearEvaluation(Evaluation& e);
+
+// The face the inspection and the gear effect take: the measured grid, or for measuredPoints off
+// the grid the measurement as the identified error explains it there, else the simulated topography.
+const Eigen::MatrixXd& inspectedFace(const Evaluation& e);
 
 }  // namespace hobsharp

@@ -1,0 +1,79 @@
+// The effect of the rake face on the gear (README, "The effect on the gear"): per flank the
+// profile slope deviation fHα with its pressure-angle error, the profile form deviation ffα and
+// their scatter along the hob; a plot of the gear's profile deviation over the active profile
+// (one line per tooth of the gash) and one of fHα along the hob. Without the hob's relief the
+// calculator's sentence says what is missing.
+import { escapeHtml, fixed } from '../format.js';
+
+const $ = (selector) => document.querySelector(selector);
+const FLANKS = [['left', 'left flank (faces −x₁)'], ['right', 'right flank (faces +x₁)']];
+
+// The table's rows: [label, unit, left, right], from the result's gearEffect.
+export function gearEffectRows(g) {
+  return [
+    ['profile slope deviation fHα (largest over the teeth)', 'µm', g.left.profileSlope, g.right.profileSlope],
+    ['pressure-angle error of that tooth', 'arc-min', g.left.pressureAngleError, g.right.pressureAngleError],
+    ['profile form deviation ffα (largest)', 'µm', g.left.profileForm, g.right.profileForm],
+    ['scatter of fHα along the hob', 'µm', g.left.slopeScatter, g.right.slopeScatter],
+  ];
+}
+
+function show(result) {
+  const g = result.gearEffect;
+  const on = Boolean(g && !g.reason);
+  $('#gear-effect').hidden = !on;
+  $('#gear-effect-reason').hidden = on;
+  $('#gear-effect-reason').textContent = g ? g.reason : '';
+  $('[data-derived="sideReliefAngle"]').textContent = on ? `at d_p: ${fixed(g.sideReliefAngle, 3)}°, k = ${fixed(g.reliefPerRadian, 3)} mm/rad` : '';
+  if (!on) return;
+  $('#gear-effect-note').textContent = `From the ${g.source === 'simulated' ? 'simulated' : 'measured'} rake face; active profile on the hob `
+    + `r = ${fixed(g.activeFrom, 2)} to ${fixed(g.activeTo, 2)} mm; ${g.alongHob.x.length} teeth of the gash along the hob. `
+    + 'fHα plus: more material toward the gear\'s tip (a smaller pressure angle).';
+  $('#gear-effect-table thead').innerHTML = `<tr><th>figure</th>${FLANKS.map(([, l]) => `<th>${escapeHtml(l)}</th>`).join('')}</tr>`;
+  $('#gear-effect-table tbody').innerHTML = gearEffectRows(g).map(([label, unit, l, r]) => `<tr><th>${escapeHtml(label)}</th>
+    <td class="num">${fixed(l, 3)} ${unit}</td><td class="num">${fixed(r, 3)} ${unit}</td></tr>`).join('');
+}
+
+const COLOURS = { left: '#1f77b4', right: '#d62728' };
+
+function drawProfiles(Plotly, g) {
+  const traces = [];
+  for (const [flank, label] of FLANKS) {
+    Array.from(g.profile[flank]).forEach((row, t) => traces.push({
+      x: row, y: g.profile.height, mode: 'lines', name: `${flank}, x = ${fixed(g.alongHob.x[t], 1)} mm`,
+      legendgroup: flank, line: { color: COLOURS[flank], dash: flank === 'left' ? 'solid' : 'dash', width: 1.5 },
+      hovertemplate: `${label}<br>height %{y:.2f} mm<br>deviation %{x:.4f} µm<extra>x = ${fixed(g.alongHob.x[t], 1)} mm</extra>`,
+    }));
+  }
+  return Plotly.react('plot-gear-profile', traces, {
+    title: { text: 'Gear profile deviation over the active profile' }, height: 360, margin: { t: 40, r: 20, b: 50, l: 60 },
+    xaxis: { title: { text: 'profile deviation on the gear (µm, + = more material)' }, zeroline: true },
+    yaxis: { title: { text: 'height on the gear tooth (mm, tip up)' } },
+    showlegend: false,
+  }, { responsive: true, displaylogo: false });
+}
+
+function drawAlong(Plotly, g) {
+  const traces = FLANKS.map(([flank, label]) => ({
+    x: g.alongHob.x, y: g.alongHob[flank].profileSlope, mode: 'lines+markers', name: label,
+    line: { color: COLOURS[flank], dash: flank === 'left' ? 'solid' : 'dash' },
+    text: Array.from(g.alongHob[flank].pressureAngleError, (a) => `pressure-angle error ${fixed(a, 3)}′`),
+    hovertemplate: 'x = %{x:.1f} mm<br>fHα = %{y:.4f} µm<br>%{text}<extra></extra>',
+  }));
+  return Plotly.react('plot-gear-along', traces, {
+    title: { text: 'fHα along the hob' }, height: 360, margin: { t: 40, r: 20, b: 50, l: 60 },
+    xaxis: { title: { text: 'tooth position along the hob axis x (mm)' } },
+    yaxis: { title: { text: 'fHα (µm)' }, zeroline: true },
+    legend: { orientation: 'h', y: -0.25 },
+  }, { responsive: true, displaylogo: false });
+}
+
+export function mountGearEffect(store, plots) {
+  store.on('result', ({ result }) => show(result));
+  plots.add(async ({ Plotly, result }) => {
+    const g = result.gearEffect;
+    if (!g || g.reason) return;
+    await drawProfiles(Plotly, g);
+    await drawAlong(Plotly, g);
+  });
+}
