@@ -60,6 +60,7 @@ test('export the measured and predicted topography as X3P, import the measured o
   assert.equal(await page.textContent('#measured-read'),
     'Read 5 × 9 values, with a header row of 9 x positions (mm), a first column of 5 r positions (mm). Preview (µm, as it would be used):');
   assert.equal(await page.isHidden('#measured-error'), true);
+  assert.equal(await page.textContent('#x3p-read'), 'Read face.x3p: an X3P surface of 9 × 5 points (float64), from HobSharp hob sharpening calculator; its lines are the grid\'s.');
   const sseAgain = Number(await page.getAttribute('#verdict', 'data-sse-before'));
   assert.ok(Math.abs(sseAgain - sseBefore) <= 1e-9 * sseBefore, `the imported grid gives the same sum of squares: ${sseAgain} against ${sseBefore}`);
   await page.locator('#measured-section .pair > div:first-child').screenshot({ path: path.join(shots, 'x3p-imported.png') });

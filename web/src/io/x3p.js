@@ -387,9 +387,9 @@ export function x3pTopographies(result, caseObject) {
   const measured = caseObject && Array.isArray(caseObject.measured) ? caseObject.measured : null;
   if (measured) out.push({ kind: 'measured', label: 'measured', values: measured });
   if (result && result.correction && Array.isArray(result.correction.residual)) {
-    out.push({ kind: 'predicted', label: 'predicted after correction', values: result.correction.residual });
+    out.push({ kind: 'predicted', label: 'predicted (corrected)', values: result.correction.residual });
   }
-  if (!measured && result && result.topography) out.push({ kind: 'simulated', label: 'simulated (axes run)', values: result.topography.normal });
+  if (!measured && result && result.topography) out.push({ kind: 'simulated', label: 'simulated', values: result.topography.normal });
   return out;
 }
 

@@ -38,6 +38,7 @@ export function mountX3p(store, { take, refuse }) {
       const t = r.topography;
       const read = readX3p(file.bytes);
       const values = x3pOnGrid(read, t);
+      $('#x3p-read').textContent = `Read ${file.name}: ${read.notes.join(', ')}; its lines are the grid's.`;
       take(x3pGridCsv({ r: t.r, x: t.x, values }));
     } catch (err) {
       refuse(file ? `${file.name}: ${err.message}` : err.message);
