@@ -7,11 +7,13 @@
 // when the name repeats (or is in `lists`).
 
 const MAX_DEPTH = 64;
-const NAME = /^[A-Za-z_:][-A-Za-z0-9_:.\u00B7\u00C0-\uFFFF]*/;
+const NAME = /[A-Za-z_:][-A-Za-z0-9_:.\u00B7\u00C0-\uFFFF]*/y;
 const PREDEFINED = { lt: '<', gt: '>', amp: '&', quot: '"', apos: "'" };
 
 export function parseXml(xml, { lists = new Set(), file = 'the XML' } = {}) {
   let at = 0;
+  // The name at k, or null.
+  const nameAt = (k) => { NAME.lastIndex = k; const m = NAME.exec(xml); return m && m[0]; };
   const lineAt = (k) => {
     let n = 1;
     for (let i = xml.indexOf('\n'); i >= 0 && i < k; i = xml.indexOf('\n', i + 1)) n += 1;
@@ -43,27 +45,26 @@ export function parseXml(xml, { lists = new Set(), file = 'the XML' } = {}) {
   const localName = (name) => name.slice(name.indexOf(':') + 1);
   // The start tag at `at`: its name, and whether it closes itself.
   const startTag = () => {
-    const m = NAME.exec(xml.slice(at + 1, at + 1 + 1000));
-    if (!m) fail('a "<" that starts no element name.');
-    const name = m[0];
+    const name = nameAt(at + 1);
+    if (!name) fail('a "<" that starts no element name.');
     at += 1 + name.length;
     for (;;) {
       while (/\s/.test(xml[at] || '')) at += 1;
       if (at >= xml.length) fail(`the start tag <${name}> does not end (the document is cut short?).`);
       if (xml.startsWith('/>', at)) { at += 2; return { name, empty: true }; }
       if (xml[at] === '>') { at += 1; return { name, empty: false }; }
-      const a = NAME.exec(xml.slice(at, at + 1000));
+      const a = nameAt(at);
       if (!a) fail(`<${name}> has something that is no attribute: "${xml.slice(at, at + 20)}".`);
-      at += a[0].length;
+      at += a.length;
       while (/\s/.test(xml[at] || '')) at += 1;
-      if (xml[at] !== '=') fail(`<${name}>'s attribute ${a[0]} has no "=".`);
+      if (xml[at] !== '=') fail(`<${name}>'s attribute ${a} has no "=".`);
       at += 1;
       while (/\s/.test(xml[at] || '')) at += 1;
       const quote = xml[at];
-      if (quote !== '"' && quote !== "'") fail(`<${name}>'s attribute ${a[0]} has no quoted value.`);
+      if (quote !== '"' && quote !== "'") fail(`<${name}>'s attribute ${a} has no quoted value.`);
       const end = xml.indexOf(quote, at + 1);
-      if (end < 0) fail(`<${name}>'s attribute ${a[0]} does not end (the document is cut short?).`);
-      if (xml.slice(at + 1, end).includes('<')) fail(`<${name}>'s attribute ${a[0]} holds a "<".`);
+      if (end < 0) fail(`<${name}>'s attribute ${a} does not end (the document is cut short?).`);
+      if (xml.slice(at + 1, end).includes('<')) fail(`<${name}>'s attribute ${a} holds a "<".`);
       at = end + 1;
     }
   };
