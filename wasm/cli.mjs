@@ -8,15 +8,25 @@
 //   --points-out prefix  writes prefix-measured.csv and prefix-predicted.csv: the measured points
 //                        and the face predicted after the correction at them (needs --points or
 //                        the case's measuredPoints off the grid)
+// The X3P options (wasm/cli-x3p.mjs) read the measured grid from an .x3p and write the result's
+// topographies as .x3p files.
 import { readFileSync, writeFileSync } from 'node:fs';
 import { loadHobSharp } from './hobsharp.mjs';
 import { pointsToCsv, readPoints } from '../web/src/io/points-import.js';
+import { X3P_USAGE, caseWithMeasuredX3p, takeX3pOptions, writeResultX3p } from './cli-x3p.mjs';
 
-const usage = () => {
-  process.stderr.write('usage: node wasm/cli.mjs case.json [--points points.csv] [--points-out prefix]\n');
+const usage = (why = '') => {
+  process.stderr.write(`${why}usage: node wasm/cli.mjs case.json [--points points.csv] [--points-out prefix] ${X3P_USAGE}\n`);
   process.exit(2);
 };
-const args = process.argv.slice(2);
+const argv = [...process.argv];
+let x3p = {};
+try {
+  x3p = takeX3pOptions(argv);
+} catch (e) {
+  usage(`${e.message}\n`);
+}
+const args = argv.slice(2);
 let file, pointsFile, pointsOut;
 for (let i = 0; i < args.length; ++i) {
   if (args[i] === '--points' && i + 1 < args.length) pointsFile = args[++i];
@@ -25,6 +35,7 @@ for (let i = 0; i < args.length; ++i) {
   else usage();
 }
 if (!file) usage();
+if (pointsFile && x3p.measured) usage('--points and --measured-x3p both give the measurement; give one.\n');
 
 const read = (name) => {
   try {
@@ -58,7 +69,8 @@ if (pointsFile) {
 }
 try {
   const hobsharp = await loadHobSharp();
-  const json = hobsharp.evaluateToJson(text);
+  const caseText = caseWithMeasuredX3p(hobsharp, text, x3p);
+  const json = hobsharp.evaluateToJson(caseText);
   if (pointsOut) {
     const c = JSON.parse(json).correction;
     if (!c || !c.pointMeasured) {
@@ -68,8 +80,9 @@ try {
     writeFileSync(`${pointsOut}-measured.csv`, pointsToCsv(c.pointMeasured));
     writeFileSync(`${pointsOut}-predicted.csv`, pointsToCsv(c.pointResidual));
   }
+  writeResultX3p(JSON.parse(json), caseText, x3p).forEach((f) => process.stderr.write(`wrote ${f}\n`));
   process.stdout.write(json + '\n');
 } catch (e) {
-  process.stderr.write(`${pointsFile || file}: ${e.message}\n`);
+  process.stderr.write(x3p.measured && e.message.startsWith(`${x3p.measured}:`) ? `${e.message}\n` : `${pointsFile || file}: ${e.message}\n`);
   process.exit(1);
 }

@@ -9,6 +9,7 @@ import { escapeHtml, fixed } from '../format.js';
 import { chosenFileText } from '../io/files.js';
 import { tuningFor } from '../probe-noise.js';
 import { OPTION_FIELD } from '../correction-options.js';
+import { mountX3p } from './x3p.js';
 
 const $ = (selector) => document.querySelector(selector);
 // The grid's and the locks' refusals; the correction's options show theirs at their inputs.
@@ -164,6 +165,8 @@ export function mountMeasured(store) {
   });
 
   guardSize(box, refuse);
+  // An X3P file (views/x3p.js) goes into the box as CSV and is used as an uploaded CSV is.
+  mountX3p(store, { take: (text) => { box.value = text; preview(); use(text); }, refuse });
   $('#use-measured').addEventListener('click', () => use(box.value));
   $('#clear-measured').addEventListener('click', () => {
     box.value = '';
