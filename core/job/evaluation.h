@@ -14,6 +14,7 @@
 #include "sensitivity_matrix.h"
 #include "sharpening_job.h"
 #include "topography.h"
+#include "wheel_correction.h"
 #include "wheel_offset_sensitivity.h"
 #include "wheel_profile.h"
 
@@ -39,6 +40,9 @@ struct Evaluation {
   // the face's sensitivity to the offset's knot values; empty for the conjugate wheel.
   DressedProfile dressedProfile;
   WheelOffsetSensitivity offsetSensitivities;
+  // With `correction.wheel` (README §Wheel-profile correction): the wheel's part of the correction;
+  // `correction` then holds the axes' part, its predicted face with both applied.
+  std::optional<WheelCorrection> wheelCorrection;
 };
 
 Outcome<Evaluation> evaluate(const SharpeningJob& job);

@@ -192,6 +192,12 @@ Outcome<CorrectionOptions> correctionOptions(const CorrectionInput& c, int degre
       return refuse(name + ".locked", k.name() + " is beyond the polynomial degree " + std::to_string(degree) + ".");
   o.locked = c.locked;
   o.lockedAxes = c.lockedAxes;
+  if (c.wheel.value_or(false)) {  // the wheel-profile correction (README)
+    if (o.method != CorrectionMethod::Nonlinear)
+      return refuse(name + ".wheel", "needs correction.method \"nonlinear\": the wheel is identified together with the "
+                                     "machine error, which the linear step does not do.");
+    o.wheel = true;
+  }
   return o;
 }
 
