@@ -35,6 +35,17 @@ const bigCase = { ...big, measured: hobsharp.evaluate({ ...big, axes: withError(
 const dense = { ...paper, grid: { ...paper.grid, radial: 101, axial: 101 } };
 const denseCase = { ...dense, axes: withError(dense, [['Z', 0, -0.01], ['B', 2, 0.001]]) };
 
+// The wheel-profile correction (README §Wheel-profile correction): the cycle's machine error ground
+// by a wheel 10 µm out of profile (a second-degree shape along the radius, as tests/benchmark.cpp),
+// corrected with correction.wheel on.
+const contactR = hobsharp.evaluate(paper).wheelProfile.R;
+const [rMin, rMax] = [Math.min(...contactR), Math.max(...contactR)];
+const worn = { ...paper, wheel: { ...paper.wheel, profileOffset: {
+  R: Array.from({ length: 9 }, (_, k) => rMin + (rMax - rMin) * k / 8),
+  offset: Array.from({ length: 9 }, (_, k) => 10 * (k / 4 - 1) ** 2 - 5) } } };
+const wheelCase = { ...paper, measured: hobsharp.evaluate({ ...worn, axes: withError(paper, cycleError) }).topography.normal,
+  correction: { ...paper.correction, wheel: true } };
+
 // The rake-face inspection of the cycle's case with 12 gashes' deviations (as tests/benchmark.cpp).
 const inspectionCase = { ...cycleCase, inspection: { gashDeviations: [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1] } };
 // The same with the gear effect: a relief of 4.5 mm over 12 gashes (as tests/benchmark.cpp).
@@ -52,6 +63,7 @@ const readPointsMs = best((n) => {
 }, 20);
 const wasm = {
   CorrectionCycle: best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(cycleCase), n), 200),
+  WheelCorrectionCycle: best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(wheelCase), n), 200),
   CorrectionCycle51x26Degree6: best((n) => hobsharp.timeCorrectionCycle(JSON.stringify(bigCase), n), 5, 3),
   DenseTopography101: best((n) => hobsharp.timeTopography(JSON.stringify(denseCase), n), 10),
   InspectionPaperCase: best((n) => hobsharp.timeInspection(JSON.stringify(inspectionCase), n), 2000),
@@ -65,6 +77,7 @@ const endToEnd = (performance.now() - t0) / 100;
 
 const rows = [
   ['correction cycle (Tab. 1, 9 x 5, 25 coefficients)', 'CorrectionCycle', 1],
+  ['correction cycle with the wheel (Tab. 1, 9 x 5, degree 4)', 'WheelCorrectionCycle', 2],
   ['correction cycle (51 x 26, degree 6, 35 coefficients)', 'CorrectionCycle51x26Degree6', 50],
   ['dense 101 x 101 topography', 'DenseTopography101', 15],
   ['rake-face inspection (Tab. 1, 9 x 5, 12 gashes)', 'InspectionPaperCase', 5],

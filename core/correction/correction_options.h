@@ -51,6 +51,8 @@ struct CorrectionOptions {
   // Coefficients left as they are. A locked axis is all of its coefficients.
   std::vector<Coefficient> locked;
   std::vector<Axis> lockedAxes;
+  // Solve for the axes and a wheel-profile offset together (`correction.wheel`, wheel_correction.h).
+  bool wheel = false;
 };
 
 inline bool isLocked(const Coefficient& c, const CorrectionOptions& o) {

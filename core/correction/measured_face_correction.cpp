@@ -117,7 +117,8 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
 
 Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                         const AxisPolynomials& run, const GroundFace& runFace,
-                                        const Eigen::MatrixXd& measured, const CorrectionOptions& o) {
+                                        const Eigen::MatrixXd& measured, const CorrectionOptions& o,
+                                        const MachineErrorEstimate* identified) {
   Correction c;
   Eigen::MatrixXd unexplained;
   Eigen::MatrixXd coefficientCov;  // of the change of c.coefficients per unit noise variance
@@ -139,7 +140,8 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     unexplained = measured - normalOf(*explained);
     coefficientCov = c.changeCovariancePerNoise;
   } else {
-    auto m = identifyMachineError(setup, run, runFace, measured, o);
+    auto m = identified ? Outcome<MachineErrorEstimate>(*identified)
+                        : identifyMachineError(setup, run, runFace, measured, o);
     if (!m) return m.error();
     c.method = CorrectionMethod::Nonlinear;
     c.before = topographyFromNormal(runFace, measured);

@@ -36,7 +36,7 @@ DressedProfile dressedProfile(const SharpeningSetup& setup, const WheelProfile& 
   DressedProfile d;
   for (size_t k = 0; k < conjugate.r.size(); ++k) {
     const MeridianPoint p = meridianAt(setup, conjugate.r[k], conjugate.w[k]);
-    const double delta = setup.wheel.hasOffset() ? setup.wheel.offset->value(p.R) : 0.0;
+    const double delta = setup.wheel.value(p.R);
     d.r.push_back(p.r);
     d.R.push_back(p.R);
     d.offset.push_back(delta);

@@ -5,9 +5,12 @@
 namespace hobsharp {
 
 WheelOffsetSensitivity wheelOffsetSensitivity(const GroundFace& face, const WheelSurface& wheel) {
+  if (!wheel.offset) return {};
+  return wheelOffsetSensitivity(face, *wheel.offset);
+}
+
+WheelOffsetSensitivity wheelOffsetSensitivity(const GroundFace& face, const CubicSpline& spline) {
   WheelOffsetSensitivity S;
-  if (!wheel.hasOffset()) return S;
-  const CubicSpline& spline = *wheel.offset;
   const int knots = static_cast<int>(spline.size()), n = face.grid.size();
   auto row = [&](const EnvelopePoint& e) {
     // delta = sum_k y_k B_k(R): dt/dy_k = dt/d(delta) B_k(R) + dt/d(delta') B_k'(R); mm per mm is

@@ -20,4 +20,9 @@ struct WheelOffsetSensitivity {
 // that wheel. Empty matrices for a wheel without an offset.
 WheelOffsetSensitivity wheelOffsetSensitivity(const GroundFace& face, const WheelSurface& wheel);
 
+// The same per knot value of `spline`, one of the splines whose sum is the wheel's offset
+// (WheelSurface::offset or ::added): delta is linear in each, so the columns are its cardinal
+// functions' (`face` as above, simulated for that wheel).
+WheelOffsetSensitivity wheelOffsetSensitivity(const GroundFace& face, const CubicSpline& spline);
+
 }  // namespace hobsharp

@@ -19,19 +19,28 @@ namespace hobsharp {
 struct WheelSurface {
   // The offset delta(R), mm over mm, a natural cubic spline; none for the conjugate wheel.
   std::optional<CubicSpline> offset;
-  bool hasOffset() const { return offset.has_value(); }
+  // A second offset on top of `offset`, through its own points: what the wheel-profile correction
+  // proposes to dress in addition (core/correction/wheel_correction.h). delta is their sum.
+  std::optional<CubicSpline> added;
+  bool hasOffset() const { return offset.has_value() || added.has_value(); }
+  // delta(R), delta'(R), delta''(R) of the sum, mm (zero for the conjugate wheel).
+  double value(double R) const { return (offset ? offset->value(R) : 0.0) + (added ? added->value(R) : 0.0); }
+  double slope(double R) const { return (offset ? offset->slope(R) : 0.0) + (added ? added->slope(R) : 0.0); }
+  double curvature(double R) const {
+    return (offset ? offset->curvature(R) : 0.0) + (added ? added->curvature(R) : 0.0);
+  }
 };
 
 // The offset's value and slope at R, with R's derivatives carried by the chain rule
 // (d delta = delta'(R) dR, d delta' = delta''(R) dR).
-inline double offsetValue(const CubicSpline& s, double R) { return s.value(R); }
-inline double offsetSlope(const CubicSpline& s, double R) { return s.slope(R); }
+inline double offsetValue(const WheelSurface& s, double R) { return s.value(R); }
+inline double offsetSlope(const WheelSurface& s, double R) { return s.slope(R); }
 template <class Der>
-Eigen::AutoDiffScalar<Der> offsetValue(const CubicSpline& s, const Eigen::AutoDiffScalar<Der>& R) {
+Eigen::AutoDiffScalar<Der> offsetValue(const WheelSurface& s, const Eigen::AutoDiffScalar<Der>& R) {
   return Eigen::AutoDiffScalar<Der>(s.value(R.value()), s.slope(R.value()) * R.derivatives());
 }
 template <class Der>
-Eigen::AutoDiffScalar<Der> offsetSlope(const CubicSpline& s, const Eigen::AutoDiffScalar<Der>& R) {
+Eigen::AutoDiffScalar<Der> offsetSlope(const WheelSurface& s, const Eigen::AutoDiffScalar<Der>& R) {
   return Eigen::AutoDiffScalar<Der>(s.slope(R.value()), s.curvature(R.value()) * R.derivatives());
 }
 
@@ -56,8 +65,8 @@ WheelMeridian<T> wheelMeridian(const WheelSurface& wheel, const WheelContact<T>&
                                const T& slopeShift) {
   WheelMeridian<T> m{c.R(), c.Z(), c.nRadial(), c.n.z()};
   if (!wheel.hasOffset()) return m;
-  const T delta = offsetValue(*wheel.offset, m.R) + valueShift;
-  const T slope = offsetSlope(*wheel.offset, m.R) + slopeShift;
+  const T delta = offsetValue(wheel, m.R) + valueShift;
+  const T slope = offsetSlope(wheel, m.R) + slopeShift;
   const T nR = m.nR, nZ = m.nZ;
   m.R = m.R - delta * nR;
   m.Z = m.Z - delta * nZ;

@@ -406,7 +406,7 @@ Outcome<void> readWheelProfile(const Node& wheel, CaseInput& in) {
 
 Outcome<CorrectionInput> readCorrection(const Node& c) {
   HOBSHARP_TRY(c.onlyKnown({"method", "probeNoise", "resolution", "truncation", "amplification", "lockedAxes",
-                            "locked"}));
+                            "locked", "wheel"}));
   CorrectionInput out;
   HOBSHARP_ASSIGN(out.method, c.choice("method", {"nonlinear", "linear"}));
   HOBSHARP_ASSIGN(out.probeNoise, c.optionalNumber("probeNoise"));
@@ -440,6 +440,10 @@ Outcome<CorrectionInput> readCorrection(const Node& c) {
         return refuse(c.field("locked"), "holds " + quoted(text) + "; write a coefficient as \"X a0\" .. \"B a6\".");
       out.locked.push_back(Coefficient{a, text[3] - '0'});
     }
+  }
+  if (const Json* v = c.find("wheel")) {  // the wheel-profile correction (README)
+    if (!v->is_boolean()) return refuse(c.field("wheel"), std::string("must be true or false; got ") + typeName(*v) + ".");
+    out.wheel = v->get<bool>();
   }
   return out;
 }

@@ -385,7 +385,7 @@ void visitWheelOffset(const Evaluation& e, ResultVisitor& v) {
   numbers(v, {"wheelProfile.dressedR", "mm", "wheel radius of the dressed (or measured) wheel's profile", kWithOffset}, d.dressedR);
   numbers(v, {"wheelProfile.dressedZ", "mm", "axial position of the dressed (or measured) wheel's profile", kWithOffset}, d.dressedZ);
   static const CubicSpline kNone;
-  const CubicSpline& spline = wheel.hasOffset() ? *wheel.offset : kNone;
+  const CubicSpline& spline = wheel.offset ? *wheel.offset : kNone;
   numbers(v, {"wheelOffset.R", "mm", "the offset's spline points: conjugate wheel radius (for a measured wheel, the projected points)", kWithOffset},
           spline.x());
   numbers(v, {"wheelOffset.offset", "µm", "the offset at wheelOffset.R", kWithOffset}, micrometres(spline.y()));
@@ -394,6 +394,29 @@ void visitWheelOffset(const Evaluation& e, ResultVisitor& v) {
               kWithOffset}, S.normal.data(), static_cast<int>(S.normal.cols()), e.sensitivities.rows, e.sensitivities.cols);
   eigenNumbers(v, {"wheelOffset.thickness", "µm per µm", "per point of wheelOffset.R: the thickness change of a 1 µm change", kWithOffset},
                S.thickness);
+}
+
+// The wheel-profile correction (README §Wheel-profile correction): present only with
+// `correction.wheel: true`.
+void visitWheelCorrection(const Evaluation& e, ResultVisitor& v) {
+  constexpr const char* kWithWheel = "only with `measured` and `correction.wheel`";
+  if (!e.wheelCorrection && !v.listsEveryField()) return;
+  static const WheelCorrection kNoWheel;
+  const WheelCorrection& w = e.wheelCorrection ? *e.wheelCorrection : kNoWheel;
+  numbers(v, {"correction.wheelProfileOffset.R", "mm", "the dressing's spline points: conjugate wheel radius, over the radii the grid is ground with", kWithWheel},
+          w.knots.R);
+  numbers(v, {"correction.wheelProfileOffset.offset", "µm", "what to dress in addition to the current offset at those points, a natural cubic spline (+ = more wheel, less material)", kWithWheel},
+          w.offset);
+  numbers(v, {"correction.dresserPath.R", "mm", "the corrected axial wheel profile for the dresser: the current profile plus the dressing along its normal, at the wheelProfile points", kWithWheel},
+          w.dresser.dressedR);
+  numbers(v, {"correction.dresserPath.Z", "mm", "its axial positions", kWithWheel}, w.dresser.dressedZ);
+  matrix(v, {"correction.removedByAxes", "µm", "the part of the measured face the axes remove (in the span of the directions they take)", kWithWheel},
+         w.removedByAxes);
+  matrix(v, {"correction.removedByWheel", "µm", "the part the wheel's dressing removes: the shape the axes cannot make", kWithWheel},
+         w.removedByWheel);
+  v.number({"correction.axesShare", "", "share of the measured sum of squares the axes remove, 0..1", kWithWheel}, w.axesShare);
+  v.number({"correction.wheelShare", "", "share of the measured sum of squares the wheel removes, 0..1 (with axesShare and uncorrectableShare: 1)", kWithWheel},
+           w.wheelShare);
 }
 
 }  // namespace
@@ -576,6 +599,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
               kWithMeasured}, c.uncorrectableShare);
     v.text({"correction.verdict", "", "one sentence for the engineer", kWithMeasured}, c.verdict);
     if (c.atProbes() || every) visitPointCorrection(c, v);
+    visitWheelCorrection(e, v);
   }
   visitInspection(e, v, every);
   visitGearEffect(e, v, every);

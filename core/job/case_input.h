@@ -48,6 +48,7 @@ struct CorrectionInput {
   std::optional<double> amplification;
   std::vector<Axis> lockedAxes;
   std::vector<Coefficient> locked;
+  std::optional<bool> wheel;              // solve for a wheel-profile offset too (default false)
 };
 
 // One grinding pass of the history: the axes the machine ran and the face measured after it

@@ -1,5 +1,7 @@
 #include "evaluation.h"
 
+#include <algorithm>
+
 namespace hobsharp {
 
 const Eigen::MatrixXd& inspectedFace(const Evaluation& e) {
@@ -61,7 +63,14 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
     e.dressedProfile = dressedProfile(s, e.wheelProfile);
     e.offsetSensitivities = wheelOffsetSensitivity(e.groundFace, s.wheel);
   }
-  if (job.input.measured) {
+  if (job.input.measured && job.correction.wheel) {  // README §Wheel-profile correction
+    const double rLow = std::max(job.grid.r.front(), job.rootRadius), rHigh = std::min(job.grid.r.back(), job.outerRadius);
+    auto c = correctAxesAndWheel(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction,
+                                 e.wheelProfile, rLow, rHigh);
+    if (!c) return c.error();
+    e.correction = std::move(c->correction);
+    e.wheelCorrection = std::move(c->wheel);
+  } else if (job.input.measured) {
     auto c = correctMeasuredFace(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction);
     if (!c) return c.error();
     e.correction = std::move(c).value();

@@ -16,6 +16,7 @@
 #include "sensitivity_matrix.h"
 #include "sharpening_job.h"
 #include "topography.h"
+#include "wheel_correction.h"
 #include "wheel_offset_sensitivity.h"
 #include "wheel_profile.h"
 
@@ -46,6 +47,9 @@ struct Evaluation {
   // relief; else, or when it cannot be computed, the sentence that says why.
   std::optional<GearEffect> gearEffect;
   std::string gearEffectReason;
+  // With `correction.wheel` (README §Wheel-profile correction): the wheel's part of the correction;
+  // `correction` then holds the axes' part, its predicted face with both applied.
+  std::optional<WheelCorrection> wheelCorrection;
 };
 
 Outcome<Evaluation> evaluate(const SharpeningJob& job);

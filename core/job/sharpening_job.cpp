@@ -192,6 +192,12 @@ Outcome<CorrectionOptions> correctionOptions(const CorrectionInput& c, int degre
       return refuse(name + ".locked", k.name() + " is beyond the polynomial degree " + std::to_string(degree) + ".");
   o.locked = c.locked;
   o.lockedAxes = c.lockedAxes;
+  if (c.wheel.value_or(false)) {  // the wheel-profile correction (README)
+    if (o.method != CorrectionMethod::Nonlinear)
+      return refuse(name + ".wheel", "needs correction.method \"nonlinear\": the wheel is identified together with the "
+                                     "machine error, which the linear step does not do.");
+    o.wheel = true;
+  }
   return o;
 }
 
@@ -287,6 +293,9 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   auto options = correctionOptions(in.correction, in.degree, "correction");
   if (!options) return options.error();
   job.correction = *options;
+  if (job.correction.wheel && !job.probes.empty())
+    return refuse("correction.wheel", "is not available for measured points off the grid yet: give the points at the "
+                                      "grid's positions (or the grid as `measured`) to correct the wheel too.");
   if (auto r = checkInspectionInput(in.inspection); !r) return r.error();  // README, "Rake-face inspection"
   for (std::size_t k = 0; k < in.inspection.gashTopographies.size(); ++k)
     if (auto r = checkMeasured(in.inspection.gashTopographies[k], grid, "inspection.gashTopographies[" + std::to_string(k) + "]"); !r)

@@ -1,0 +1,119 @@
+#include "wheel_correction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace hobsharp {
+namespace {
+
+Eigen::VectorXd flat(const Eigen::MatrixXd& m) {
+  Eigen::VectorXd v(m.size());
+  for (int i = 0; i < m.rows(); ++i)
+    for (int j = 0; j < m.cols(); ++j) v(i * m.cols() + j) = m(i, j);
+  return v;
+}
+
+Eigen::MatrixXd gridOf(const Eigen::VectorXd& v, int rows, int cols) {
+  Eigen::MatrixXd m(rows, cols);
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < cols; ++j) m(i, j) = v(i * cols + j);
+  return m;
+}
+
+// A sum of squares for a sentence, as measured_face_correction.cpp writes it: 3 digits, or
+// "below 1e-6" where only rounding is left (which the native and WebAssembly builds round apart).
+std::string squares(double sse) {
+  if (sse < 1e-6) return "below 1e-6";
+  std::ostringstream s;
+  s.precision(3);
+  s << sse;
+  return s.str();
+}
+
+std::string percent(double share) {
+  std::ostringstream s;
+  s.precision(3);
+  s << 100 * share << " %";
+  return s.str();
+}
+
+// The sentence for the engineer when the solve converged and a change is proposed; otherwise the
+// axes' own sentence (stalled, not converged, run kept) stands.
+std::string verdictOf(const Correction& c, const WheelCorrection& w, const CorrectionOptions& o, int points) {
+  double largest = 0;
+  for (double x : w.offset) largest = std::max(largest, std::abs(x));
+  std::ostringstream v;
+  v.precision(3);
+  const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
+  const std::string split = "the axes remove " + percent(w.axesShare) + " of the measured sum of squares, the wheel " +
+                            percent(w.wheelShare);
+  if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
+    v << "Correctable with the wheel: run the axes proposed and dress the wheel profile by "
+         "correction.wheelProfileOffset (at most "
+      << largest << " µm); predicted sum of squares " << squares(c.after.sse) << " µm², from "
+      << squares(c.before.sse) << " µm² (" << split << ").";
+  } else {
+    v << "Partly uncorrectable: " << percent(c.uncorrectableShare)
+      << " of the sum of squares is a shape neither the axes nor a smooth wheel profile through "
+      << w.knots.R.size() << " points make; it stays in the residual (" << split << ").";
+  }
+  return v.str();
+}
+
+}  // namespace
+
+Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup, const AxisPolynomials& nominal,
+                                                    const AxisPolynomials& run, const GroundFace& runFace,
+                                                    const Eigen::MatrixXd& measured, const CorrectionOptions& o,
+                                                    const WheelProfile& conjugate, double rLow, double rHigh) {
+  if (o.method != CorrectionMethod::Nonlinear)
+    return refuse("correction.wheel", "needs correction.method \"nonlinear\": the wheel is identified with the machine "
+                                      "error, which the linear step does not do.");
+  auto knots = wheelKnots(setup, runFace.grid, rLow, rHigh);
+  if (!knots) return knots.error();
+  auto estimate = identifyMachineAndWheelError(setup, run, runFace, measured, o, *knots);
+  if (!estimate) return estimate.error();
+  // With -W dressed, the wheel is the case's again (W and -W through the same points cancel
+  // exactly), so the axes' figures, re-simulated with the case's wheel plus what neither makes,
+  // are those of both applied.
+  auto axes = correctMeasuredFace(setup, nominal, run, runFace, measured, o, &estimate->axes);
+  if (!axes) return axes.error();
+
+  AxesAndWheelCorrection out{std::move(axes).value(), {}};
+  const Correction& c = out.correction;
+  WheelCorrection& w = out.wheel;
+  w.knots = *knots;
+  w.singularValues = estimate->wheelSingularValues;
+  w.used = estimate->wheelUsed;
+  w.withinNoise = estimate->wheelWithinNoise;
+  w.amplifying = estimate->wheelAmplifying;
+  const Eigen::VectorXd dress = c.runKept ? Eigen::VectorXd::Zero(estimate->deviation.size()) : Eigen::VectorXd(-estimate->deviation);
+  for (int k = 0; k < dress.size(); ++k) {
+    w.deviation.push_back(estimate->deviation(k));
+    w.offset.push_back(dress(k));
+  }
+  w.dresser = dressedProfile(withWheelDeviation(setup, *knots, dress), conjugate);
+
+  // What was removed, split along the axes' span: the axes' part, and the shape only the wheel makes.
+  const int rows = runFace.grid.rows(), cols = runFace.grid.cols();
+  const Eigen::VectorXd removed = flat(c.before.normal - c.after.normal);
+  const Eigen::MatrixXd& Q = estimate->axesSpan;
+  const Eigen::VectorXd byAxes = Q.cols() > 0 ? Eigen::VectorXd(Q * (Q.transpose() * removed))
+                                              : Eigen::VectorXd::Zero(removed.size());
+  w.removedByAxes = gridOf(byAxes, rows, cols);
+  w.removedByWheel = gridOf(removed - byAxes, rows, cols);
+  const double sse0 = c.before.sse;
+  if (sse0 > 0) {
+    const double afterAxes = (c.before.normal - w.removedByAxes).squaredNorm();
+    // Each share within 0..1: only a fit far from converged could make one step worse than none.
+    w.axesShare = std::clamp((sse0 - afterAxes) / sse0, 0.0, 1.0);
+    w.wheelShare = std::clamp((afterAxes - c.after.sse) / sse0, 0.0, 1.0);
+  }
+  if (!c.runKept && c.summary.status == SolveStatus::Converged)
+    out.correction.verdict = verdictOf(c, w, o, runFace.grid.size());
+  return out;
+}
+
+}  // namespace hobsharp

@@ -1,0 +1,390 @@
+#include "wheel_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
+#include <Eigen/SVD>
+#include <unsupported/Eigen/LevenbergMarquardt>
+
+#include "number_text.h"
+#include "sensitivity_matrix.h"
+#include "wheel_offset_sensitivity.h"
+#include "wheel_profile.h"
+
+namespace hobsharp {
+namespace {
+
+constexpr double kMicrometresPerMm = 1000.0;
+// As machine_error.cpp: the residual of a trial face that cannot be simulated (the step is
+// rejected), the numerically null directions, and how often the directions are decided.
+constexpr double kUnsolvableResidual = 1e12;  // µm
+constexpr double kNumericalRank = 1e-12;
+constexpr int kDecisionRounds = 3;
+
+Eigen::VectorXd flat(const Eigen::MatrixXd& m) {
+  Eigen::VectorXd v(m.size());
+  for (int i = 0; i < m.rows(); ++i)
+    for (int j = 0; j < m.cols(); ++j) v(i * m.cols() + j) = m(i, j);
+  return v;
+}
+
+Eigen::VectorXd faceNormal(const GroundFace& f) {
+  Eigen::VectorXd v(f.grid.size());
+  for (int p = 0; p < f.grid.size(); ++p) v(p) = kMicrometresPerMm * f.envelope[p].t;
+  return v;
+}
+
+AxisPolynomials plus(AxisPolynomials axes, const std::vector<Coefficient>& cs, const Eigen::VectorXd& change) {
+  for (size_t j = 0; j < cs.size(); ++j) axes[cs[j].axis].a[cs[j].degree] += change(static_cast<int>(j));
+  return axes;
+}
+
+// The parameters theta = (theta_E, theta_W): E = PE theta_E (coefficients), W = PW theta_W (µm).
+// r(theta) = face(run + E; wheel + W) - measured, µm; its Jacobian [S(E, W) PE, S_W(E, W) PW].
+struct JointResidual : Eigen::DenseFunctor<double> {
+  JointResidual(const SharpeningSetup& s, const AxisPolynomials& r, const FaceGrid& g,
+                const std::vector<Coefficient>& cs, const WheelKnots& k, const CubicSpline& b,
+                const Eigen::MatrixXd& pe, const Eigen::MatrixXd& pw, const Eigen::VectorXd& m)
+      : Eigen::DenseFunctor<double>(static_cast<int>(pe.cols() + pw.cols()), static_cast<int>(m.size())),
+        setup(s), run(r), grid(g), coefficients(cs), knots(k), wheelBasis(b), PE(pe), PW(pw), measured(m) {}
+
+  const SharpeningSetup& setup;
+  const AxisPolynomials& run;
+  const FaceGrid& grid;
+  const std::vector<Coefficient>& coefficients;
+  const WheelKnots& knots;
+  const CubicSpline& wheelBasis;  // W's spline with zero values: its cardinal functions
+  const Eigen::MatrixXd& PE;
+  const Eigen::MatrixXd& PW;
+  const Eigen::VectorXd& measured;
+  Eigen::VectorXd lastX;
+  std::optional<GroundFace> lastFace;
+  int evaluations = 0, unsolvable = 0;
+
+  Eigen::VectorXd axesPart(const Eigen::VectorXd& x) const { return PE * x.head(PE.cols()); }
+  Eigen::VectorXd wheelPart(const Eigen::VectorXd& x) const { return PW * x.tail(PW.cols()); }
+
+  const GroundFace* faceAt(const Eigen::VectorXd& x) {
+    if (lastFace && lastX.size() == x.size() && lastX == x) return &*lastFace;
+    ++evaluations;
+    auto f = simulateGroundFace(withWheelDeviation(setup, knots, wheelPart(x)), plus(run, coefficients, axesPart(x)),
+                                grid);
+    lastX = x;
+    if (!f) {
+      ++unsolvable;
+      lastFace.reset();
+      return nullptr;
+    }
+    lastFace = std::move(f).value();
+    return &*lastFace;
+  }
+
+  int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& fvec) {
+    const GroundFace* f = faceAt(x);
+    if (!f) {
+      fvec.setConstant(values(), kUnsolvableResidual);
+      return 0;
+    }
+    fvec = faceNormal(*f) - measured;
+    return 0;
+  }
+
+  int df(const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
+    const GroundFace* f = faceAt(x);
+    if (!f) return -1;  // never at an accepted iterate: those were all simulated
+    jac.resize(values(), inputs());
+    jac.leftCols(PE.cols()) = sensitivityMatrix(*f, coefficients).normal * PE;
+    jac.rightCols(PW.cols()) = wheelOffsetSensitivity(*f, wheelBasis).normal * PW;
+    return 0;
+  }
+};
+
+// The solver's status in the words of machine_error.cpp (least_squares_options.h).
+void describe(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Status st, const JointResidual& r,
+              const LeastSquaresOptions& o) {
+  using namespace Eigen::LevenbergMarquardtSpace;
+  switch (st) {
+    case RelativeReductionTooSmall:
+    case RelativeErrorAndReductionTooSmall:
+    case RelativeErrorTooSmall:
+    case CosinusTooSmall:
+      s.status = SolveStatus::Converged;
+      s.reason = st == CosinusTooSmall
+                     ? "converged: what is left of the measured face is a shape neither an identified axis direction "
+                       "nor the wheel's profile makes (gradient tolerance)."
+                     : "converged: a further step would change the axes, the wheel and the sum of squares by less "
+                       "than the tolerances (function and parameter tolerance).";
+      break;
+    case FtolTooSmall:
+    case XtolTooSmall:
+    case GtolTooSmall:
+      s.status = r.unsolvable > 0 ? SolveStatus::Stalled : SolveStatus::Converged;
+      s.reason = r.unsolvable > 0
+                     ? "stalled: every further step leaves the face the wheel can grind; the best estimate is kept."
+                     : "converged: no step can reduce the sum of squares at the precision of the face simulation.";
+      break;
+    case TooManyFunctionEvaluation:
+    case Running:
+      s.status = SolveStatus::NoConvergence;
+      s.reason = "not converged after " + std::to_string(o.maxIterations) +
+                 " iterations (maxIterations); the best estimate is kept.";
+      break;
+    default:
+      s.status = SolveStatus::Stalled;
+      s.reason = "stalled: the Jacobian could not be factorised; the best estimate is kept.";
+      break;
+  }
+}
+
+// Which of the directions (singular values s, the data's components c along them) are used:
+// shown above significance * sigma and not wild (a step beyond spanAmplification times the one the
+// strongest direction needs to make the whole `dataNorm`), as machine_error.cpp decides them.
+struct Decision {
+  std::vector<bool> used;
+  std::vector<int> kept;
+  int withinNoise = 0, amplifying = 0;
+};
+Decision decide(const Eigen::VectorXd& s, const Eigen::VectorXd& c, double dataNorm, const CorrectionOptions& o) {
+  Decision d;
+  if (s.size() == 0 || !(s(0) > 0)) {
+    d.used.assign(static_cast<size_t>(s.size()), false);
+    return d;
+  }
+  const double yardstick = dataNorm / s(0);
+  for (int i = 0; i < s.size(); ++i) {
+    bool use = false;
+    if (s(i) <= kNumericalRank * s(0)) {
+      // numerically null: neither counted nor used
+    } else if (std::abs(c(i)) <= o.significance * o.probeNoise) {
+      ++d.withinNoise;
+    } else if (std::abs(c(i)) / s(i) > o.spanAmplification * yardstick) {
+      ++d.amplifying;
+    } else {
+      use = true;
+      d.kept.push_back(i);
+    }
+    d.used.push_back(use);
+  }
+  return d;
+}
+
+Eigen::MatrixXd columns(const Eigen::MatrixXd& m, const std::vector<int>& kept) {
+  Eigen::MatrixXd out(m.rows(), static_cast<int>(kept.size()));
+  for (size_t k = 0; k < kept.size(); ++k) out.col(static_cast<int>(k)) = m.col(kept[k]);
+  return out;
+}
+
+// An orthonormal basis of the columns' span (they are independent: decided directions).
+Eigen::MatrixXd orthonormalSpan(const Eigen::MatrixXd& a) {
+  if (a.cols() == 0) return Eigen::MatrixXd(a.rows(), 0);
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(a);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(a.rows(), a.cols());
+}
+
+}  // namespace
+
+Outcome<WheelKnots> wheelKnots(const SharpeningSetup& setup, const FaceGrid& grid, double rLow, double rHigh) {
+  const int k = std::clamp(grid.rows(), kFewestWheelKnots, kMostWheelKnots);
+  if (!(rHigh > rLow))
+    return refuse("correction.wheel", "needs a grid that spans the face radially; it spans " + numberText(rLow) +
+                                          " to " + numberText(rHigh) + " mm.");
+  auto p = wheelProfile(setup.face, setup.universal, setup.normalSign, evenRadii(rLow, rHigh, k));
+  if (!p) return p.error();
+  // The wheel's rim grinds the gash root: R falls from root to tip; the spline's R must increase.
+  WheelKnots knots{p->r, p->R};
+  if (knots.R.back() < knots.R.front()) {
+    std::reverse(knots.r.begin(), knots.r.end());
+    std::reverse(knots.R.begin(), knots.R.end());
+  }
+  for (int i = 1; i < k; ++i)
+    if (!(knots.R[i] > knots.R[i - 1]))
+      return refuse("correction.wheel", "the wheel radius does not change monotonically from the gash root to the tip "
+                                        "(R = " + numberText(knots.R[i - 1]) + " then " + numberText(knots.R[i]) +
+                                            " mm): the offset cannot be given along R.");
+  return knots;
+}
+
+SharpeningSetup withWheelDeviation(const SharpeningSetup& setup, const WheelKnots& knots, const Eigen::VectorXd& W) {
+  SharpeningSetup s = setup;
+  std::vector<double> y(knots.R.size());
+  for (size_t k = 0; k < y.size(); ++k) y[k] = W(static_cast<int>(k)) / kMicrometresPerMm;
+  s.wheel.added = CubicSpline(knots.R, std::move(y));
+  return s;
+}
+
+Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& setup, const AxisPolynomials& run,
+                                                         const GroundFace& runFace, const Eigen::MatrixXd& measured,
+                                                         const CorrectionOptions& o, const WheelKnots& knots) {
+  const FaceGrid& grid = runFace.grid;
+  if (measured.rows() != grid.rows() || measured.cols() != grid.cols())
+    return refuse("measured", "the topography has " + std::to_string(measured.rows()) + " x " +
+                                  std::to_string(measured.cols()) + " values; the grid is " +
+                                  std::to_string(grid.rows()) + " radial x " + std::to_string(grid.cols()) + " axial.");
+  if (!measured.allFinite()) return refuse("measured", "holds a value that is not a finite number.");
+  const MotionRange range = motionRange(runFace);
+  const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
+
+  WheelErrorEstimate m;
+  m.knots = knots;
+  MachineErrorEstimate& a = m.axes;
+  a.space = identifiableSpace(setup.face, run.degree(), o, reach);
+  const std::vector<Coefficient>& cs = a.space.coefficients;
+  const int q = static_cast<int>(cs.size());
+  const int nb = static_cast<int>(a.space.basis.cols());
+  const int K = static_cast<int>(knots.R.size());
+  const Eigen::VectorXd d = flat(measured);
+  const CubicSpline wheelBasis(knots.R, std::vector<double>(static_cast<size_t>(K), 0.0));
+
+  // The run face again, now with W = 0 in the model, so that it carries the partials to W (the
+  // face itself is runFace's: a zero offset grinds today's face).
+  auto start = simulateGroundFace(withWheelDeviation(setup, knots, Eigen::VectorXd::Zero(K)), run, grid);
+  if (!start) return start.error();
+  GroundFace current = *start;
+  a.summary.initialCost = (faceNormal(current) - d).squaredNorm();
+
+  Eigen::VectorXd zE = Eigen::VectorXd::Zero(nb);  // E in the identifiable basis, machine steps
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(K);    // W, µm
+  Eigen::MatrixXd PE(q, 0), PW(K, 0);
+  Eigen::VectorXd theta(0);
+  Eigen::MatrixXd keptPE = PE, keptPW = PW;
+  Eigen::VectorXd keptTheta(0);
+  std::vector<bool> previousE, previousW;
+  int evaluations = 0;
+  for (int round = 0; round < kDecisionRounds; ++round) {
+    // The linearisation at the current estimate; data: what E and W make, linearised here.
+    const Eigen::MatrixXd SE = sensitivityMatrix(current, cs).normal * a.space.step.asDiagonal() * a.space.basis;
+    const Eigen::MatrixXd SW = wheelOffsetSensitivity(current, wheelBasis).normal;
+    const Eigen::VectorXd data = d - faceNormal(current) + SE * zE + SW * w;
+
+    // The axes first, as machine_error.cpp decides them: the SVD of SE through its QR.
+    Decision axes;
+    Eigen::MatrixXd VE(nb, 0), QE(d.size(), 0);
+    if (nb > 0) {
+      const Eigen::HouseholderQR<Eigen::MatrixXd> qr(SE);
+      const int mm = static_cast<int>(std::min(SE.rows(), SE.cols()));
+      const Eigen::MatrixXd R = qr.matrixQR().topRows(mm).triangularView<Eigen::Upper>();
+      const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(SE.rows(), mm);
+      const Eigen::VectorXd qtd = Q.transpose() * data;
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
+      axes = decide(svd.singularValues(), svd.matrixU().transpose() * qtd, data.norm(), o);
+      a.singularValues = svd.singularValues();
+      VE = columns(svd.matrixV(), axes.kept);
+      QE = Q * columns(svd.matrixU(), axes.kept);  // the face directions the axes take, orthonormal
+    }
+    // Then the wheel, off the span of what the axes take: only the shape the axes cannot make.
+    const Eigen::MatrixXd SWoff = SW - QE * (QE.transpose() * SW);
+    const Eigen::VectorXd dataOff = data - QE * (QE.transpose() * data);
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svdW(SWoff, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    const Decision wheel = decide(svdW.singularValues(), svdW.matrixU().transpose() * dataOff, dataOff.norm(), o);
+
+    if (round > 0 && axes.used == previousE && wheel.used == previousW) break;
+    previousE = axes.used;
+    previousW = wheel.used;
+    a.used = axes.used;
+    a.withinNoise = axes.withinNoise;
+    a.amplifying = axes.amplifying;
+    m.wheelSingularValues = svdW.singularValues();
+    m.wheelUsed = wheel.used;
+    m.wheelWithinNoise = wheel.withinNoise;
+    m.wheelAmplifying = wheel.amplifying;
+
+    const Eigen::MatrixXd VW = columns(svdW.matrixV(), wheel.kept);
+    PE = a.space.step.asDiagonal() * (a.space.basis * VE);
+    PW = VW;
+    theta.resize(VE.cols() + VW.cols());
+    theta << VE.transpose() * zE, VW.transpose() * w;  // the estimate so far, in the directions decided here
+    if (theta.size() == 0) {
+      current = *start;
+      zE.setZero();
+      w.setZero();
+      break;
+    }
+    JointResidual residual(setup, run, grid, cs, knots, wheelBasis, PE, PW, d);
+    if (round == 0) {
+      residual.lastX = theta;
+      residual.lastFace = *start;
+    }
+    Eigen::LevenbergMarquardt<JointResidual> lm(residual);
+    lm.setFtol(o.solver.functionTolerance);
+    lm.setXtol(o.solver.parameterTolerance);
+    lm.setGtol(o.solver.gradientTolerance);
+    lm.setFactor(o.solver.initialTrustRegion);
+    lm.setMaxfev(1000000);  // the iterations are counted below
+    auto status = lm.minimizeInit(theta);
+    if (status != Eigen::LevenbergMarquardtSpace::NotStarted) {
+      evaluations += residual.evaluations;
+      if (round > 0) {
+        PE = keptPE, PW = keptPW, theta = keptTheta;
+        a.summary.status = SolveStatus::Stalled;
+        a.summary.reason = "stalled: the directions decided at the solution leave a face that cannot be simulated; "
+                           "the estimate before is kept.";
+        break;
+      }
+      a.summary.status = SolveStatus::Failed;
+      a.summary.reason = status == Eigen::LevenbergMarquardtSpace::ImproperInputParameters
+                             ? "failed: the solver refused its inputs."
+                             : "failed: the face of the estimate cannot be simulated.";
+      theta.setZero();
+      current = *start;
+      break;
+    }
+    int iterations = 0;
+    const int left = o.solver.maxIterations - a.summary.iterations;
+    do {
+      status = lm.minimizeOneStep(theta);
+      ++iterations;
+    } while (status == Eigen::LevenbergMarquardtSpace::Running && iterations < left);
+    a.summary.iterations += iterations;
+    describe(a.summary, status, residual, o.solver);
+    // theta is the best iterate: the solver only ever accepts steps that reduce the sum of squares.
+    const GroundFace* f = residual.faceAt(theta);
+    evaluations += residual.evaluations;
+    if (!f)
+      return refuse("measured", "the identified machine error and wheel deviation leave a face that cannot be simulated.",
+                    ErrorCode::Unsolvable);
+    current = *f;
+    zE = VE * theta.head(VE.cols());
+    w = VW * theta.tail(VW.cols());
+    keptPE = PE, keptPW = PW, keptTheta = theta;
+    if (a.summary.status != SolveStatus::Converged || a.summary.iterations >= o.solver.maxIterations) break;
+  }
+  if (theta.size() == 0) {
+    a.summary.status = SolveStatus::Converged;
+    a.summary.reason = "converged: the measurement shows nothing above the probe noise that the axes or the wheel "
+                       "can make.";
+  }
+  const int kE = static_cast<int>(PE.cols()), kW = static_cast<int>(PW.cols());
+  a.face = current;
+  a.summary.faceEvaluations = evaluations;
+  a.coefficientError = kE > 0 ? Eigen::VectorXd(PE * theta.head(kE)) : Eigen::VectorXd::Zero(q);
+  m.deviation = kW > 0 ? Eigen::VectorXd(PW * theta.tail(kW)) : Eigen::VectorXd::Zero(K);
+  a.error = run;
+  for (Axis x : kAxes) std::fill(a.error[x].a.begin(), a.error[x].a.end(), 0.0);
+  for (int j = 0; j < q; ++j) a.error[cs[j].axis].a[cs[j].degree] = a.coefficientError(j);
+  a.explained = measured;
+  for (int i = 0; i < grid.rows(); ++i)
+    for (int j = 0; j < grid.cols(); ++j) a.explained(i, j) = kMicrometresPerMm * current.envelope[i * grid.cols() + j].t;
+  a.unexplained = measured - a.explained;
+  a.summary.finalCost = a.unexplained.squaredNorm();
+
+  // E's covariance with W free: (J^T J)^-1 of the decided directions, its axes' block.
+  const Eigen::MatrixXd JE = sensitivityMatrix(current, cs).normal * PE;
+  a.covariancePerNoise = Eigen::MatrixXd::Zero(q, q);
+  if (kE + kW > 0) {
+    Eigen::MatrixXd J(d.size(), kE + kW);
+    J.leftCols(kE) = JE;
+    J.rightCols(kW) = wheelOffsetSensitivity(current, wheelBasis).normal * PW;
+    const Eigen::MatrixXd JtJ = J.transpose() * J;
+    const Eigen::LDLT<Eigen::MatrixXd> ldlt(JtJ);
+    const Eigen::MatrixXd cov = ldlt.solve(Eigen::MatrixXd::Identity(JtJ.rows(), JtJ.cols()));
+    if (cov.allFinite() && kE > 0) a.covariancePerNoise = PE * cov.topLeftCorner(kE, kE) * PE.transpose();
+  }
+  m.axesSpan = orthonormalSpan(JE);
+  return m;
+}
+
+}  // namespace hobsharp
