@@ -136,6 +136,16 @@ TEST(MeasuredPoints, BadPointsAreRefusedNamingThePoint) {
   EXPECT_EQ(refusal(empty).field, "measuredPoints");
   const Error m = refusal(with(3, Json::array({10.0, 0.0, 1.0})));
   EXPECT_EQ(m.message.rfind("measuredPoints[3]: ", 0), 0u) << m.message;
+  // The wheel-profile correction takes a grid: points off it are refused with it, not ignored;
+  // at the grid's positions it runs.
+  Json wheel = with(3, Json::array({r + 0.5, x, 1.0}));
+  wheel["correction"]["wheel"] = true;
+  EXPECT_EQ(refusal(wheel).field, "correction.wheel");
+  Json onGrid = good;
+  onGrid["correction"]["wheel"] = true;
+  auto a = evaluateCase(onGrid.dump());
+  ASSERT_TRUE(a.ok()) << a.error().message;
+  EXPECT_TRUE(a->wheelCorrection.has_value());
 }
 
 // Points scattered over the ground region (none at a grid position), seeded.
