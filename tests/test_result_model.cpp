@@ -81,6 +81,7 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   // A dressed wheel as well (wheel.profileOffset: the contact range is R = 29.53 to 50.0 mm).
   CaseInput withWheel = measuredCase();
   withWheel.wheelProfileOffset = WheelPointsInput{{30, 40, 49.9}, {1, -1, 0.5}};
+  withWheel.correction.wheel = true;  // and the wheel-profile correction's fields
   const Json j = Json::parse(resultJson(evaluated(withWheel)));
   std::set<std::string> written;
   leaves(j, "", &written);
