@@ -85,6 +85,7 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   CaseInput withWheel = measuredCase();
   withWheel.wheelProfileOffset = WheelPointsInput{{30, 40, 49.9}, {1, -1, 0.5}};
   withWheel.hob.relief = HobReliefInput{12, 4.5, std::nullopt};  // and the gear effect
+  withWheel.correction.wheel = true;  // and the wheel-profile correction's fields
   const Json j = Json::parse(resultJson(evaluated(withWheel)));
   std::set<std::string> written;
   leaves(j, "", &written);
