@@ -352,6 +352,18 @@ void expectRefused(Json j, const std::string& field, const std::string& words) {
   EXPECT_NE(c.error().message.find(words), std::string::npos) << c.error().message;
 }
 
+TEST(GearEffect, AFinePitchHobIsEvaluatedOnItsMiddle101Teeth) {
+  // Module 0.2: 222 teeth of pi m_n = 0.63 mm would fit on 140 mm; the middle 101 are taken.
+  const SharpeningJob job = test::jobOf(test::paperCase());
+  const BasicRack fine{0.2, kAlpha, 31.25};
+  auto g = gearEffect(job.setup.face, job.setup.normalSign, job.grid.r, job.grid.x,
+                      faceOn(job.grid, [](double r, double) { return r - 31.25; }), fine, kRelief);
+  ASSERT_TRUE(g.ok()) << g.error().message;
+  ASSERT_EQ(g->teeth.size(), 101u);
+  EXPECT_NEAR(g->teeth.front().x, -50 * kPi * 0.2, 1e-9);
+  EXPECT_GT(g->left.slope, 0);
+}
+
 TEST(GearEffect, BadReliefIsRefusedNamingTheField) {
   Json j = paperJson();
   j["hob"]["gashes"] = 0;

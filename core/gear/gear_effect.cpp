@@ -11,6 +11,8 @@ namespace {
 
 // The least active profile taken, as a share of the module.
 constexpr double kLeastActiveShare = 0.2;
+// The most teeth either side of the middle one (a fine-pitch hob evaluates its middle 101 teeth).
+constexpr double kMostTeethEitherSide = 50;
 
 void keepLargest(ProfileFigures& kept, const ProfileFigures& f, bool first) {
   if (first || std::abs(f.slope) > std::abs(kept.slope)) {
@@ -40,7 +42,8 @@ Outcome<GearEffect> gearEffect(const ToothFace& face, double normalSign, const s
   const double pitch = kPi * rack.module;
   const double halfWidth = rack.toothThickness() / 2 + (rack.pitchRadius - out.rFrom) * std::tan(rack.pressureAngle);
   const double middle = 0.5 * (x.front() + x.back());
-  const int reach = static_cast<int>(std::floor((0.5 * (x.back() - x.front()) - halfWidth) / pitch + 1e-9));
+  const int reach = static_cast<int>(
+      std::min(kMostTeethEitherSide, std::floor((0.5 * (x.back() - x.front()) - halfWidth) / pitch + 1e-9)));
   if (reach < 0)
     return refuse("gearEffect", "the grid's axial span (" + mmText(x.front()) + " to " + mmText(x.back()) +
                                     ") is narrower than one tooth of the hob (" + mmText(2 * halfWidth) + ").");

@@ -2,6 +2,7 @@
 // tooth of the gash that lies whole on the face, each flank's cutting edge (cutting_edge.h) at
 // evenly spaced radii over the active profile, and the generating profile it gives the gear with
 // its figures (profile_figures.h); then the largest over the teeth and their scatter along the hob.
+// A fine-pitch hob with more than 101 teeth on the grid is evaluated on its middle 101.
 #pragma once
 
 #include <vector>
