@@ -11,8 +11,8 @@
 // metres: x and r are written as offset + index * increment (mm / 1000), the deviation as
 // float64 metres (µm / 1e6).
 import { unzipSync, zipSync } from 'fflate';
+import { XMLParser, XMLValidator } from 'fast-xml-parser';
 import { md5 } from '@noble/hashes/legacy.js';
-import { parseXml } from './x3p-xml.js';
 
 export const X3P_NAMESPACE = 'http://www.opengps.eu/2008/ISO5436_2';
 export const MAIN_FILE = 'main.xml';
@@ -164,8 +164,8 @@ function count(root, path) {
   return Number(t);
 }
 
-// The document's text, checked before the XML reader (io/x3p-xml.js) sees it: UTF-8, no DOCTYPE
-// (so no entity can be declared, and none expanded: the "billion laughs"); then read, well formed.
+// The document's text, checked before any XML parser sees it: UTF-8, no DOCTYPE (so no entity
+// can be declared, and none expanded: the "billion laughs"), well formed.
 function parseMain(bytes) {
   let xml;
   try {
@@ -179,7 +179,18 @@ function parseMain(bytes) {
     const line = xml.slice(0, declared.index).split('\n').length;
     fail(`${MAIN_FILE}, line ${line}`, `a <!${declared[1].toUpperCase()}> declaration; X3P has none, and the page expands no entities.`);
   }
-  const doc = parseXml(xml, { lists: new Set(['Datum']), file: MAIN_FILE });
+  let doc;
+  try {
+    const valid = XMLValidator.validate(xml);
+    if (valid !== true) fail(`${MAIN_FILE}, line ${valid.err.line}`, `${valid.err.msg} The XML is not well formed (cut short?).`);
+    doc = new XMLParser({
+      ignoreAttributes: true, removeNSPrefix: true, parseTagValue: false, ignoreDeclaration: true,
+      ignorePiTags: true, isArray: (name) => name === 'Datum',
+    }).parse(xml);
+  } catch (e) {
+    if (e.message.startsWith(MAIN_FILE)) throw e;
+    fail(MAIN_FILE, `${e.message}; the XML is not read.`);
+  }
   const roots = Object.keys(doc);
   if (roots.length !== 1 || roots[0] !== 'ISO5436_2') fail(MAIN_FILE, `the root element is ${roots.map((r) => `<${r}>`).join(', ') || 'missing'}, not <ISO5436_2>.`);
   if (Array.isArray(doc.ISO5436_2) || typeof doc.ISO5436_2 !== 'object') fail(`${MAIN_FILE}, ISO5436_2`, 'holds no records.');
