@@ -21,6 +21,8 @@ test('every listed field is in the result of a measured case, and nothing else i
   c.inspection = { gashDeviations: [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1] };
   // A dressed wheel, so that the wheel offset's fields are there too (contact range R 29.53 to 50.0 mm).
   c.wheel.profileOffset = { R: [30, 40, 49.9], offset: [1, -1, 0.5] };
+  // And the wheel-profile correction, so that its fields are there too.
+  c.correction = { wheel: true };
   const r = hobsharp.evaluate(c);
   const fields = hobsharp.resultFields();
   const listed = new Set(fields.map((f) => f.path));
