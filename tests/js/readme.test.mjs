@@ -23,6 +23,8 @@ test('every listed field is in the result of a measured case, and nothing else i
   c.wheel.profileOffset = { R: [30, 40, 49.9], offset: [1, -1, 0.5] };
   // The hob's relief, so that the gear effect's fields are there too.
   Object.assign(c.hob, { gashes: 12, relief: 4.5 });
+  // And the wheel-profile correction, so that its fields are there too.
+  c.correction = { wheel: true };
   const r = hobsharp.evaluate(c);
   const fields = hobsharp.resultFields();
   const listed = new Set(fields.map((f) => f.path));
