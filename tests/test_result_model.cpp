@@ -94,6 +94,7 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   const std::set<std::string> pointsOnly = {"correction.pointMeasured", "correction.pointResidual", "correction.measuredOnGrid"};
   for (const std::string& f : pointsOnly) EXPECT_EQ(written.count(f), 0u) << f << " with a grid";
   CaseInput withPoints = withWheel;
+  withPoints.correction.wheel = false;  // the wheel correction takes a grid (refused with points off it)
   const SharpeningJob job = test::jobOf(paperCase());
   withPoints.measuredPoints.emplace();
   for (int i = 0; i < job.grid.rows(); ++i)
@@ -105,6 +106,11 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   for (const std::string& f : pointsOnly) EXPECT_EQ(writtenWithPoints.count(f), 1u) << f << " with points";
   written.insert(pointsOnly.begin(), pointsOnly.end());
   EXPECT_EQ(written, described);
+  const std::set<std::string> wheelOnly = {"correction.wheelProfileOffset.R", "correction.wheelProfileOffset.offset",
+                                           "correction.dresserPath.R", "correction.dresserPath.Z", "correction.removedByAxes",
+                                           "correction.removedByWheel", "correction.axesShare", "correction.wheelShare"};
+  for (const std::string& f : wheelOnly) EXPECT_EQ(writtenWithPoints.count(f), 0u) << f << " with points";
+  writtenWithPoints.insert(wheelOnly.begin(), wheelOnly.end());
   EXPECT_EQ(writtenWithPoints, written);
   // Without a measured topography there is no correction, without a wheel offset no wheelOffset.
   const Json nominal = Json::parse(resultJson(evaluated(paperCase())));
