@@ -10,37 +10,19 @@
 #include <Eigen/SVD>
 #include <unsupported/Eigen/LevenbergMarquardt>
 
+#include "face_cache.h"
+#include "face_vectors.h"
+#include "solve_report.h"
 #include "sensitivity_matrix.h"
 
 namespace hobsharp {
 namespace {
 
 constexpr double kMicrometresPerMm = 1000.0;
-// The residual given to the solver for a trial whose face cannot be simulated (a grid point the
-// wheel does not reach): large enough that the step is always rejected and the trust region shrinks.
-constexpr double kUnsolvableResidual = 1e12;  // µm
 // Directions whose singular value is below this share of the largest are numerically null.
 constexpr double kNumericalRank = 1e-12;
 // How often the directions are decided: at E = 0, then at the solution (README, "Correction").
 constexpr int kDecisionRounds = 3;
-
-Eigen::VectorXd flat(const Eigen::MatrixXd& m) {
-  Eigen::VectorXd v(m.size());
-  for (int i = 0; i < m.rows(); ++i)
-    for (int j = 0; j < m.cols(); ++j) v(i * m.cols() + j) = m(i, j);
-  return v;
-}
-
-Eigen::VectorXd faceNormal(const GroundFace& f) {
-  Eigen::VectorXd v(f.size());
-  for (int p = 0; p < f.size(); ++p) v(p) = kMicrometresPerMm * f.envelope[p].t;
-  return v;
-}
-
-AxisPolynomials plus(AxisPolynomials axes, const std::vector<Coefficient>& cs, const Eigen::VectorXd& change) {
-  for (size_t j = 0; j < cs.size(); ++j) axes[cs[j].axis].a[cs[j].degree] += change(static_cast<int>(j));
-  return axes;
-}
 
 // r(theta) = face(run + P theta) - measured, µm; its Jacobian S(run + P theta) P (Eqs. 13-16).
 struct FaceResidual : Eigen::DenseFunctor<double> {
@@ -55,31 +37,15 @@ struct FaceResidual : Eigen::DenseFunctor<double> {
   const std::vector<Coefficient>& coefficients;
   const Eigen::MatrixXd& P;
   const Eigen::VectorXd& measured;
-  Eigen::VectorXd lastX;
-  std::optional<GroundFace> lastFace;
-  int evaluations = 0, unsolvable = 0, jacobians = 0;
+  FaceCache cache;
+  int jacobians = 0;
 
   const GroundFace* faceAt(const Eigen::VectorXd& x) {
-    if (lastFace && lastX.size() == x.size() && lastX == x) return &*lastFace;
-    ++evaluations;
-    auto f = simulateGroundFaceLike(like, setup, plus(run, coefficients, P * x));
-    lastX = x;
-    if (!f) {
-      ++unsolvable;
-      lastFace.reset();
-      return nullptr;
-    }
-    lastFace = std::move(f).value();
-    return &*lastFace;
+    return cache.at(x, [&](const Eigen::VectorXd& t) { return simulateGroundFaceLike(like, setup, plusChange(run, coefficients, P * t)); });
   }
 
   int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& fvec) {
-    const GroundFace* f = faceAt(x);
-    if (!f) {
-      fvec.setConstant(values(), kUnsolvableResidual);
-      return 0;
-    }
-    fvec = faceNormal(*f) - measured;
+    faceResidual(faceAt(x), measured, fvec);
     return 0;
   }
 
@@ -91,58 +57,6 @@ struct FaceResidual : Eigen::DenseFunctor<double> {
     return 0;
   }
 };
-
-// A tolerance as a share in words: 1e-10 -> "1 part in 1e+10".
-std::string share(double tolerance) {
-  std::ostringstream t;
-  t.precision(2);
-  t << "1 part in " << 1 / tolerance;
-  return t.str();
-}
-
-void describe(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Status st, const FaceResidual& r,
-              const LeastSquaresOptions& o) {
-  using namespace Eigen::LevenbergMarquardtSpace;
-  switch (st) {
-    case RelativeReductionTooSmall:
-    case RelativeErrorAndReductionTooSmall:
-      s.status = SolveStatus::Converged;
-      s.reason = "converged: a further step would lower the sum of squares by less than " + share(o.functionTolerance) +
-                 " of it (function tolerance).";
-      break;
-    case RelativeErrorTooSmall:
-      s.status = SolveStatus::Converged;
-      s.reason = "converged: the last steps changed the identified error by less than " + share(o.parameterTolerance) +
-                 " of it (parameter tolerance).";
-      break;
-    case CosinusTooSmall:
-      s.status = SolveStatus::Converged;
-      s.reason = "converged: what is left of the measured face is a shape no identified axis direction makes "
-                 "(gradient tolerance).";
-      break;
-    case FtolTooSmall:
-    case XtolTooSmall:
-    case GtolTooSmall:
-      if (r.unsolvable > 0) {
-        s.status = SolveStatus::Stalled;
-        s.reason = "stalled: every further step leaves the face the wheel can grind; the best estimate is kept.";
-      } else {
-        s.status = SolveStatus::Converged;
-        s.reason = "converged: no step can reduce the sum of squares at the precision of the face simulation.";
-      }
-      break;
-    case TooManyFunctionEvaluation:
-    case Running:
-      s.status = SolveStatus::NoConvergence;
-      s.reason = "not converged after " + std::to_string(o.maxIterations) +
-                 " iterations (maxIterations); the best estimate is kept.";
-      break;
-    default:
-      s.status = SolveStatus::Stalled;
-      s.reason = "stalled: the Jacobian could not be factorised; the best estimate is kept.";
-      break;
-  }
-}
 
 }  // namespace
 
@@ -244,8 +158,8 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     }
     FaceResidual residual(setup, run, runFace, cs, P, d);
     if (round == 0) {
-      residual.lastX = theta;
-      residual.lastFace = runFace;
+      residual.cache.lastX = theta;
+      residual.cache.lastFace = runFace;
     }
     Eigen::LevenbergMarquardt<FaceResidual> lm(residual);
     lm.setFtol(o.solver.functionTolerance);
@@ -255,7 +169,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     lm.setMaxfev(1000000);  // the iterations are counted below
     auto status = lm.minimizeInit(theta);
     if (status != Eigen::LevenbergMarquardtSpace::NotStarted && round > 0) {
-      evaluations += residual.evaluations;
+      evaluations += residual.cache.evaluations;
       P = keptP;
       theta = keptTheta;
       m.summary.status = SolveStatus::Stalled;
@@ -268,7 +182,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
       m.summary.reason = status == Eigen::LevenbergMarquardtSpace::ImproperInputParameters
                              ? "failed: the solver refused its inputs."
                              : "failed: the face of the estimate cannot be simulated.";
-      evaluations += residual.evaluations;
+      evaluations += residual.cache.evaluations;
       theta.setZero();
       current = runFace;
       break;
@@ -280,10 +194,10 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
       ++iterations;
     } while (status == Eigen::LevenbergMarquardtSpace::Running && iterations < left);
     m.summary.iterations += iterations;
-    describe(m.summary, status, residual, o.solver);
+    describeSolve(m.summary, status, residual.cache.unsolvable, o.solver, "no identified axis direction");
     // theta is the best iterate: the solver only ever accepts steps that reduce the sum of squares.
     const GroundFace* f = residual.faceAt(theta);
-    evaluations += residual.evaluations;
+    evaluations += residual.cache.evaluations;
     if (!f) return refuse("measured", "the identified machine error leaves a face that cannot be simulated.",
                           ErrorCode::Unsolvable);
     current = *f;

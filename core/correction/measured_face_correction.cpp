@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "correction.h"
+#include "face_vectors.h"
 #include "machine_error.h"
 
 namespace hobsharp {
@@ -17,12 +18,6 @@ Eigen::MatrixXd normalOf(const GroundFace& f) {
   for (int i = 0; i < f.rows(); ++i)
     for (int j = 0; j < f.cols(); ++j) n(i, j) = kMicrometresPerMm * f.envelope[i * f.cols() + j].t;
   return n;
-}
-
-AxisPolynomials plusError(AxisPolynomials axes, const AxisPolynomials& error) {
-  for (Axis a : kAxes)
-    for (size_t k = 0; k < axes[a].a.size(); ++k) axes[a].a[k] += error[a].coefficient(static_cast<int>(k));
-  return axes;
 }
 
 // True when the two differ by no more than rounding in their last bits: the same face.

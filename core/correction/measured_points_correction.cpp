@@ -3,15 +3,10 @@
 #include <string>
 
 #include "correction.h"
+#include "face_vectors.h"
 
 namespace hobsharp {
 namespace {
-
-AxisPolynomials plusError(AxisPolynomials axes, const AxisPolynomials& error) {
-  for (Axis a : kAxes)
-    for (size_t k = 0; k < axes[a].a.size(); ++k) axes[a].a[k] += error[a].coefficient(static_cast<int>(k));
-  return axes;
-}
 
 Outcome<Topography> onGrid(const SharpeningSetup& setup, const AxisPolynomials& axes, const FaceGrid& grid) {
   auto f = simulateGroundFace(setup, axes, grid, Sensitivities::Skip);

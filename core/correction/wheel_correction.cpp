@@ -1,4 +1,5 @@
 #include "wheel_correction.h"
+#include "face_vectors.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,20 +8,6 @@
 
 namespace hobsharp {
 namespace {
-
-Eigen::VectorXd flat(const Eigen::MatrixXd& m) {
-  Eigen::VectorXd v(m.size());
-  for (int i = 0; i < m.rows(); ++i)
-    for (int j = 0; j < m.cols(); ++j) v(i * m.cols() + j) = m(i, j);
-  return v;
-}
-
-Eigen::MatrixXd gridOf(const Eigen::VectorXd& v, int rows, int cols) {
-  Eigen::MatrixXd m(rows, cols);
-  for (int i = 0; i < rows; ++i)
-    for (int j = 0; j < cols; ++j) m(i, j) = v(i * cols + j);
-  return m;
-}
 
 // A sum of squares for a sentence, as measured_face_correction.cpp writes it: 3 digits, or
 // "below 1e-6" where only rounding is left (which the native and WebAssembly builds round apart).

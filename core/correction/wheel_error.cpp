@@ -10,6 +10,9 @@
 #include <Eigen/SVD>
 #include <unsupported/Eigen/LevenbergMarquardt>
 
+#include "face_cache.h"
+#include "face_vectors.h"
+#include "solve_report.h"
 #include "number_text.h"
 #include "sensitivity_matrix.h"
 #include "wheel_offset_sensitivity.h"
@@ -19,29 +22,9 @@ namespace hobsharp {
 namespace {
 
 constexpr double kMicrometresPerMm = 1000.0;
-// As machine_error.cpp: the residual of a trial face that cannot be simulated (the step is
-// rejected), the numerically null directions, and how often the directions are decided.
-constexpr double kUnsolvableResidual = 1e12;  // µm
+// As machine_error.cpp: the numerically null directions, and how often the directions are decided.
 constexpr double kNumericalRank = 1e-12;
 constexpr int kDecisionRounds = 3;
-
-Eigen::VectorXd flat(const Eigen::MatrixXd& m) {
-  Eigen::VectorXd v(m.size());
-  for (int i = 0; i < m.rows(); ++i)
-    for (int j = 0; j < m.cols(); ++j) v(i * m.cols() + j) = m(i, j);
-  return v;
-}
-
-Eigen::VectorXd faceNormal(const GroundFace& f) {
-  Eigen::VectorXd v(f.grid.size());
-  for (int p = 0; p < f.grid.size(); ++p) v(p) = kMicrometresPerMm * f.envelope[p].t;
-  return v;
-}
-
-AxisPolynomials plus(AxisPolynomials axes, const std::vector<Coefficient>& cs, const Eigen::VectorXd& change) {
-  for (size_t j = 0; j < cs.size(); ++j) axes[cs[j].axis].a[cs[j].degree] += change(static_cast<int>(j));
-  return axes;
-}
 
 // The parameters theta = (theta_E, theta_W): E = PE theta_E (coefficients), W = PW theta_W (µm).
 // r(theta) = face(run + E; wheel + W) - measured, µm; its Jacobian [S(E, W) PE, S_W(E, W) PW].
@@ -61,35 +44,19 @@ struct JointResidual : Eigen::DenseFunctor<double> {
   const Eigen::MatrixXd& PE;
   const Eigen::MatrixXd& PW;
   const Eigen::VectorXd& measured;
-  Eigen::VectorXd lastX;
-  std::optional<GroundFace> lastFace;
-  int evaluations = 0, unsolvable = 0;
+  FaceCache cache;
 
   Eigen::VectorXd axesPart(const Eigen::VectorXd& x) const { return PE * x.head(PE.cols()); }
   Eigen::VectorXd wheelPart(const Eigen::VectorXd& x) const { return PW * x.tail(PW.cols()); }
 
   const GroundFace* faceAt(const Eigen::VectorXd& x) {
-    if (lastFace && lastX.size() == x.size() && lastX == x) return &*lastFace;
-    ++evaluations;
-    auto f = simulateGroundFace(withWheelDeviation(setup, knots, wheelPart(x)), plus(run, coefficients, axesPart(x)),
-                                grid);
-    lastX = x;
-    if (!f) {
-      ++unsolvable;
-      lastFace.reset();
-      return nullptr;
-    }
-    lastFace = std::move(f).value();
-    return &*lastFace;
+    return cache.at(x, [&](const Eigen::VectorXd& t) {
+      return simulateGroundFace(withWheelDeviation(setup, knots, wheelPart(t)), plusChange(run, coefficients, axesPart(t)), grid);
+    });
   }
 
   int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& fvec) {
-    const GroundFace* f = faceAt(x);
-    if (!f) {
-      fvec.setConstant(values(), kUnsolvableResidual);
-      return 0;
-    }
-    fvec = faceNormal(*f) - measured;
+    faceResidual(faceAt(x), measured, fvec);
     return 0;
   }
 
@@ -102,43 +69,6 @@ struct JointResidual : Eigen::DenseFunctor<double> {
     return 0;
   }
 };
-
-// The solver's status in the words of machine_error.cpp (least_squares_options.h).
-void describe(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Status st, const JointResidual& r,
-              const LeastSquaresOptions& o) {
-  using namespace Eigen::LevenbergMarquardtSpace;
-  switch (st) {
-    case RelativeReductionTooSmall:
-    case RelativeErrorAndReductionTooSmall:
-    case RelativeErrorTooSmall:
-    case CosinusTooSmall:
-      s.status = SolveStatus::Converged;
-      s.reason = st == CosinusTooSmall
-                     ? "converged: what is left of the measured face is a shape neither an identified axis direction "
-                       "nor the wheel's profile makes (gradient tolerance)."
-                     : "converged: a further step would change the axes, the wheel and the sum of squares by less "
-                       "than the tolerances (function and parameter tolerance).";
-      break;
-    case FtolTooSmall:
-    case XtolTooSmall:
-    case GtolTooSmall:
-      s.status = r.unsolvable > 0 ? SolveStatus::Stalled : SolveStatus::Converged;
-      s.reason = r.unsolvable > 0
-                     ? "stalled: every further step leaves the face the wheel can grind; the best estimate is kept."
-                     : "converged: no step can reduce the sum of squares at the precision of the face simulation.";
-      break;
-    case TooManyFunctionEvaluation:
-    case Running:
-      s.status = SolveStatus::NoConvergence;
-      s.reason = "not converged after " + std::to_string(o.maxIterations) +
-                 " iterations (maxIterations); the best estimate is kept.";
-      break;
-    default:
-      s.status = SolveStatus::Stalled;
-      s.reason = "stalled: the Jacobian could not be factorised; the best estimate is kept.";
-      break;
-  }
-}
 
 // Which of the directions (singular values s, the data's components c along them) are used:
 // shown above significance * sigma and not wild (a step beyond spanAmplification times the one the
@@ -305,8 +235,8 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     }
     JointResidual residual(setup, run, grid, cs, knots, wheelBasis, PE, PW, d);
     if (round == 0) {
-      residual.lastX = theta;
-      residual.lastFace = *start;
+      residual.cache.lastX = theta;
+      residual.cache.lastFace = *start;
     }
     Eigen::LevenbergMarquardt<JointResidual> lm(residual);
     lm.setFtol(o.solver.functionTolerance);
@@ -316,7 +246,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     lm.setMaxfev(1000000);  // the iterations are counted below
     auto status = lm.minimizeInit(theta);
     if (status != Eigen::LevenbergMarquardtSpace::NotStarted) {
-      evaluations += residual.evaluations;
+      evaluations += residual.cache.evaluations;
       if (round > 0) {
         PE = keptPE, PW = keptPW, theta = keptTheta;
         a.summary.status = SolveStatus::Stalled;
@@ -339,10 +269,10 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
       ++iterations;
     } while (status == Eigen::LevenbergMarquardtSpace::Running && iterations < left);
     a.summary.iterations += iterations;
-    describe(a.summary, status, residual, o.solver);
+    describeSolve(a.summary, status, residual.cache.unsolvable, o.solver, "neither an identified axis direction nor the wheel's profile");
     // theta is the best iterate: the solver only ever accepts steps that reduce the sum of squares.
     const GroundFace* f = residual.faceAt(theta);
-    evaluations += residual.evaluations;
+    evaluations += residual.cache.evaluations;
     if (!f)
       return refuse("measured", "the identified machine error and wheel deviation leave a face that cannot be simulated.",
                     ErrorCode::Unsolvable);

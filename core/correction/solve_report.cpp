@@ -1,0 +1,61 @@
+#include "solve_report.h"
+
+#include <sstream>
+
+namespace hobsharp {
+namespace {
+
+// A tolerance as a share in words: 1e-10 -> "1 part in 1e+10".
+std::string share(double tolerance) {
+  std::ostringstream t;
+  t.precision(2);
+  t << "1 part in " << 1 / tolerance;
+  return t.str();
+}
+
+}  // namespace
+
+void describeSolve(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Status st, int unsolvable,
+                   const LeastSquaresOptions& o, const std::string& makes) {
+  using namespace Eigen::LevenbergMarquardtSpace;
+  switch (st) {
+    case RelativeReductionTooSmall:
+    case RelativeErrorAndReductionTooSmall:
+      s.status = SolveStatus::Converged;
+      s.reason = "converged: a further step would lower the sum of squares by less than " + share(o.functionTolerance) +
+                 " of it (function tolerance).";
+      break;
+    case RelativeErrorTooSmall:
+      s.status = SolveStatus::Converged;
+      s.reason = "converged: the last steps changed the identified error by less than " + share(o.parameterTolerance) +
+                 " of it (parameter tolerance).";
+      break;
+    case CosinusTooSmall:
+      s.status = SolveStatus::Converged;
+      s.reason = "converged: what is left of the measured face is a shape " + makes + " makes (gradient tolerance).";
+      break;
+    case FtolTooSmall:
+    case XtolTooSmall:
+    case GtolTooSmall:
+      if (unsolvable > 0) {
+        s.status = SolveStatus::Stalled;
+        s.reason = "stalled: every further step leaves the face the wheel can grind; the best estimate is kept.";
+      } else {
+        s.status = SolveStatus::Converged;
+        s.reason = "converged: no step can reduce the sum of squares at the precision of the face simulation.";
+      }
+      break;
+    case TooManyFunctionEvaluation:
+    case Running:
+      s.status = SolveStatus::NoConvergence;
+      s.reason = "not converged after " + std::to_string(o.maxIterations) +
+                 " iterations (maxIterations); the best estimate is kept.";
+      break;
+    default:
+      s.status = SolveStatus::Stalled;
+      s.reason = "stalled: the Jacobian could not be factorised; the best estimate is kept.";
+      break;
+  }
+}
+
+}  // namespace hobsharp
