@@ -7,6 +7,7 @@
 #include "correction.h"
 #include "face_vectors.h"
 #include "machine_error.h"
+#include "number_text.h"
 
 namespace hobsharp {
 namespace {
@@ -76,30 +77,22 @@ std::array<double, kAxisCount> curveDeviation(const std::vector<Coefficient>& cs
 
 // A sum of squares for a sentence: 3 digits, or "below 1e-6" where only rounding is left (which
 // the native and the WebAssembly builds round differently).
-std::string squares(double sse) {
-  if (sse < 1e-6) return "below 1e-6";
-  std::ostringstream s;
-  s.precision(3);
-  s << sse;
-  return s.str();
-}
-
 std::string verdictOf(const Correction& c, const CorrectionOptions& o, int points) {
   std::ostringstream v;
   v.precision(3);
   // Within the noise: the rms left is at most twice the probe's sigma.
   const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
   if (c.runKept) {
-    v << "No change proposed: the correction found would leave a sum of squares of " << squares(c.discardedSse)
-      << " µm², more than the " << squares(c.before.sse) << " µm² measured, so the axes run stay as they are.";
+    v << "No change proposed: the correction found would leave a sum of squares of " << squaresText(c.discardedSse)
+      << " µm², more than the " << squaresText(c.before.sse) << " µm² measured, so the axes run stay as they are.";
   } else if (c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence) {
     v << "Identification " << (c.summary.status == SolveStatus::Stalled ? "stalled" : "did not converge")
-      << "; the best estimate is proposed (predicted sum of squares " << squares(c.after.sse) << " µm², from "
-      << squares(c.before.sse) << " µm²). " << c.summary.reason;
+      << "; the best estimate is proposed (predicted sum of squares " << squaresText(c.after.sse) << " µm², from "
+      << squaresText(c.before.sse) << " µm²). " << c.summary.reason;
   } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
     v << "Correctable: the axes can cancel the measured deviation"
       << (withinNoise && c.uncorrectableShare > o.correctableShare ? " down to the probe noise" : "")
-      << " (predicted sum of squares " << squares(c.after.sse) << " µm², from " << squares(c.before.sse) << " µm²).";
+      << " (predicted sum of squares " << squaresText(c.after.sse) << " µm², from " << squaresText(c.before.sse) << " µm²).";
   } else {
     v << "Partly uncorrectable: " << 100 * c.uncorrectableShare
       << " % of the sum of squares is a shape no axis polynomial produces (such as a second-degree "

@@ -206,7 +206,7 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
   const bool gashes = e.indexCorrection.has_value();
   const ToleranceTable& table = toleranceTableOf(e.job.input.inspection);
   v.text({"inspection.source", "", "the face inspected: \"gashTopographies\" (the worst of the case's per-gash grids), \"measured\" (the case's grid), \"measuredPoints\" (the case's points) or \"simulated\" (the axes run)"},
-         e.gashFaces ? "gashTopographies" : e.job.input.measuredPoints ? "measuredPoints" : e.job.input.measured ? "measured" : "simulated");
+         e.gashFaces ? "gashTopographies" : sourceName(inspectedFace(e).source));
   std::string band = "outside the table's module bands";
   if (in.band) {
     std::ostringstream b;
@@ -312,7 +312,7 @@ void visitGearEffect(const Evaluation& e, ResultVisitor& v, bool every) {
   static const GearEffect kNone;
   const GearEffect& g = e.gearEffect ? *e.gearEffect : kNone;
   v.text({"gearEffect.source", "", "the rake face the edges lie on: \"measured\", \"measuredPoints\" or \"simulated\" (as inspection.source)", kWithRelief},
-         e.job.input.measuredPoints ? "measuredPoints" : e.job.input.measured ? "measured" : "simulated");
+         sourceName(inspectedFace(e).source));
   v.number({"gearEffect.reliefPerRadian", "mm/rad", "k = K z / 2 pi: the radial drop of the relieved profile per radian behind the rake face", kWithRelief},
            g.reliefPerRadian);
   v.number({"gearEffect.sideReliefAngle", "deg", "the side relief angle at the pitch radius, atan(k sin(alpha_n) / r_p)", kWithRelief},

@@ -4,12 +4,24 @@
 
 namespace hobsharp {
 
-const Eigen::MatrixXd& inspectedFace(const Evaluation& e) {
+const char* sourceName(FaceSource s) {
+  switch (s) {
+    case FaceSource::Measured: return "measured";
+    case FaceSource::MeasuredPoints: return "measuredPoints";
+    case FaceSource::Simulated: return "simulated";
+  }
+  return "simulated";
+}
+
+InspectedFace inspectedFace(const Evaluation& e) {
+  const CaseInput& in = e.job.input;
+  const FaceSource given = in.measuredPoints ? FaceSource::MeasuredPoints : FaceSource::Measured;
+  // measuredPoints at the grid's positions became the job's grid (sharpening_job.cpp).
+  if (in.measured) return {*in.measured, given};
   // measuredPoints off the grid: the measurement as the identified error explains it, on the grid
   // (README, "Measured points").
-  if (e.job.input.measured) return *e.job.input.measured;
-  if (e.correction && e.correction->atProbes()) return e.correction->explainedOnGrid.normal;
-  return e.topography.normal;
+  if (e.correction && e.correction->atProbes()) return {e.correction->explainedOnGrid.normal, given};
+  return {e.topography.normal, FaceSource::Simulated};
 }
 
 void inspectEvaluation(Evaluation& e) {
@@ -19,7 +31,7 @@ void inspectEvaluation(Evaluation& e) {
   const bool helical = job.setup.face.helical();
   const double module = job.input.hob.normalModule;
   const bool points = e.correction && e.correction->atProbes();
-  const Eigen::MatrixXd& face = inspectedFace(e);
+  const Eigen::MatrixXd& face = inspectedFace(e).normal;
   // One topography per gash: their deviations at the pitch radius, and the worst gash's face checks.
   FaceChecks faceChecks = checkFace(face, job.grid.r, job.grid.x, helical);
   std::vector<double> deviations = in.gashDeviations;

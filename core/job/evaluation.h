@@ -62,8 +62,17 @@ void inspectEvaluation(Evaluation& e);
 // (gear_evaluation.cpp; evaluate() calls it after the inspection; the benchmark times it alone).
 void gearEvaluation(Evaluation& e);
 
-// The face the inspection and the gear effect take: the measured grid, or for measuredPoints off
-// the grid the measurement as the identified error explains it there, else the simulated topography.
-const Eigen::MatrixXd& inspectedFace(const Evaluation& e);
+// Where the face the inspection and the gear effect take comes from (inspection.source).
+enum class FaceSource { Simulated, Measured, MeasuredPoints };
+const char* sourceName(FaceSource s);  // "simulated", "measured", "measuredPoints"
+
+// The face the inspection and the gear effect take, and where it comes from: the measured grid
+// (also measuredPoints at the grid's positions), or for measuredPoints off the grid the measurement
+// as the identified error explains it there, else the simulated topography.
+struct InspectedFace {
+  const Eigen::MatrixXd& normal;  // µm, on the grid
+  FaceSource source;
+};
+InspectedFace inspectedFace(const Evaluation& e);
 
 }  // namespace hobsharp

@@ -15,7 +15,7 @@ void gearEvaluation(Evaluation& e) {
   e.gearEffectReason = k.missing;
   if (!k.value) return;
   // The face inspected (inspectEvaluation): the measured grid, else the simulated topography.
-  const Eigen::MatrixXd& face = inspectedFace(e);
+  const Eigen::MatrixXd& face = inspectedFace(e).normal;
   const BasicRack rack{hob.normalModule, alpha, job.setup.face.pitchRadius};
   auto g = gearEffect(job.setup.face, job.setup.normalSign, job.grid.r, job.grid.x, face, rack, *k.value);
   if (!g) {
