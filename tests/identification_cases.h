@@ -18,9 +18,7 @@ inline CaseInput leftHandRakeCase() {
   CaseInput c = paperCase();
   c.hob.hand = Hand::Left;
   c.hob.rakeOffset = 2.0;
-  c.settingAngle.reset();
-  c.centerDistance.reset();
-  return c;
+  return test::withDerivedSetup(c);
 }
 
 // A module-2 fine-pitch hob: d_a 32 mm, gash lead 1943 mm, 6 x 9 grid.
@@ -32,12 +30,10 @@ inline CaseInput module2Case() {
   c.hob.gashDepth = 6;
   c.hob.length = 30;
   c.hob.gashLead = 1943;
-  c.settingAngle.reset();
-  c.centerDistance.reset();
   c.grid = GridInput{};
   c.grid.radial = 6;
   c.grid.axial = 9;
-  return c;
+  return test::withDerivedSetup(c);
 }
 
 // The paper's hob with degree-6 axes on an 11 x 21 grid.
@@ -60,13 +56,11 @@ inline CaseInput straightModule4Case() {
   c.hob.rakeOffset = 2;
   c.hob.gash = GashKind::Straight;
   c.hob.gashLead.reset();
-  c.settingAngle.reset();
-  c.centerDistance.reset();
   c.degree = 5;
   c.grid = GridInput{};
   c.grid.radial = 7;
   c.grid.axial = 11;
-  return c;
+  return test::withDerivedSetup(c);
 }
 
 // What the machine runs when it is told `commanded` and adds `error`.

@@ -151,11 +151,7 @@ TEST(Correction, LockedAxesAndCoefficientsStayPut) {
 }
 
 TEST(Correction, StraightGash) {
-  CaseInput in = paperCase();
-  in.hob.gash = GashKind::Straight;
-  in.settingAngle.reset();
-  in.centerDistance.reset();
-  const SharpeningJob job = jobOf(in);
+  const SharpeningJob job = jobOf(straightGashCase());
   const AxisPolynomials& nominal = job.nominalAxes;
   AxisPolynomials error = nominal;
   error[Axis::Z].a[0] -= 0.006;

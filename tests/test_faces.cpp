@@ -91,17 +91,8 @@ TEST(Faces, HelixAngleInsteadOfLead) {
   EXPECT_NEAR(job.setup.face.screwParameter, 876.56 / (2 * M_PI), 1e-9);
 }
 
-CaseInput straightCase() {
-  CaseInput c = paperCase();
-  c.hob.gash = GashKind::Straight;
-  c.hob.gashLead.reset();
-  c.settingAngle.reset();
-  c.centerDistance.reset();
-  return c;
-}
-
 TEST(Faces, StraightGash) {
-  const SharpeningJob job = jobOf(straightCase());
+  const SharpeningJob job = jobOf(straightGashCase());
   EXPECT_FALSE(job.setup.face.helical());
   const AxisPolynomials& a = job.nominalAxes;
   // docs/conventions.md §Straight gash: A stays constant, X = s + K1 tan(0), gamma_m = 0.

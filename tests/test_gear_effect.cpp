@@ -102,17 +102,10 @@ TEST(GearEffect, NoRakeFaceErrorGivesNoGearEffect) {
   // With a rake offset and on a straight gash too.
   CaseInput c = test::paperCase();
   c.hob.rakeOffset = 3;
-  c.settingAngle.reset();
-  c.centerDistance.reset();
-  const SharpeningJob offset = test::jobOf(c);
+  const SharpeningJob offset = test::jobOf(test::withDerivedSetup(c));
   const GearEffect withOffset = effectOf(offset, Eigen::MatrixXd::Zero(5, 9));
   for (double d : withOffset.teeth[2].rightProfile) EXPECT_NEAR(d, 0, 1e-9);
-  CaseInput straight = test::paperCase();
-  straight.hob.gash = GashKind::Straight;
-  straight.hob.gashLead.reset();
-  straight.settingAngle.reset();
-  straight.centerDistance.reset();
-  const SharpeningJob plane = test::jobOf(straight);
+  const SharpeningJob plane = test::jobOf(test::straightGashCase());
   const GearEffect onPlane = effectOf(plane, Eigen::MatrixXd::Zero(5, 9));
   for (const ToothEdges& t : onPlane.teeth)
     for (double d : t.leftProfile) EXPECT_NEAR(d, 0, 1e-9);
@@ -167,9 +160,7 @@ TEST(GearEffect, FiniteDifferencesOfTheFullComputationGiveTheFirstOrderEstimate)
   // full computation, against the estimate applied to the same interpolated face.
   CaseInput c = test::paperCase();
   c.hob.rakeOffset = 3;
-  c.settingAngle.reset();
-  c.centerDistance.reset();
-  const SharpeningJob job = test::jobOf(c);
+  const SharpeningJob job = test::jobOf(test::withDerivedSetup(c));
   auto shape = [](double r, double x) { return 0.02 * (r - 28) * (r - 28) + 0.05 * x + 0.3 * std::sin(x / 30); };
   const Eigen::MatrixXd unit = faceOn(job.grid, shape);
   const double eps = 1e-3;
@@ -216,12 +207,7 @@ TEST(GearEffect, AnErrorSymmetricAboutTheToothGivesBothFlanksTheSameProfile) {
   // face is itself symmetric: exactly the same. On a helical one the helicoid is not (its mirror
   // image is the other hand): the same to second order, 1e-4 of the profile.
   auto f = [](double r, double x) { return 0.03 * (r - 30) * (r - 30) - 0.002 * x * x + 1; };
-  CaseInput straight = test::paperCase();
-  straight.hob.gash = GashKind::Straight;
-  straight.hob.gashLead.reset();
-  straight.settingAngle.reset();
-  straight.centerDistance.reset();
-  const SharpeningJob plane = test::jobOf(straight);
+  const SharpeningJob plane = test::jobOf(test::straightGashCase());
   for (const auto& [j, tolerance] : {std::pair{&plane, 1e-9}, std::pair{&job, 1e-4}}) {
     const GearEffect g = effectOf(*j, faceOn(j->grid, f));
     const ToothEdges& middle = g.teeth[2];

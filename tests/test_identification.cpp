@@ -253,11 +253,7 @@ TEST(Identification, StructuralNullSpaceIsLeftOut) {
 // A grid with fewer points than identifiable directions (3 x 3 at degree 4, straight gash: 9
 // points, 10 directions) is corrected in the directions it shows (found by the case fuzzer).
 TEST(Identification, FewerPointsThanDirections) {
-  CaseInput in = paperCase();
-  in.hob.gash = GashKind::Straight;
-  in.hob.gashLead.reset();
-  in.settingAngle.reset();
-  in.centerDistance.reset();
+  CaseInput in = straightGashCase();
   in.grid = GridInput{};
   in.grid.radial = 3;
   in.grid.axial = 3;

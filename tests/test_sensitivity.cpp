@@ -54,11 +54,7 @@ TEST(Sensitivity, AnalyticEqualsCentralDifferencesAwayFromNominal) {
 }
 
 TEST(Sensitivity, StraightGash) {
-  CaseInput c = paperCase();
-  c.hob.gash = GashKind::Straight;
-  c.settingAngle.reset();
-  c.centerDistance.reset();
-  const SharpeningJob job = jobOf(c);
+  const SharpeningJob job = jobOf(straightGashCase());
   expectMatchesCentralDifferences(job, job.nominalAxes);
   // docs/conventions.md §What the grid can see: X moves along the gash plane, so its columns vanish.
   const SensitivityMatrix S = sensitivityMatrix(groundFaceOf(job, job.nominalAxes), allCoefficients(4));

@@ -27,6 +27,22 @@ inline CaseInput paperCase() {
   return c.value();
 }
 
+// A changed hob takes its setup from itself: the setting angle and the centre distance derived
+// (Tab. 1's printed values fit only the paper's hob).
+inline CaseInput withDerivedSetup(CaseInput c) {
+  c.settingAngle.reset();
+  c.centerDistance.reset();
+  return c;
+}
+
+// The paper's hob with a straight gash (no gash lead), its setup derived.
+inline CaseInput straightGashCase() {
+  CaseInput c = paperCase();
+  c.hob.gash = GashKind::Straight;
+  c.hob.gashLead.reset();
+  return withDerivedSetup(c);
+}
+
 inline SharpeningJob jobOf(const CaseInput& c) {
   auto j = resolveJob(c);
   EXPECT_TRUE(j.ok()) << (j.ok() ? "" : j.error().message);
