@@ -525,32 +525,24 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
             kWithMeasured}, c.roundedAxes);
     v.texts({"correction.coefficients", "", "the coefficients left free (not locked)", kWithMeasured}, names(c.coefficients));
     eigenNumbers(v, {"correction.change", "coefficient units", "the changes of correction.coefficients, in order: correction.axes minus the axes run", kWithMeasured}, c.change);
-    for (Axis a : kAxes) {
-      const int i = static_cast<int>(a);
-      const bool rot = isRotary(a);
-      v.number({kIdentified[i], rot ? "µrad" : "µm", "the identified machine error of the axis (actual minus commanded): largest over the motion range, signed",
-                kWithMeasured}, c.identifiedErrorSize[i]);
-    }
-    for (Axis a : kAxes) {
-      const int i = static_cast<int>(a);
-      v.number({kChange[i], isRotary(a) ? "µrad" : "µm", "the change proposed for the axis, correction.axes minus the axes run: largest over the motion range, signed",
-                kWithMeasured}, c.axisChangeSize[i]);
-    }
-    for (Axis a : kAxes) {
-      const int i = static_cast<int>(a);
-      v.number({kUncertainty[i], isRotary(a) ? "µrad" : "µm", "standard uncertainty of that change from the probe noise, largest over the motion range",
-                kWithMeasured}, c.uncertainty[i]);
-    }
-    for (Axis a : kAxes) {
-      const int i = static_cast<int>(a);
-      v.number({kFacePerError[i], isRotary(a) ? "µm per µrad" : "µm per µm", "precision demand: face deviation per unit of a constant error of the axis, largest over the grid",
-                kWithMeasured}, c.facePerAxisError[i]);
-    }
-    for (Axis a : kAxes) {
-      const int i = static_cast<int>(a);
-      v.number({kChangePerNoise[i], isRotary(a) ? "µrad per µm" : "µm per µm", "precision demand: standard uncertainty of the axis change per µm of probe noise",
-                kWithMeasured}, c.changePerNoise[i]);
-    }
+    // One figure per axis: µm-type units for X, Y, Z and µrad-type ones for A, B (README, "Correction").
+    auto perAxis = [&](const char* const names[], const char* linear, const char* rotary, const char* what,
+                       const std::array<double, kAxisCount>& values) {
+      for (Axis a : kAxes) {
+        const int i = static_cast<int>(a);
+        v.number({names[i], isRotary(a) ? rotary : linear, what, kWithMeasured}, values[i]);
+      }
+    };
+    perAxis(kIdentified, "µm", "µrad", "the identified machine error of the axis (actual minus commanded): largest over the motion range, signed",
+            c.identifiedErrorSize);
+    perAxis(kChange, "µm", "µrad", "the change proposed for the axis, correction.axes minus the axes run: largest over the motion range, signed",
+            c.axisChangeSize);
+    perAxis(kUncertainty, "µm", "µrad", "standard uncertainty of that change from the probe noise, largest over the motion range",
+            c.uncertainty);
+    perAxis(kFacePerError, "µm per µm", "µm per µrad", "precision demand: face deviation per unit of a constant error of the axis, largest over the grid",
+            c.facePerAxisError);
+    perAxis(kChangePerNoise, "µm per µm", "µrad per µm", "precision demand: standard uncertainty of the axis change per µm of probe noise",
+            c.changePerNoise);
     // With measuredPoints off the grid the grid views are the re-simulated faces (README, "Measured points").
     const Topography& gridAfter = c.atProbes() ? c.afterOnGrid : c.after;
     const Topography& gridMeasured = c.atProbes() ? c.explainedOnGrid : c.before;
