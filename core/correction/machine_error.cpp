@@ -37,11 +37,29 @@ struct FaceResidual : Eigen::DenseFunctor<double> {
   const std::vector<Coefficient>& coefficients;
   const Eigen::MatrixXd& P;
   const Eigen::VectorXd& measured;
-  FaceCache cache;
+  FaceCache cache;  // faces without sensitivities: the trial steps need only the deviations
   int jacobians = 0;
+  // The cached face at sensitiveX was given its sensitivities, and S is its matrix over all
+  // coefficients (Eqs. 13-16): for df, and for the decision and the covariance at the solution.
+  Eigen::VectorXd sensitiveX;
+  int sensitiveEvaluation = -1;  // cache.evaluations when it was: a later face replaced it
+  Eigen::MatrixXd S;
 
   const GroundFace* faceAt(const Eigen::VectorXd& x) {
-    return cache.at(x, [&](const Eigen::VectorXd& t) { return simulateGroundFaceLike(like, setup, plusChange(run, coefficients, P * t)); });
+    return cache.at(x, [&](const Eigen::VectorXd& t) {
+      return simulateGroundFaceLike(like, setup, plusChange(run, coefficients, P * t), Sensitivities::Skip);
+    });
+  }
+
+  const GroundFace* sensitiveFaceAt(const Eigen::VectorXd& x) {
+    const GroundFace* f = faceAt(x);
+    if (!f) return nullptr;
+    if (sensitiveEvaluation == cache.evaluations && sensitiveX == x) return f;
+    if (!addSensitivities(*cache.lastFace, setup, plusChange(run, coefficients, P * x))) return nullptr;
+    sensitiveX = x;
+    sensitiveEvaluation = cache.evaluations;
+    S = sensitivityMatrix(*f, coefficients).normal;
+    return f;
   }
 
   int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& fvec) {
@@ -50,10 +68,9 @@ struct FaceResidual : Eigen::DenseFunctor<double> {
   }
 
   int df(const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
-    const GroundFace* f = faceAt(x);
-    if (!f) return -1;  // never at an accepted iterate: those were all simulated
+    if (!sensitiveFaceAt(x)) return -1;  // never at an accepted iterate: those were all simulated
     ++jacobians;
-    jac = sensitivityMatrix(*f, coefficients).normal * P;
+    jac = S * P;
     return 0;
   }
 };
@@ -104,13 +121,14 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
   Eigen::VectorXd theta(0);
   Eigen::VectorXd zE = Eigen::VectorXd::Zero(m.space.basis.cols());  // E in the basis, machine steps
   GroundFace current = runFace;
+  Eigen::MatrixXd currentS = sensitivityMatrix(runFace, cs).normal;  // of `current`
   std::vector<bool> previous;
   Eigen::MatrixXd keptP(q, 0);  // the last round's solution, kept if a later round cannot start
   Eigen::VectorXd keptTheta(0);
   int evaluations = 0;
   for (int round = 0; round < kDecisionRounds; ++round) {
     if (q == 0 || m.space.basis.cols() == 0) break;
-    const Eigen::MatrixXd Jz = sensitivityMatrix(current, cs).normal * m.space.step.asDiagonal() * m.space.basis;
+    const Eigen::MatrixXd Jz = currentS * m.space.step.asDiagonal() * m.space.basis;
     const Eigen::VectorXd data = d - faceNormal(current) + Jz * zE;  // what E makes, linearised here
     // The SVD of Jz through its QR (Jz = Q R, R = U S V^T): the data's components along the
     // left singular vectors are U^T (Q^T data), without forming the p x m factor.
@@ -153,13 +171,17 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     theta = V.transpose() * zE;  // the estimate so far, in the directions decided here
     if (kept.empty()) {
       current = runFace;
+      currentS = sensitivityMatrix(runFace, cs).normal;
       zE.setZero();
       break;
     }
     FaceResidual residual(setup, run, runFace, cs, P, d);
     if (round == 0) {
       residual.cache.lastX = theta;
-      residual.cache.lastFace = runFace;
+      residual.cache.lastFace = runFace;  // with its sensitivities, and their matrix
+      residual.sensitiveX = theta;
+      residual.sensitiveEvaluation = residual.cache.evaluations;
+      residual.S = currentS;
     }
     Eigen::LevenbergMarquardt<FaceResidual> lm(residual);
     lm.setFtol(o.solver.functionTolerance);
@@ -185,6 +207,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
       evaluations += residual.cache.evaluations;
       theta.setZero();
       current = runFace;
+      currentS = sensitivityMatrix(runFace, cs).normal;
       break;
     }
     int iterations = 0;
@@ -196,11 +219,12 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     m.summary.iterations += iterations;
     describeSolve(m.summary, status, residual.cache.unsolvable, o.solver, "no identified axis direction");
     // theta is the best iterate: the solver only ever accepts steps that reduce the sum of squares.
-    const GroundFace* f = residual.faceAt(theta);
+    const GroundFace* f = residual.sensitiveFaceAt(theta);
     evaluations += residual.cache.evaluations;
     if (!f) return refuse("measured", "the identified machine error leaves a face that cannot be simulated.",
                           ErrorCode::Unsolvable);
-    current = *f;
+    current = std::move(*residual.cache.lastFace);
+    currentS = std::move(residual.S);
     zE = V * theta;
     keptP = P;
     keptTheta = theta;
@@ -225,7 +249,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
   m.covariancePerNoise = Eigen::MatrixXd::Zero(q, q);
   if (P.cols() > 0) {
     // (J^T J)^-1 in the identified directions, which the decision kept well conditioned.
-    const Eigen::MatrixXd J = sensitivityMatrix(m.face, cs).normal * P;
+    const Eigen::MatrixXd J = currentS * P;
     const Eigen::MatrixXd JtJ = J.transpose() * J;
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(JtJ);
     const Eigen::MatrixXd covTheta = ldlt.solve(Eigen::MatrixXd::Identity(JtJ.rows(), JtJ.cols()));

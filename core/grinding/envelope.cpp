@@ -166,6 +166,29 @@ EnvelopeGuess nominalGuess(const GridPoint& point, double contactW) {
   return g;
 }
 
+bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
+                      EnvelopePoint& e) {
+  // Linearise once more at the solution (Eqs. 13-15): dt by each axis value and rate, by
+  // the implicit-function theorem on the four envelope equations.
+  const EnvelopeGuess v{e.t, e.phi, e.u, e.w};
+  const FullLinearisation S = setup.wheel.hasOffset()
+                                  ? lineariseFully<kVarsWithOffset>(setup, axes, point, v)
+                                  : lineariseFully<kVars>(setup, axes, point, v);
+  const Eigen::Vector4d lambda = S.J.transpose().partialPivLu().solve(Eigen::Vector4d::UnitX());
+  if (!lambda.allFinite()) return false;
+  for (int i = 0; i < kAxisCount; ++i) {
+    e.dtdValue[i] = -lambda.dot(S.dValue.col(i));
+    e.dtdRate[i] = -lambda.dot(S.dRate.col(i));
+  }
+  if (setup.wheel.hasOffset()) {
+    e.dtdOffset = -lambda.dot(S.dOffset);
+    e.dtdOffsetSlope = -lambda.dot(S.dSlope);
+    e.wheelRadius = wheelContact(setup.face, setup.universal, setup.normalSign,
+                                 setup.universal.centerDistance.coefficient(0), v.u, v.w).R();
+  }
+  return true;
+}
+
 Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
                                           const GridPoint& point, const EnvelopeGuess& guess,
                                           Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
@@ -202,22 +225,7 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
                                  "edge). Check wheel.profileOffset or wheel.measuredProfile.",
                       ErrorCode::Unsolvable);
       if (sensitivities == Sensitivities::Skip) return e;
-      // Converged: linearise once more at the solution for the sensitivities (Eqs. 13-15).
-      const FullLinearisation S = setup.wheel.hasOffset()
-                                      ? lineariseFully<kVarsWithOffset>(setup, axes, point, v)
-                                      : lineariseFully<kVars>(setup, axes, point, v);
-      const Eigen::Vector4d lambda = S.J.transpose().partialPivLu().solve(Eigen::Vector4d::UnitX());
-      if (!lambda.allFinite()) break;
-      for (int i = 0; i < kAxisCount; ++i) {
-        e.dtdValue[i] = -lambda.dot(S.dValue.col(i));
-        e.dtdRate[i] = -lambda.dot(S.dRate.col(i));
-      }
-      if (setup.wheel.hasOffset()) {
-        e.dtdOffset = -lambda.dot(S.dOffset);
-        e.dtdOffsetSlope = -lambda.dot(S.dSlope);
-        e.wheelRadius = wheelContact(setup.face, setup.universal, setup.normalSign,
-                                     setup.universal.centerDistance.coefficient(0), v.u, v.w).R();
-      }
+      if (!addSensitivities(setup, axes, point, e)) break;
       return e;
     }
   }

@@ -71,6 +71,12 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
                                           Sensitivities sensitivities = Sensitivities::Compute,
                                           const EnvelopeSolverOptions& options = {});
 
+// The sensitivities (Eqs. 13-15) of a solved envelope point `e` (as solveEnvelopePoint returned it
+// with Sensitivities::Skip): the same figures as solving with Sensitivities::Compute; false where
+// the envelope equations are singular there.
+bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
+                      EnvelopePoint& e);
+
 // The guess from the nominal screw motion: the wheel touches (u, w) when w + phi = w*(u).
 EnvelopeGuess nominalGuess(const GridPoint& point, double contactW);
 

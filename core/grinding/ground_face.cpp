@@ -131,4 +131,15 @@ MotionRange motionRange(const GroundFace& face) {
   return m;
 }
 
+Outcome<void> addSensitivities(GroundFace& face, const SharpeningSetup& setup, const AxisPolynomials& axes) {
+  for (std::size_t k = 0; k < face.envelope.size(); ++k)
+    if (!addSensitivities(setup, axes, face.points[k], face.envelope[k]))
+      return refuse(face.atProbes() ? "measuredPoints[" + std::to_string(k) + "]" : std::string("grid"),
+                    "the ground face's sensitivities cannot be formed at a point: the envelope equations are singular there.",
+                    ErrorCode::Unsolvable);
+  if (!addSensitivities(setup, axes, face.meanPoint, face.meanEnvelope))
+    return refuse("grid", "the ground face's sensitivities cannot be formed at the grid's mean point.", ErrorCode::Unsolvable);
+  return success();
+}
+
 }  // namespace hobsharp

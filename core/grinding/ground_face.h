@@ -55,4 +55,10 @@ Outcome<GroundFace> simulateGroundFaceLike(const GroundFace& like, const Sharpen
                                            const AxisPolynomials& axes,
                                            Sensitivities sensitivities = Sensitivities::Compute);
 
+// Gives a face simulated with Sensitivities::Skip its sensitivities at the same solutions, in
+// place: equal to simulating it with Sensitivities::Compute (the identification's trial steps need
+// no sensitivities; machine_error.cpp). Refused as a face that cannot be solved where the envelope
+// equations are singular.
+Outcome<void> addSensitivities(GroundFace& face, const SharpeningSetup& setup, const AxisPolynomials& axes);
+
 }  // namespace hobsharp
