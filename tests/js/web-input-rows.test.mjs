@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { inputRows } from '../../web/src/io/input-rows.js';
-import { reportRows } from '../../web/src/views/report.js';
+import { reportDateLine, reportRows } from '../../web/src/views/report.js';
 import { setModuleLimits } from '../../web/src/limits.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 
@@ -40,4 +40,12 @@ test("the report's rows: the hob, wheel, setup, machine and grid values by group
   assert.ok(!derived.some((r) => r[1] === 'extra' || r[1] === 'a'), 'nested values stay out of the report');
   assert.deepEqual(derived.at(-2), ['setup', 'settingAngle (derived)', '12.626 deg']);
   assert.deepEqual(derived.at(-1), ['axes', 'run', 'X, Y, Z, A, B as in the case']);
+});
+
+test("the report's first line names the day and what was measured: a grid, the machine's points, or nothing", () => {
+  const day = new Date('2026-11-23T22:00:00Z');
+  assert.equal(reportDateLine(paper, day), 'Printed 2026-11-23; no measured topography.');
+  assert.equal(reportDateLine({ ...paper, measured: [[1]] }, day), 'Printed 2026-11-23; with a measured topography.');
+  assert.equal(reportDateLine({ ...paper, measuredPoints: [[20, 0, 1], [30, 5, 2]] }, day),
+    'Printed 2026-11-23; with a measured topography at 2 probe points.');
 });

@@ -25,9 +25,17 @@ export function reportRows(result, caseObject) {
   return rows;
 }
 
+// The report's first line: the day, and what was measured (a grid, the machine's points, or nothing).
+export function reportDateLine(caseObject, date = new Date()) {
+  const points = caseObject.measuredPoints;
+  const measured = caseObject.measured ? 'with a measured topography'
+    : points ? `with a measured topography at ${points.length} probe points` : 'no measured topography';
+  return `Printed ${date.toISOString().slice(0, 10)}; ${measured}.`;
+}
+
 export function mountReport(store) {
   store.on('result', ({ result, caseObject }) => {
-    $('#report-date').textContent = `Printed ${new Date().toISOString().slice(0, 10)}; ${caseObject.measured ? 'with a measured topography' : 'no measured topography'}.`;
+    $('#report-date').textContent = reportDateLine(caseObject);
     const rows = reportRows(result, caseObject);
     $('#report-inputs').innerHTML = `<table class="grid-table"><thead><tr><th>group</th><th>field</th><th>value</th></tr></thead><tbody>${
       rows.map((r) => `<tr>${r.map((c) => `<td>${escapeHtml(c)}</td>`).join('')}</tr>`).join('')}</tbody></table>`;
