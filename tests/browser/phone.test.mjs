@@ -38,3 +38,43 @@ test('at 390 x 844 every input and select of the form is within the screen and v
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+// The import preview at 390 px: every labelled control of it (the orientation options, the
+// buttons of the box) and the warning lie wholly inside the screen, none clipped by its box.
+test('at 390 x 844 the measured grid preview shows every labelled control whole', async () => {
+  const width = 390;
+  const page = await openPage(undefined, { viewport: { width, height: 844 } });
+  await plotted(page);
+  // A grid in mm by mistake: the preview, its warning and its options.
+  const grid = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (_, j) => ((i - 2) * 0.004 + j * 0.001).toFixed(4)));
+  await page.fill('#measured-csv', grid.map((row) => row.join(', ')).join('\n'));
+  await page.waitForFunction(() => !document.querySelector('#measured-preview').hidden && !document.querySelector('#measured-warning').hidden);
+  await page.locator('#measured-preview').scrollIntoViewIfNeeded();
+  const controls = await page.$$eval('#measured-preview label, #measured-preview .warning, #measured-section .pair > div:first-child button',
+    (els) => els.filter((el) => !el.closest('[hidden]')).map((el) => {
+      const r = el.getBoundingClientRect();
+      // Clipped by a box between it and the page: an ancestor that hides what overflows it.
+      let clip = null;
+      for (let a = el.parentElement; a && a !== document.body; a = a.parentElement) {
+        const s = getComputedStyle(a);
+        if (s.overflowX !== 'visible' || s.contain.includes('paint')) {
+          const b = a.getBoundingClientRect();
+          if (r.left < b.left - 0.5 || r.right > b.right + 0.5) clip = a.id || a.className;
+        }
+      }
+      return { text: el.textContent.trim().slice(0, 40), left: r.left, right: r.right, width: r.width, height: r.height,
+        overflows: el.scrollWidth > el.clientWidth + 1, clip };
+    }));
+  const labels = controls.map((c) => c.text);
+  for (const words of ['transpose', 'rows tip first', 'columns reversed', 'change sign', 'values in mm', 'Use this grid']) {
+    assert.ok(labels.includes(words), `${words} in ${JSON.stringify(labels)}`);
+  }
+  for (const c of controls) {
+    assert.ok(c.left >= 0 && c.right <= width, `"${c.text}" spans ${c.left.toFixed(1)}..${c.right.toFixed(1)} px of ${width}`);
+    assert.ok(c.width > 0 && c.height > 0 && !c.overflows && !c.clip, `"${c.text}" is whole: ${JSON.stringify(c)}`);
+  }
+  assert.ok(await page.evaluate(() => document.documentElement.scrollWidth) <= width, 'the page does not scroll sideways');
+  await page.locator('#measured-section .pair > div:first-child').screenshot({ path: path.join(shots, 'phone-measured-preview.png') });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

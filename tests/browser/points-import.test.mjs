@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { afterResult, base, openPage, root, shots, useBrowser } from './support.mjs';
+import { afterResult, base, openPage, plotted, root, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 const desk = { viewport: { width: 1366, height: 900 } };
@@ -28,6 +28,10 @@ const state = (page) => page.evaluate(() => ({
 test('a points CSV is previewed, corrected as points, and the maps show the grid', async () => {
   const page = await openPage(base, desk);
   await page.waitForFunction(() => window.hobsharpTimings.results > 0);
+  // No points, no marks: the simulated face's map alone, without a legend.
+  await plotted(page);
+  assert.deepEqual(await page.evaluate(() => [document.querySelector('#plot-before-2d').data.map((t) => t.type),
+    document.querySelectorAll('#plot-before-2d .legend').length]), [['heatmap'], 0]);
   // The machine's file, as a German spreadsheet saves it: semicolons, decimal commas, a BOM, CRLF.
   const german = '\uFEFF' + pointsCsv.trim().split('\n').map((l) => l.replace(/,/g, ';').replace(/\./g, ',')).join('\r\n') + '\r\n';
   const n = Number(await page.getAttribute('#measured-preview', 'data-previews'));
@@ -48,6 +52,32 @@ test('a points CSV is previewed, corrected as points, and the maps show the grid
   assert.ok(Number(s.sseBefore) > 100, `a real error measured: ${s.sseBefore}`);
   assert.match(s.title, /^Measured at 2000 points/);
   await page.locator('#measured-section .pair > div:first-child').screenshot({ path: path.join(shots, 'points-import-preview.png') });
+  // The probe points on both maps: a scatter trace over the heatmap, on its axes (r up, x across,
+  // mm), in the legend as "probe points". The plotting library must hold the scatter trace: an
+  // unknown trace type draws an empty frame without a word.
+  assert.equal(await page.evaluate(() => Boolean(window.Plotly.PlotSchema.get().traces.scatter)), true, 'the bundle has the scatter trace');
+  await page.waitForFunction(() => ['plot-before-2d', 'plot-after-2d'].every((id) =>
+    document.querySelectorAll(`#${id} .scatterlayer .trace .point`).length === 2000));
+  for (const id of ['plot-before-2d', 'plot-after-2d']) {
+    const m = await page.evaluate((sel) => {
+      const el = document.querySelector(sel);
+      const s = el.data.find((t) => t.type === 'scatter');
+      const heat = el.data.find((t) => t.type === 'heatmap');
+      // Where the first point is drawn, against where the axes put its (x, r).
+      const xa = el._fullLayout.xaxis, ya = el._fullLayout.yaxis;
+      const dot = el.querySelector('.scatterlayer .trace .point').getBoundingClientRect();
+      const plot = el.querySelector('.bglayer rect, .draglayer .nsewdrag').getBoundingClientRect();
+      return { name: s.name, n: s.x.length, x0: s.x[0], y0: s.y[0], xaxis: s.xaxis || 'x', heatAxis: heat.xaxis || 'x',
+        legend: [...el.querySelectorAll('.legend .legendtext')].map((t) => t.textContent),
+        dx: dot.x + dot.width / 2 - plot.x - xa.l2p(s.x[0]), dy: dot.y + dot.height / 2 - plot.y - ya.l2p(s.y[0]) };
+    }, `#${id}`);
+    assert.equal(m.name, 'probe points');
+    assert.deepEqual(m.legend, ['probe points'], id);
+    assert.equal(m.n, 2000);
+    assert.deepEqual([m.y0, m.x0], first.slice(0, 2), `${id}: the first point at its r and x in mm`);
+    assert.equal(m.xaxis, m.heatAxis, 'the same axes as the map');
+    assert.ok(Math.abs(m.dx) < 1.5 && Math.abs(m.dy) < 1.5, `${id}: the first point drawn at its place (${m.dx}, ${m.dy} px off)`);
+  }
   await page.locator('#topography-section').screenshot({ path: path.join(shots, 'points-import-maps.png') });
 
   // A file the reader refuses (no units): the message names the line; nothing else changes.

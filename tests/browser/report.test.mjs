@@ -15,12 +15,33 @@ const MARGIN = 12;  // mm, the stylesheet's @page margin
 
 test('the report prints on A4 and Letter: nothing cut, nothing blank', async () => {
   const page = await openPage(base, { viewport: { width: 1366, height: 900 } });
+  // Without the hob's relief the report says why there is no effect on the gear, and no figures.
+  await page.emulateMedia({ media: 'print' });
+  const out = path.join(shots, 'report');
+  mkdirSync(out, { recursive: true });
+  const noRelief = path.join(out, 'report-no-relief.pdf');
+  writeFileSync(noRelief, await page.pdf({ format: 'A4', printBackground: true }));
+  const noReliefText = execFileSync('pdftotext', [noRelief, '-'], { encoding: 'utf8' }).replace(/\s+/g, ' ');
+  assert.match(noReliefText, /Effect on the gear .{0,80}no relief \(hob\.gashes with hob\.relief, or hob\.sideReliefAngle\)/);
+  assert.doesNotMatch(noReliefText, /fHα|arc-min/);
+  await page.emulateMedia({ media: 'screen' });
+  // The hob's relief, so that the effect on the gear is in the record.
+  await afterResult(page, () => page.fill('[data-field="hob.gashes"]', '12'));
+  await afterResult(page, () => page.fill('[data-field="hob.relief"]', '4.5'));
   await page.fill('[data-offset="Z 0"]', '-0.01');
   await page.dispatchEvent('[data-offset="Z 0"]', 'change');
   await afterResult(page, () => page.click('#generate-error'));
   await page.waitForFunction(() => window.hobsharpTimings.draws > 1);
-  const out = path.join(shots, 'report');
-  mkdirSync(out, { recursive: true });
+  // The gear's figures as the page shows them (each with its unit), for the printed pages below.
+  await page.waitForFunction(() => !document.querySelector('#gear-effect').hidden);
+  const gearRows = await page.$$eval('#gear-effect-table tbody tr', (trs) => trs.map((t) => [...t.children].map((c) => c.textContent.trim())));
+  assert.equal(gearRows.length, 4);
+  for (const t of gearRows) for (const cell of t.slice(1)) assert.match(cell, /^-?\d+\.\d{3} (µm|arc-min)$/, cell);
+  // fHα does not change along the hob here (the error is a Z offset): drawn flat, its axis not
+  // magnified onto rounding noise.
+  await page.waitForFunction(() => document.querySelector('#plot-gear-along')._fullLayout);
+  const along = await page.evaluate(() => document.querySelector('#plot-gear-along')._fullLayout.yaxis.range);
+  assert.ok(along[1] - along[0] >= 0.1 - 1e-9, `fHα axis ${along}`);
   for (const [format, paper] of Object.entries(PAPER)) {
     const width = Math.floor(mmToPx(paper.width - 2 * MARGIN)), height = Math.floor(mmToPx(paper.height - 2 * MARGIN));
     await page.setViewportSize({ width, height: 900 });
@@ -54,6 +75,18 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
     assert.match(first, /Case link: http/);
     const all = execFileSync('pdftotext', ['-layout', pdf, '-'], { encoding: 'utf8' });
     for (const words of ['Axes to run, in the control', 'Deviation topography', 'Correctable', 'Machine error identified']) assert.ok(all.includes(words), `${format}: ${words}`);
+    // The effect on the gear: each figure with its value and unit for both flanks, on one page.
+    const flat = execFileSync('pdftotext', [pdf, '-'], { encoding: 'utf8' }).replace(/\s+/g, ' ');
+    assert.match(flat, /Effect on the gear/);
+    for (const [label, left, right] of gearRows) {
+      const words = label.replace(/[()]/g, '').split(' ').slice(0, 3).join(' ');
+      assert.ok(flat.includes(words) && flat.includes(left) && flat.includes(right), `${format}: ${label} ${left} ${right}`);
+    }
+    const gearPages = [];
+    for (let k = 1; k <= pages; k++) {
+      if (/profile slope deviation/.test(execFileSync('pdftotext', ['-f', String(k), '-l', String(k), pdf, '-'], { encoding: 'utf8' }))) gearPages.push(k);
+    }
+    assert.equal(gearPages.length, 1, `${format}: the gear's table on one page, ${gearPages}`);
     execFileSync('pdftoppm', ['-r', '60', '-png', pdf, path.join(out, format)]);
     const pngs = readdirSync(out).filter((f) => f.startsWith(`${format}-`) && f.endsWith('.png')).sort();
     assert.equal(pngs.length, pages);

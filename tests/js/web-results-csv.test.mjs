@@ -76,3 +76,43 @@ test('the wheel profile CSV has its 41 points, r, R and Z in mm', () => {
   assert.deepEqual(lines[2].split(',').map(Number), [r.wheelProfile.r[0], r.wheelProfile.R[0], r.wheelProfile.Z[0]]);
   assert.ok(Math.abs(r.wheelProfile.R[0] - 49.999828) < 1e-5);
 });
+
+// The effect on the gear in the record (README, "The effect on the gear"): with the hob's relief,
+// each figure per flank with its unit (µm, arc-min) as the module gives it; without, the reason.
+test('the effect on the gear: its figures per flank with their units, or why there are none', () => {
+  const measured = [19, 24.25, 29.5, 34.75, 40].map((ri) => [-70, -52.5, -35, -17.5, 0, 17.5, 35, 52.5, 70].map((xj) => (ri - 29.5) + 0.1 * xj));
+  const caseObject = { ...paper, hob: { ...paper.hob, gashes: 12, relief: 4.5 }, measured };
+  const r = hobsharp.evaluate(caseObject);
+  const g = r.gearEffect;
+  assert.equal(g.reason, '');
+  for (const style of ['comma', 'semicolon']) {
+    const sep = style === 'comma' ? ',' : ';';
+    const num = (v) => (style === 'comma' ? String(v) : String(v).replace('.', ','));
+    const lines = resultsCsv(r, { caseObject, style }).split('\n');
+    const at = lines.indexOf('# effect on the gear, from the measured rake face');
+    assert.ok(at > 0, style);
+    assert.equal(lines[at + 1], ['figure', 'unit', 'left flank (faces −x₁)', 'right flank (faces +x₁)'].join(sep));
+    const expected = [
+      ['profile slope deviation fHα (largest over the teeth)', 'µm', g.left.profileSlope, g.right.profileSlope],
+      ['pressure-angle error of that tooth', 'arc-min', g.left.pressureAngleError, g.right.pressureAngleError],
+      ['profile form deviation ffα (largest)', 'µm', g.left.profileForm, g.right.profileForm],
+      ['scatter of fHα along the hob', 'µm', g.left.slopeScatter, g.right.slopeScatter]];
+    expected.forEach(([label, unit, left, right], k) => assert.equal(lines[at + 2 + k], [label, unit, num(left), num(right)].join(sep)));
+    assert.equal(lines[at + 6], '', 'the block ends after its four figures');
+    // The tilt (more material toward the tip) gives fHα plus and a smaller pressure angle.
+    assert.ok(g.left.profileSlope > 0 && g.left.pressureAngleError < 0);
+    assert.doesNotMatch(lines.slice(at, at + 6).join('\n'), /NaN|undefined|Infinity/);
+  }
+  // The inputs of the relief are in the record's inputs.
+  const lines = resultsCsv(r, { caseObject }).split('\n');
+  assert.ok(lines.includes('hob.gashes,12') && lines.includes('hob.relief,4.5'));
+
+  const without = hobsharp.evaluate(paper);
+  assert.match(without.gearEffect.reason, /no relief/);
+  const text = resultsCsv(without, { caseObject: paper });
+  assert.ok(!text.includes('fHα'), 'no figures without the relief');
+  const at = text.split('\n').indexOf('# effect on the gear');
+  assert.ok(at > 0);
+  const reason = without.gearEffect.reason;
+  assert.equal(text.split('\n')[at + 1], /[",;\n]/.test(reason) ? `no figures,"${reason.replace(/"/g, '""')}"` : `no figures,${reason}`);
+});

@@ -1,25 +1,15 @@
 // The results as CSV, as a job's record needs them: the inputs, the verdict and the figures
-// before and after, the axis polynomials (nominal, run, corrected, and the change to type in)
-// with their units, the measured grid and the topography grids; and the wheel profile's points
-// for a dresser. UTF-8 with a BOM, so that µ and ² survive spreadsheet programs; with a comma and
+// before and after, the effect on the gear, the axis polynomials (nominal, run, corrected, and
+// the change to type in) with their units, the measured grid and the topography grids; and the
+// wheel profile's points for a dresser. UTF-8 with a BOM, so that µ and ² survive spreadsheet programs; with a comma and
 // a decimal point, or a semicolon and a decimal comma (style 'semicolon') as a German
 // spreadsheet reads them.
 import { AXES, coefficientUnit } from '../limits.js';
 import { motionUnit } from '../format.js';
+import { FLANKS, gearEffectRows, hasGearEffect } from '../gear-effect-figures.js';
+import { inputRows } from './input-rows.js';
 
 const BOM = '\uFEFF';
-
-// The scalar inputs of a case, as [path, value] rows (lists and the measured grid have their own blocks).
-function inputRows(c, prefix = '') {
-  const rows = [];
-  for (const [k, v] of Object.entries(c || {})) {
-    const path = prefix ? `${prefix}.${k}` : k;
-    if (['measured', 'measuredPoints', 'axes', 'passes', 'page'].includes(path)) continue;
-    if (v !== null && typeof v === 'object' && !Array.isArray(v)) rows.push(...inputRows(v, path));
-    else rows.push([path, Array.isArray(v) ? v.join(' ') : v]);
-  }
-  return rows;
-}
 
 // A name for the file from the job and the day: hobsharp-m8-helical-right-2026-11-23.csv.
 export function resultsFileName(caseObject, date = new Date()) {
@@ -41,7 +31,7 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   const lines = ['# HobSharp results (hobsharp-case/1)', row('# date', date.toISOString().slice(0, 10))];
   if (caseObject) {
     lines.push('', '# inputs', row('input', 'value'));
-    for (const [k, v] of inputRows(caseObject)) lines.push(row(k, v));
+    for (const [k, v] of inputRows(caseObject)) lines.push(row(k, Array.isArray(v) ? v.join(' ') : v));
   }
   const c = r.correction;
   if (c) {
@@ -59,6 +49,15 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
       ['largest |deviation|', 'µm', t.max], ['thickness error', 'µm', t.thickness], ['sum of squares', 'µm²', t.sse]]) {
       lines.push(row(name, unit, v));
     }
+  }
+  // The effect on the gear (README, "The effect on the gear"): its figures per flank, or why there are none.
+  const g = r.gearEffect;
+  if (hasGearEffect(g)) {
+    lines.push('', `# effect on the gear, from the ${g.source === 'simulated' ? 'simulated' : 'measured'} rake face`,
+      row('figure', 'unit', ...FLANKS.map(([, label]) => label)));
+    for (const [label, unit, left, right] of gearEffectRows(g)) lines.push(row(label, unit, left, right));
+  } else if (g) {
+    lines.push('', '# effect on the gear', row('no figures', g.reason));
   }
   lines.push('', '# axis polynomials; change = corrected - run: what the correction changes',
     row('coefficient', 'unit', 'nominal', 'run', 'corrected', 'change'));

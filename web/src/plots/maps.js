@@ -1,16 +1,35 @@
 // A deviation topography as a map (Plotly heatmap), in µm, with the colour bar that says which
-// colour is excess material.
+// colour is excess material; and, for a measurement at the measuring machine's own points
+// (README, "Measured points"), those points marked on it (a scatter trace on the same axes).
 import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
 import { AXIS_TITLES } from './surface.js';
 
-// spec: {x, y, z, range (shared with the map it is compared with), title}
-export function drawMap(Plotly, el, { x, y, z, range, title }) {
-  return Plotly.react(el, [{
-    type: 'heatmap', x, y, z,
+// The probe points as a scatter trace: list holds [r (mm), x (mm), deviation (µm)] per point, the
+// deviation named by `what` when the pointer is on a point.
+export function probePointsTrace(list, what) {
+  return {
+    type: 'scatter', mode: 'markers', name: 'probe points', showlegend: true,
+    x: list.map((p) => p[1]), y: list.map((p) => p[0]), customdata: list.map((p) => p[2]),
+    // A few points as rings; many (a scanning probe's thousands) as small dots the map shows through.
+    marker: list.length > 300 ? { symbol: 'circle', size: 3, color: 'rgba(0,0,0,0.6)' }
+      : { symbol: 'circle-open', size: 7, color: '#111', line: { width: 1.5 } },
+    hovertemplate: `probe point<br>r = %{y:.2f} mm<br>x = %{x:.2f} mm<br>${what} %{customdata:.3f} µm<extra></extra>`,
+  };
+}
+
+// spec: {x, y, z, range (shared with the map it is compared with), title, points (optional:
+// {list, what} for probePointsTrace)}
+export function drawMap(Plotly, el, { x, y, z, range, title, points = null }) {
+  const traces = [{
+    type: 'heatmap', x, y, z, showlegend: false,
     colorscale: DEVIATION_SCALE, zmin: -range, zmax: range, colorbar: deviationColourBar(),
     hovertemplate: 'r = %{y:.2f} mm<br>x = %{x:.2f} mm<br>deviation %{z:.3f} µm<extra></extra>',
-  }], {
-    title: { text: `${title} (map)`, font: { size: 14 } }, height: 300, margin: { t: 40, r: 10, b: 50, l: 60 },
+  }];
+  if (points) traces.push(probePointsTrace(points.list, points.what));
+  return Plotly.react(el, traces, {
+    title: { text: `${title} (map)`, font: { size: 14 } }, height: points ? 330 : 300,
+    margin: { t: 40, r: 10, b: points ? 80 : 50, l: 60 },
     xaxis: { title: { text: AXIS_TITLES.x } }, yaxis: { title: { text: AXIS_TITLES.y } },
+    showlegend: Boolean(points), legend: { orientation: 'h', x: 0, xanchor: 'left', y: -0.32, yanchor: 'top' },
   }, { responsive: true, displaylogo: false });
 }

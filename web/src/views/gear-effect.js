@@ -4,23 +4,13 @@
 // (one line per tooth of the gash) and one of fHα along the hob. Without the hob's relief the
 // calculator's sentence says what is missing.
 import { escapeHtml, fixed } from '../format.js';
+import { FLANKS, gearEffectRows, hasGearEffect } from '../gear-effect-figures.js';
 
 const $ = (selector) => document.querySelector(selector);
-const FLANKS = [['left', 'left flank (faces −x₁)'], ['right', 'right flank (faces +x₁)']];
-
-// The table's rows: [label, unit, left, right], from the result's gearEffect.
-export function gearEffectRows(g) {
-  return [
-    ['profile slope deviation fHα (largest over the teeth)', 'µm', g.left.profileSlope, g.right.profileSlope],
-    ['pressure-angle error of that tooth', 'arc-min', g.left.pressureAngleError, g.right.pressureAngleError],
-    ['profile form deviation ffα (largest)', 'µm', g.left.profileForm, g.right.profileForm],
-    ['scatter of fHα along the hob', 'µm', g.left.slopeScatter, g.right.slopeScatter],
-  ];
-}
 
 function show(result) {
   const g = result.gearEffect;
-  const on = Boolean(g && !g.reason);
+  const on = hasGearEffect(g);
   $('#gear-effect').hidden = !on;
   $('#gear-effect-reason').hidden = on;
   $('#gear-effect-reason').textContent = g ? g.reason : '';
@@ -53,6 +43,16 @@ function drawProfiles(Plotly, g) {
   }, { responsive: true, displaylogo: false });
 }
 
+// A y range at least `least` µm wide about the values' middle, or none (Plotly's own) for a wider
+// spread: fHα that does not change along the hob (scatter 0) is drawn flat, not its rounding
+// noise (1e-9 µm) magnified to fill the plot with nine-digit tick labels.
+function leastRange(values, least = 0.1) {
+  const lo = Math.min(...values), hi = Math.max(...values);
+  if (!(hi - lo < least)) return null;
+  const mid = (lo + hi) / 2;
+  return [mid - least / 2, mid + least / 2];
+}
+
 function drawAlong(Plotly, g) {
   const traces = FLANKS.map(([flank, label]) => ({
     x: g.alongHob.x, y: g.alongHob[flank].profileSlope, mode: 'lines+markers', name: label,
@@ -60,10 +60,12 @@ function drawAlong(Plotly, g) {
     text: Array.from(g.alongHob[flank].pressureAngleError, (a) => `pressure-angle error ${fixed(a, 3)}′`),
     hovertemplate: 'x = %{x:.1f} mm<br>fHα = %{y:.4f} µm<br>%{text}<extra></extra>',
   }));
+  const range = leastRange(FLANKS.flatMap(([flank]) => Array.from(g.alongHob[flank].profileSlope)));
+  const yRange = range ? { range, autorange: false } : { autorange: true };
   return Plotly.react('plot-gear-along', traces, {
     title: { text: 'fHα along the hob' }, height: 360, margin: { t: 40, r: 20, b: 50, l: 60 },
     xaxis: { title: { text: 'tooth position along the hob axis x (mm)' } },
-    yaxis: { title: { text: 'fHα (µm)' }, zeroline: true },
+    yaxis: { title: { text: 'fHα (µm)' }, zeroline: true, ...yRange },
     legend: { orientation: 'h', y: -0.25 },
   }, { responsive: true, displaylogo: false });
 }
@@ -72,7 +74,7 @@ export function mountGearEffect(store, plots) {
   store.on('result', ({ result }) => show(result));
   plots.add(async ({ Plotly, result }) => {
     const g = result.gearEffect;
-    if (!g || g.reason) return;
+    if (!hasGearEffect(g)) return;
     await drawProfiles(Plotly, g);
     await drawAlong(Plotly, g);
   });

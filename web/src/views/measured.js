@@ -24,6 +24,17 @@ function renderVerdict(r) {
   v.textContent = verdictText(c);
 }
 
+// The preview's warnings (grid or points): what looks wrong in what was read, then the problem
+// that stops its use. A warning the ticked option answers is not repeated: the preview says what
+// the option does. The preview's table shows only without a problem; returns whether it does.
+function showWarnings(read, problem, ticked) {
+  const warnings = [...(read ? read.warnings.filter((w) => !ticked[w.kind]).map((w) => w.text) : []), ...(problem ? [problem] : [])];
+  $('#measured-warning').hidden = !warnings.length;
+  $('#measured-warning').textContent = warnings.join(' ');
+  $('#measured-preview-table').hidden = Boolean(problem);
+  return !problem;
+}
+
 // Text pasted or dropped into the box counts against the same limit as an uploaded file; over
 // it, nothing is inserted (a 100 MB paste would freeze the page).
 function guardSize(box, refuse) {
@@ -76,18 +87,12 @@ export function mountMeasured(store) {
       ? `Read ${size}${read.notes.length ? `, with ${read.notes.join(', ')}` : ''}.${problem ? '' : ` Preview (µm, as it would be used${
         ticked.mm ? ', the values in mm multiplied by 1000' : ''}):`}`
       : '';
-    // A warning the ticked option answers is not repeated: the preview says what the option does.
-    const warnings = [...(read ? read.warnings.filter((w) => !ticked[w.kind]).map((w) => w.text) : []), ...(problem ? [problem] : [])];
-    $('#measured-warning').hidden = !warnings.length;
-    $('#measured-warning').textContent = warnings.join(' ');
-    const table = $('#measured-preview-table');
-    table.hidden = Boolean(problem);
-    if (problem) return;
+    if (!showWarnings(read, problem, ticked)) return;
     const shown = (n) => Math.min(n, 12);
     const head = `<tr><th>r \\ x (mm)</th>${t.x.slice(0, shown(t.x.length)).map((x) => `<th>${fixed(x, 1)}</th>`).join('')}${t.x.length > 12 ? '<th>…</th>' : ''}</tr>`;
     const body = g.slice(0, shown(g.length)).map((row, i) => `<tr><th>${fixed(t.r[i], 2)}</th>${row.slice(0, shown(row.length))
       .map((v) => `<td>${escapeHtml(fixed(v, 3))}</td>`).join('')}${row.length > 12 ? '<td>…</td>' : ''}</tr>`).join('');
-    table.innerHTML = `<thead>${head}</thead><tbody>${body}${g.length > 12 ? '<tr><th>…</th></tr>' : ''}</tbody>`;
+    $('#measured-preview-table').innerHTML = `<thead>${head}</thead><tbody>${body}${g.length > 12 ? '<tr><th>…</th></tr>' : ''}</tbody>`;
   };
   // The preview of a points CSV (README, "Measured points"): what was read, what looks wrong, the
   // first points as they would be used (only "change sign" and "values in mm" apply to points).
@@ -104,14 +109,9 @@ export function mountMeasured(store) {
       ? `Read a points file: ${read.notes.join(', ')}. Preview (r and x in mm, deviation in µm, as it would be used${
         ticked.mm ? ', the deviations in mm multiplied by 1000' : ''}):`
       : '';
-    const warnings = [...(read ? read.warnings.filter((w) => !ticked[w.kind]).map((w) => w.text) : []), ...(problem ? [problem] : [])];
-    $('#measured-warning').hidden = !warnings.length;
-    $('#measured-warning').textContent = warnings.join(' ');
-    const table = $('#measured-preview-table');
-    table.hidden = Boolean(problem);
-    if (problem) return;
+    if (!showWarnings(read, problem, ticked)) return;
     const body = used.slice(0, 12).map((p, k) => `<tr><th>${k + 1}</th>${p.map((v) => `<td>${escapeHtml(fixed(v, 3))}</td>`).join('')}</tr>`).join('');
-    table.innerHTML = `<thead><tr><th>point</th><th>r (mm)</th><th>x (mm)</th><th>deviation (µm)</th></tr></thead>` +
+    $('#measured-preview-table').innerHTML = `<thead><tr><th>point</th><th>r (mm)</th><th>x (mm)</th><th>deviation (µm)</th></tr></thead>` +
       `<tbody>${body}${used.length > 12 ? `<tr><th>…</th><td colspan="3">${used.length - 12} more</td></tr>` : ''}</tbody>`;
   };
   // The points with the ticked options that apply to them: change sign, mm to µm.

@@ -5,32 +5,38 @@
 // width, and back after.
 import { AXES } from '../limits.js';
 import { escapeHtml, fmt } from '../format.js';
+import { inputRows } from '../io/input-rows.js';
 
 const $ = (selector) => document.querySelector(selector);
 
-// The case's inputs as rows of [group, field, value]: what the form gave and what was derived.
-function inputRows(result, caseObject) {
+// The report's rows of [group, field, value]: the hob, wheel, setup, machine and grid values the
+// case gives (io/input-rows.js), the degree, and what was derived.
+const GROUPS = ['hob', 'wheel', 'setup', 'machine', 'grid'];
+export function reportRows(result, caseObject) {
+  const given = inputRows(caseObject).map(([path, v]) => [path.split('.'), v])
+    .filter(([p, v]) => p.length === 2 && GROUPS.includes(p[0]) && v !== null && typeof v !== 'object');
   const rows = [];
-  const add = (group, object) => {
-    for (const [k, v] of Object.entries(object || {})) {
-      if (v !== null && typeof v !== 'object') rows.push([group, k, typeof v === 'number' ? fmt(v, 8) : String(v)]);
-    }
-  };
-  add('hob', caseObject.hob);
-  add('wheel', caseObject.wheel);
-  add('setup', caseObject.setup);
-  add('machine', caseObject.machine);
-  add('grid', caseObject.grid);
+  for (const group of GROUPS) {
+    for (const [[g, field], v] of given) if (g === group) rows.push([group, field, typeof v === 'number' ? fmt(v, 8) : String(v)]);
+  }
   if (caseObject.degree !== undefined) rows.push(['axes', 'degree', String(caseObject.degree)]);
   if (!caseObject.setup || caseObject.setup.settingAngle === undefined) rows.push(['setup', 'settingAngle (derived)', `${fmt(result.setup.settingAngle, 8)} deg`]);
   if (caseObject.axes) rows.push(['axes', 'run', AXES.join(', ') + ' as in the case']);
   return rows;
 }
 
+// The report's first line: the day, and what was measured (a grid, the machine's points, or nothing).
+export function reportDateLine(caseObject, date = new Date()) {
+  const points = caseObject.measuredPoints;
+  const measured = caseObject.measured ? 'with a measured topography'
+    : points ? `with a measured topography at ${points.length} probe points` : 'no measured topography';
+  return `Printed ${date.toISOString().slice(0, 10)}; ${measured}.`;
+}
+
 export function mountReport(store) {
   store.on('result', ({ result, caseObject }) => {
-    $('#report-date').textContent = `Printed ${new Date().toISOString().slice(0, 10)}; ${caseObject.measured ? 'with a measured topography' : 'no measured topography'}.`;
-    const rows = inputRows(result, caseObject);
+    $('#report-date').textContent = reportDateLine(caseObject);
+    const rows = reportRows(result, caseObject);
     $('#report-inputs').innerHTML = `<table class="grid-table"><thead><tr><th>group</th><th>field</th><th>value</th></tr></thead><tbody>${
       rows.map((r) => `<tr>${r.map((c) => `<td>${escapeHtml(c)}</td>`).join('')}</tr>`).join('')}</tbody></table>`;
   });

@@ -1,4 +1,5 @@
-// The deviation topography of the rake face, before and after correction, normal or circular:
+// The deviation topography of the rake face, before and after correction, normal or circular
+// (a measurement at the machine's own points marked on both maps):
 // the figures (rms, peak-to-valley, largest deviation, thickness error, sum of squares), a map and, on demand, a 3D
 // surface.
 import { fixed, fmt, signed } from '../format.js';
@@ -39,6 +40,9 @@ function topographyViews(r, caseObject, view) {
       beforeNumbers, beforeFigures: figuresText(beforeNumbers),
       after: circular ? c.residualCircular : c.residual, afterName: `After correction, ${viewName}`,
       afterNumbers, afterFigures: figuresText(afterNumbers),
+      // Where the probe touched, marked on both maps, with the point's own figure.
+      beforePoints: c.pointMeasured ? { list: c.pointMeasured, what: 'measured normal deviation' } : null,
+      afterPoints: c.pointResidual ? { list: c.pointResidual, what: 'predicted normal deviation' } : null,
     };
   }
   const t = r.topography;
@@ -81,9 +85,9 @@ function drawSurfaces({ Plotly, result: r, state }) {
 function drawMaps({ Plotly, result: r, state }) {
   const v = shown(state);
   const range = colourRange(v.before, v.after);
-  const spec = (z, title) => ({ x: r.topography.x, y: r.topography.r, z, range, title });
-  return Promise.all([drawMap(Plotly, 'plot-before-2d', spec(v.before, v.beforeName)),
-    v.after ? drawMap(Plotly, 'plot-after-2d', spec(v.after, v.afterName)) : Plotly.purge('plot-after-2d')]);
+  const spec = (z, title, points) => ({ x: r.topography.x, y: r.topography.r, z, range, title, points });
+  return Promise.all([drawMap(Plotly, 'plot-before-2d', spec(v.before, v.beforeName, v.beforePoints)),
+    v.after ? drawMap(Plotly, 'plot-after-2d', spec(v.after, v.afterName, v.afterPoints)) : Plotly.purge('plot-after-2d')]);
 }
 
 function mount3dSwitch(store, plots) {
