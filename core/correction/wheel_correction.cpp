@@ -1,5 +1,6 @@
 #include "wheel_correction.h"
 #include "face_vectors.h"
+#include "number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,23 +10,6 @@
 namespace hobsharp {
 namespace {
 
-// A sum of squares for a sentence, as measured_face_correction.cpp writes it: 3 digits, or
-// "below 1e-6" where only rounding is left (which the native and WebAssembly builds round apart).
-std::string squares(double sse) {
-  if (sse < 1e-6) return "below 1e-6";
-  std::ostringstream s;
-  s.precision(3);
-  s << sse;
-  return s.str();
-}
-
-std::string percent(double share) {
-  std::ostringstream s;
-  s.precision(3);
-  s << 100 * share << " %";
-  return s.str();
-}
-
 // The sentence for the engineer when the solve converged and a change is proposed; otherwise the
 // axes' own sentence (stalled, not converged, run kept) stands.
 std::string verdictOf(const Correction& c, const WheelCorrection& w, const CorrectionOptions& o, int points) {
@@ -34,15 +18,15 @@ std::string verdictOf(const Correction& c, const WheelCorrection& w, const Corre
   std::ostringstream v;
   v.precision(3);
   const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
-  const std::string split = "the axes remove " + percent(w.axesShare) + " of the measured sum of squares, the wheel " +
-                            percent(w.wheelShare);
+  const std::string split = "the axes remove " + percentText(w.axesShare) + " of the measured sum of squares, the wheel " +
+                            percentText(w.wheelShare);
   if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
     v << "Correctable with the wheel: run the axes proposed and dress the wheel profile by "
          "correction.wheelProfileOffset (at most "
-      << largest << " µm); predicted sum of squares " << squares(c.after.sse) << " µm², from "
-      << squares(c.before.sse) << " µm² (" << split << ").";
+      << largest << " µm); predicted sum of squares " << squaresText(c.after.sse) << " µm², from "
+      << squaresText(c.before.sse) << " µm² (" << split << ").";
   } else {
-    v << "Partly uncorrectable: " << percent(c.uncorrectableShare)
+    v << "Partly uncorrectable: " << percentText(c.uncorrectableShare)
       << " of the sum of squares is a shape neither the axes nor a smooth wheel profile through "
       << w.knots.R.size() << " points make; it stays in the residual (" << split << ").";
   }

@@ -17,7 +17,8 @@ inline std::string numberText(double v, int digits = 6) {
 // A length in mm, as the messages write it: "12.5 mm".
 inline std::string mmText(double v) { return numberText(v) + " mm"; }
 
-// A sum of squares as the verdicts write it: 3 digits, "below 1e-6" for less (µm², unit by the caller).
+// A sum of squares as the verdicts write it: 3 digits, or "below 1e-6" where only rounding is left
+// (which the native and WebAssembly builds round apart); µm², the unit written by the caller.
 inline std::string squaresText(double sse) { return sse < 1e-6 ? std::string("below 1e-6") : numberText(sse, 3); }
 
 // A share of 1 as a percentage: "12.3 %".
