@@ -107,7 +107,7 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   written.insert(pointsOnly.begin(), pointsOnly.end());
   EXPECT_EQ(written, described);
   const std::set<std::string> wheelOnly = {"correction.wheelProfileOffset.R", "correction.wheelProfileOffset.offset",
-                                           "correction.dresserPath.R", "correction.dresserPath.Z", "correction.removedByAxes",
+                                           "correction.dresserPath.R", "correction.dresserPath.Z", "correction.dresserPath.offset", "correction.removedByAxes",
                                            "correction.removedByWheel", "correction.axesShare", "correction.wheelShare"};
   for (const std::string& f : wheelOnly) EXPECT_EQ(writtenWithPoints.count(f), 0u) << f << " with points";
   writtenWithPoints.insert(wheelOnly.begin(), wheelOnly.end());

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cubic_spline.h"
 #include "identification_cases.h"
 #include "result_model.h"
 #include "wheel_correction.h"
@@ -243,6 +244,13 @@ TEST(WheelCorrection, ResultFieldsAndTheSwitch) {
     EXPECT_NEAR(moved * 1000, std::abs(w.dresser.offset[k] * 1000), 1e-9) << k;
     EXPECT_LE(std::abs(w.dresser.offset[k]) * 1000, 1.5 * largestOffset(w) + 1e-9);
   }
+  // Fig. 4 draws the wheel's offset after the dressing as the spline, not through its points: the
+  // field is the proposed spline at the profile's radii (this case's wheel has no offset of its own).
+  const CubicSpline proposed(c["wheelProfileOffset"]["R"].get<std::vector<double>>(),
+                             c["wheelProfileOffset"]["offset"].get<std::vector<double>>());
+  ASSERT_EQ(c["dresserPath"]["offset"].size(), r["wheelProfile"]["R"].size());
+  for (size_t k = 0; k < r["wheelProfile"]["R"].size(); ++k)
+    EXPECT_NEAR(c["dresserPath"]["offset"][k].get<double>(), proposed.value(r["wheelProfile"]["R"][k].get<double>()), 1e-9) << k;
   for (const char* grid : {"removedByAxes", "removedByWheel", "residual"}) {
     ASSERT_EQ(c[grid].size(), 5u) << grid;
     for (const Json& row : c[grid]) ASSERT_EQ(row.size(), 9u) << grid;

@@ -367,18 +367,20 @@ void visitGearEffect(const Evaluation& e, ResultVisitor& v, bool every) {
   }
 }
 
+// Wheel offsets are computed in mm and shown in µm.
+std::vector<double> micrometres(const std::vector<double>& mm) {
+  constexpr double kMicrometresPerMm = 1000.0;
+  std::vector<double> um;
+  for (double x : mm) um.push_back(x * kMicrometresPerMm);
+  return um;
+}
+
 // The dressed or measured wheel (docs/case-format.md §The wheel's profile): present only when the
 // case gives wheel.profileOffset or wheel.measuredProfile.
 void visitWheelOffset(const Evaluation& e, ResultVisitor& v) {
   constexpr const char* kWithOffset = "only with wheel.profileOffset or wheel.measuredProfile";
-  constexpr double kMicrometresPerMm = 1000.0;
   const WheelSurface& wheel = e.job.setup.wheel;
   if (!wheel.hasOffset() && !v.listsEveryField()) return;
-  auto micrometres = [&](const std::vector<double>& mm) {
-    std::vector<double> um;
-    for (double x : mm) um.push_back(x * kMicrometresPerMm);
-    return um;
-  };
   const DressedProfile& d = e.dressedProfile;
   numbers(v, {"wheelProfile.offset", "µm", "the wheel's profile offset at each point (+ = more wheel, less material)", kWithOffset},
           micrometres(d.offset));
@@ -410,6 +412,8 @@ void visitWheelCorrection(const Evaluation& e, ResultVisitor& v) {
   numbers(v, {"correction.dresserPath.R", "mm", "the corrected axial wheel profile for the dresser: the current profile plus the dressing along its normal, at the wheelProfile points", kWithWheel},
           w.dresser.dressedR);
   numbers(v, {"correction.dresserPath.Z", "mm", "its axial positions", kWithWheel}, w.dresser.dressedZ);
+  numbers(v, {"correction.dresserPath.offset", "µm", "the wheel's offset after the dressing at the wheelProfile points: the current offset plus the proposed spline (+ = more wheel)", kWithWheel},
+          micrometres(w.dresser.offset));
   matrix(v, {"correction.removedByAxes", "µm", "the part of the measured face the axes remove (in the span of the directions they take)", kWithWheel},
          w.removedByAxes);
   matrix(v, {"correction.removedByWheel", "µm", "the part the wheel's dressing removes: the shape the axes cannot make", kWithWheel},

@@ -15,7 +15,7 @@ const desk = { viewport: { width: 1366, height: 900 } };
 const paper = JSON.parse(readFileSync(path.join(root, 'tests', 'data', 'tab1.json'), 'utf8'));
 const csvFile = (name, text) => ({ name, mimeType: 'text/csv', buffer: Buffer.from(text) });
 const rmsShown = async (page) => Number(/^rms ([\d.]+) µm/.exec(await page.textContent('#figures-before'))[1]);
-const wheelTraces = (page) => page.$eval('#plot-wheel', (el) => el.data.map((t) => ({ name: t.name, xaxis: t.xaxis || 'x' })));
+const wheelTraces = (page) => page.$eval('#plot-wheel', (el) => el.data.map((t) => ({ name: t.name, xaxis: t.xaxis || 'x', points: t.y.length })));
 
 test('a dressed wheel from a CSV file grinds the face, and Fig. 4 shows its offset in µm', async () => {
   const page = await openPage(base, desk);
@@ -102,7 +102,12 @@ test('correcting the wheel too: the proposed offset on Fig. 4, the dresser path 
   assert.match(await page.textContent('#wheel-share'), /^Of the measured sum of squares, the axes remove [\d.]+ % and the wheel's proposed offset [\d.]+ %; [\d.]+ µm rms is left/);
   for (const id of ['#plot-removed-axes', '#plot-removed-wheel', '#plot-left']) assert.ok(await colours(page, id) > 8, `${id} draws`);
   const traces = await wheelTraces(page);
-  assert.ok(traces.some((t) => t.xaxis === 'x2' && /^proposed in addition/.test(t.name)), JSON.stringify(traces));
+  const proposed = traces.find((t) => t.xaxis === 'x2' && /^proposed in addition \(/.test(t.name));
+  const knots = traces.find((t) => t.xaxis === 'x2' && /^proposed in addition: spline points/.test(t.name));
+  assert.ok(proposed && knots, JSON.stringify(traces));
+  const profilePoints = traces.find((t) => /^conjugate profile|^axial profile/.test(t.name)).points;
+  assert.equal(proposed.points, profilePoints, 'the proposal drawn as its spline at every profile point');
+  assert.ok(knots.points >= 2 && knots.points < profilePoints, 'its spline points marked');
   assert.ok(traces.some((t) => /^dresser path/.test(t.name)));
 
   assert.ok(await page.isEnabled('#download-dresser'));

@@ -61,16 +61,21 @@ test('the case keeps one wheel: a new file replaces the old kind, the conjugate 
   assert.match(wheelSource({ wheel: { profileOffset: { R: 'x' } } }).text, /cannot read/);
 });
 
-test('Fig. 4\'s offsets: as dressed, proposed, and their sum where both are at the profile points', () => {
+test('Fig. 4\'s offsets: as dressed, the proposed spline at the profile points with its knots, and their sum', () => {
   const p = { r: [19, 30, 40], R: [29.5, 40, 50], Z: [0, 0, 0] };
   assert.deepEqual(wheelOffsetCurves({ wheelProfile: p }), [], 'the conjugate wheel: no offset scale');
   const dressed = { ...p, offset: [1, 2, 3] };
-  const proposed = { R: [29.5, 40, 50], offset: [-1, 0.5, 4] };
-  const curves = wheelOffsetCurves({ wheelProfile: dressed, correction: { wheelProfileOffset: proposed } });
+  const proposed = { R: [29.5, 50], offset: [-1, 4] };
+  const dresserPath = { R: [29.6, 40.1, 50.1], Z: [0, 0, 0], offset: [0, 2.5, 7] };
+  const curves = wheelOffsetCurves({ wheelProfile: dressed, correction: { wheelProfileOffset: proposed, dresserPath } });
   assert.deepEqual(curves.map((c) => c.name), ['offset as dressed', 'proposed in addition', 'dressed after the correction']);
+  assert.deepEqual(curves[1].R, p.R, 'the proposal drawn at the profile points, not through its knots');
+  assert.deepEqual(curves[1].offset, [-1, 0.5, 4]);
+  assert.deepEqual(curves[1].knots, proposed);
   assert.deepEqual(curves[2].offset, [0, 2.5, 7]);
-  const knots = wheelOffsetCurves({ wheelProfile: dressed, correction: { wheelProfileOffset: { R: [29.5, 50], offset: [1, 1] } } });
-  assert.equal(knots.length, 2, 'no sum at other radii');
+  const conjugate = wheelOffsetCurves({ wheelProfile: p, correction: { wheelProfileOffset: proposed, dresserPath } });
+  assert.deepEqual(conjugate.map((c) => c.name), ['proposed in addition'], 'the conjugate wheel: the proposal is the sum');
+  assert.deepEqual(conjugate[0].offset, [0, 2.5, 7]);
   assert.deepEqual(offsetRange(curves).map((v) => Math.round(v * 100) / 100), [-8.05, 8.05]);
   assert.deepEqual(offsetRange([{ offset: [0, 0] }]), [-1.15, 1.15], 'a zero offset is a line at 0, not blown up');
 });

@@ -33,11 +33,12 @@ test('correction.wheel: the new fields, finite, of their shapes', () => {
   assert.equal(c.wheelProfileOffset.offset.length, 5);
   assert.equal(c.dresserPath.R.length, r.wheelProfile.R.length);
   assert.equal(c.dresserPath.Z.length, r.wheelProfile.Z.length);
+  assert.equal(c.dresserPath.offset.length, r.wheelProfile.R.length);
   for (const grid of ['removedByAxes', 'removedByWheel', 'residual']) {
     assert.equal(c[grid].length, 5, grid);
     for (const row of c[grid]) assert.equal(row.length, 9, grid);
   }
-  const all = [...c.wheelProfileOffset.R, ...c.wheelProfileOffset.offset, ...c.dresserPath.R, ...c.dresserPath.Z,
+  const all = [...c.wheelProfileOffset.R, ...c.wheelProfileOffset.offset, ...c.dresserPath.R, ...c.dresserPath.Z, ...c.dresserPath.offset,
     ...c.removedByAxes.flat(), ...c.removedByWheel.flat(), c.wheelShare, c.axesShare];
   assert.ok(all.every(Number.isFinite));
   for (const s of [c.wheelShare, c.axesShare]) assert.ok(s >= 0 && s <= 1);

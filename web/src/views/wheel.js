@@ -26,11 +26,21 @@ function drawWheel(Plotly, r, state) {
     traces.push({ x: dresser.Z, y: dresser.R, mode: 'lines', name: 'dresser path (corrected)', line: { dash: 'dash', color: '#542788' },
       hovertemplate: 'dresser path<br>Z = %{x:.5f} mm<br>R = %{y:.4f} mm<extra></extra>' });
   }
-  curves.forEach((c, i) => traces.push({
-    x: c.offset, y: c.R, xaxis: 'x2', mode: c.R.length > 12 ? 'lines' : 'lines+markers', name: `${c.name} (µm, top scale)`,
-    line: { color: OFFSET_COLOURS[i % OFFSET_COLOURS.length], width: 2 },
-    hovertemplate: `${c.name}<br>R = %{y:.3f} mm<br>offset %{x:.3f} µm<extra></extra>`,
-  }));
+  curves.forEach((c, i) => {
+    const color = OFFSET_COLOURS[i % OFFSET_COLOURS.length];
+    traces.push({
+      x: c.offset, y: c.R, xaxis: 'x2', mode: c.R.length > 12 ? 'lines' : 'lines+markers', name: `${c.name} (µm, top scale)`,
+      line: { color, width: 2 }, legendgroup: c.name,
+      hovertemplate: `${c.name}<br>R = %{y:.3f} mm<br>offset %{x:.3f} µm<extra></extra>`,
+    });
+    if (c.knots) {
+      traces.push({
+        x: c.knots.offset, y: c.knots.R, xaxis: 'x2', mode: 'markers', name: `${c.name}: spline points`, showlegend: false,
+        legendgroup: c.name, marker: { color, size: 8, symbol: 'diamond' },
+        hovertemplate: `${c.name}, spline point<br>R = %{y:.3f} mm<br>offset %{x:.3f} µm<extra></extra>`,
+      });
+    }
+  });
   const layout = {
     // With the offsets' scale at the top, its title takes the title's place (the section's heading names the plot).
     title: { text: curves.length ? '' : 'Wheel axial profile (R against Z)' }, height: curves.length ? 400 : 360,
