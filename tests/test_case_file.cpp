@@ -136,6 +136,11 @@ const Rule kRules[] = {
     {"PassMeasuredShortRow", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["measured"][2].erase(8); }, "passes[0].measured[2]", "has 8 values"},
     {"PassMeasuredBeyond10mm", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["measured"][4][8] = 2e4; }, "passes[1].measured[4][8]", "must lie within ±10000 µm"},
     {"PassMeasuredMissing", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0].erase("measured"); }, "passes[0].measured", "is missing"},
+    // A pass measured at the measuring machine's own points: checked like measuredPoints, named in the pass.
+    {"PassMeasuredAndPoints", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["measuredPoints"] = {{30, 0, 1.5}}; }, "passes[1].measuredPoints", "not both"},
+    {"PassPointsNotTriples", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0].erase("measured"); j["passes"][0]["measuredPoints"] = {{30, 0, 1.5}, {30, 1}}; }, "passes[0].measuredPoints[1]", "three numbers"},
+    {"PassPointOffTheFace", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1].erase("measured"); j["passes"][1]["measuredPoints"] = {{30, 0, 1.5}, {45, 0, 1}}; }, "passes[1].measuredPoints[1]", "off the rake face"},
+    {"PassPointTwice", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1].erase("measured"); j["passes"][1]["measuredPoints"] = {{30, 0, 1.5}, {30, 0, 1}}; }, "passes[1].measuredPoints[1]", "the same point measured twice"},
     {"PassAxesWrongDegree", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["axes"]["B"].erase(4); }, "passes[1].axes.B", "needs 5 coefficients"},
     {"PassAxesMissing", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0].erase("axes"); }, "passes[0].axes", "is missing"},
     {"PassUnknownField", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["predicted"] = 1; }, "passes[0].predicted", "unknown field"},
@@ -465,6 +470,24 @@ TEST(CaseFile, PassesRoundTrip) {
   ASSERT_TRUE(without.ok()) << without.error().message;
   EXPECT_EQ(with->topography.sse, without->topography.sse);
   EXPECT_EQ(with->topography.normal, without->topography.normal);
+
+  {  // a pass measured at the measuring machine's points keeps them as read, and changes nothing computed
+    Json k = j;
+    k["passes"] = twoPasses();
+    k["passes"][0].erase("measured");
+    k["passes"][0]["measuredPoints"] = {{19.5, -60, 1.25}, {30, 0, -0.5}, {38, 60.5, 2}};
+    auto read = parseCase(k.dump());
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    ASSERT_TRUE(read->passes[0].measuredPoints.has_value());
+    ASSERT_EQ(read->passes[0].measuredPoints->size(), 3u);
+    EXPECT_EQ((*read->passes[0].measuredPoints)[2].x, 60.5);
+    EXPECT_EQ((*read->passes[0].measuredPoints)[0].deviation, 1.25);
+    EXPECT_EQ(read->passes[0].measured.size(), 0);
+    EXPECT_FALSE(read->passes[1].measuredPoints.has_value());
+    auto withPoints = evaluateCase(k.dump());
+    ASSERT_TRUE(withPoints.ok()) << withPoints.error().message;
+    EXPECT_EQ(withPoints->topography.normal, without->topography.normal);
+  }
 
   j["passes"] = Json::array();
   auto empty = parseCase(j.dump());

@@ -333,10 +333,12 @@ Outcome<Eigen::MatrixXd> readMeasured(const Json& m, const std::string& name = "
 }
 
 Outcome<CorrectionInput> readCorrection(const Node& c);
+Outcome<std::vector<MeasuredPoint>> readMeasuredPoints(const Json& p, const std::string& field);
 
 // The pass history: a list of {"axes": {X..B}, "measured": rows, "correction": {...}}, oldest
-// first; a pass's correction is optional (the options its correction was computed with). Shapes against
-// the grid and the degree are resolveJob()'s to check, as for `measured` and `axes`.
+// first, a pass's measurement a grid (`measured`) or the measuring machine's points
+// (`measuredPoints`); a pass's correction is optional (the options its correction was computed
+// with). Shapes against the grid and the degree are resolveJob()'s to check, as for `measured` and `axes`.
 Outcome<std::vector<PassInput>> readPasses(const Json& p) {
   if (!p.is_array())
     return refuse("passes", std::string("must be a list of passes such as [{\"axes\": {...}, \"measured\": [[...]]}]; got ") +
@@ -346,14 +348,19 @@ Outcome<std::vector<PassInput>> readPasses(const Json& p) {
     const std::string name = "passes[" + std::to_string(i) + "]";
     if (!p[i].is_object()) return refuse(name, std::string("must be an object with axes and measured; got ") + typeName(p[i]) + ".");
     const Node pass(p[i], name);
-    HOBSHARP_TRY(pass.onlyKnown({"axes", "measured", "correction"}));
+    HOBSHARP_TRY(pass.onlyKnown({"axes", "measured", "measuredPoints", "correction"}));
     PassInput in;
     auto axes = pass.object("axes", true);
     if (!axes) return axes.error();
     HOBSHARP_ASSIGN(in.axes, readAxes(*axes));
     const Json* m = pass.find("measured");
-    if (!m) return refuse(pass.field("measured"), "is missing.");
-    HOBSHARP_ASSIGN(in.measured, readMeasured(*m, pass.field("measured")));
+    const Json* points = pass.find("measuredPoints");
+    if (m && points)
+      return refuse(pass.field("measuredPoints"), "give the pass's measurement as `measured` (a grid) or as `measuredPoints`, not both.");
+    if (!m && !points)
+      return refuse(pass.field("measured"), "is missing: a pass needs the face measured after it, as `measured` (a grid) or `measuredPoints`.");
+    if (m) HOBSHARP_ASSIGN(in.measured, readMeasured(*m, pass.field("measured")));
+    if (points) HOBSHARP_ASSIGN(in.measuredPoints, readMeasuredPoints(*points, pass.field("measuredPoints")));
     if (pass.find("correction")) {
       auto c = pass.object("correction", true);
       if (!c) return c.error();
@@ -503,13 +510,14 @@ Outcome<ToleranceTable> readToleranceTable(const Node& t) {
   return table;
 }
 
-// `measuredPoints`: a list of [r, x, deviation] (mm, mm, µm). Where they lie is resolveJob()'s to check.
-Outcome<std::vector<MeasuredPoint>> readMeasuredPoints(const Json& p) {
+// `measuredPoints`: a list of [r, x, deviation] (mm, mm, µm); `field` is its name ("measuredPoints",
+// "passes[1].measuredPoints"). Where they lie is resolveJob()'s to check.
+Outcome<std::vector<MeasuredPoint>> readMeasuredPoints(const Json& p, const std::string& field) {
   if (!p.is_array() || p.empty())
-    return refuse("measuredPoints", "must be a list of points [r, x, deviation] (mm, mm, µm), such as [[19, -70, 1.5], ...].");
+    return refuse(field, "must be a list of points [r, x, deviation] (mm, mm, µm), such as [[19, -70, 1.5], ...].");
   std::vector<MeasuredPoint> out;
   for (std::size_t k = 0; k < p.size(); ++k) {
-    const std::string name = "measuredPoints[" + std::to_string(k) + "]";
+    const std::string name = field + "[" + std::to_string(k) + "]";
     if (!p[k].is_array() || p[k].size() != 3)
       return refuse(name, std::string("must be a point [r, x, deviation] of three numbers; got ") +
                               (p[k].is_array() ? std::to_string(p[k].size()) + " values" : typeName(p[k])) + ".");
@@ -622,7 +630,7 @@ Outcome<CaseInput> parseCase(const std::string& text) {
     HOBSHARP_ASSIGN(in.passes, readPasses(*p));
   }
   if (const Json* p = root.find("measuredPoints")) {
-    HOBSHARP_ASSIGN(in.measuredPoints, readMeasuredPoints(*p));
+    HOBSHARP_ASSIGN(in.measuredPoints, readMeasuredPoints(*p, "measuredPoints"));
   }
   auto inspection = root.object("inspection", false);
   if (!inspection) return inspection.error();

@@ -51,11 +51,13 @@ struct CorrectionInput {
   std::optional<bool> wheel;              // solve for a wheel-profile offset too (default false)
 };
 
-// One grinding pass of the history: the axes the machine ran and the face measured after it
-// (µm, grid.radial x grid.axial), as `passes` holds them (docs/case-format.md).
+// One grinding pass of the history: the axes the machine ran and the face measured after it, as
+// a grid (µm, grid.radial x grid.axial) or as the measuring machine's points, as `passes` holds
+// them (docs/case-format.md).
 struct PassInput {
   AxisPolynomials axes;
-  Eigen::MatrixXd measured;
+  Eigen::MatrixXd measured;  // empty when the pass gives measuredPoints
+  std::optional<std::vector<MeasuredPoint>> measuredPoints;
   std::optional<CorrectionInput> correction;  // the options its correction was computed with
 };
 

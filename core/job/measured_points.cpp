@@ -8,7 +8,6 @@
 namespace hobsharp {
 namespace {
 
-std::string pointName(std::size_t k) { return "measuredPoints[" + std::to_string(k) + "]"; }
 
 // The index of the line within `tolerance` of v, or -1.
 int lineAt(const std::vector<double>& lines, double v, double tolerance) {
@@ -19,8 +18,9 @@ int lineAt(const std::vector<double>& lines, double v, double tolerance) {
 
 }  // namespace
 
-Outcome<void> checkPoints(const std::vector<MeasuredPoint>& points, const PointRegion& region) {
-  if (points.empty()) return refuse("measuredPoints", "is empty; it needs the measured points [r, x, deviation].");
+Outcome<void> checkPoints(const std::vector<MeasuredPoint>& points, const PointRegion& region, const std::string& field) {
+  auto pointName = [&](std::size_t k) { return field + "[" + std::to_string(k) + "]"; };
+  if (points.empty()) return refuse(field, "is empty; it needs the measured points [r, x, deviation].");
   for (std::size_t k = 0; k < points.size(); ++k) {
     const MeasuredPoint& p = points[k];
     if (!std::isfinite(p.r) || !std::isfinite(p.x) || !std::isfinite(p.deviation))

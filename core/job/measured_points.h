@@ -33,7 +33,8 @@ struct PointRegion {
 // Every point checked, or a refusal naming the first bad one (measuredPoints[k]): not three finite
 // numbers, a deviation beyond maxDeviation, off the face, outside the ground region, or within
 // the tolerance of an earlier point (a duplicate); an empty list is refused as measuredPoints.
-Outcome<void> checkPoints(const std::vector<MeasuredPoint>& points, const PointRegion& region);
+Outcome<void> checkPoints(const std::vector<MeasuredPoint>& points, const PointRegion& region,
+                          const std::string& field = "measuredPoints");
 
 // The measured grid when the points are the grid's positions (each within `tolerance` of one,
 // every position once, in any order); otherwise none: the points are corrected as points.

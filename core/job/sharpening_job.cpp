@@ -269,11 +269,12 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   if (in.measured) {
     if (auto r = checkMeasured(*in.measured, grid, "measured"); !r) return r.error();
   }
-  if (in.measuredPoints) {  // the measuring machine's own points (README, "Measured points")
+  // Where the measuring machine's points may lie (README, "Measured points").
+  const PointRegion region{job.rootRadius, job.outerRadius,
+                           in.hob.length / 2 + std::abs(face.axialAt(*pitch)) + kGridTolerance * (1 + in.hob.length),
+                           kGridTolerance, kMaxDeviation};
+  if (in.measuredPoints) {
     if (in.measured) return refuse("measuredPoints", "give the measurement as `measured` (a grid) or as `measuredPoints`, not both.");
-    const double tol = kGridTolerance * (1 + in.hob.length);
-    const PointRegion region{job.rootRadius, job.outerRadius, in.hob.length / 2 + std::abs(face.axialAt(*pitch)) + tol,
-                             kGridTolerance, kMaxDeviation};
     if (auto ok = checkPoints(*in.measuredPoints, region); !ok) return ok.error();
     if (auto m = gridFromPoints(*in.measuredPoints, grid, kGridTolerance)) {
       job.input.measured = std::move(m);
@@ -286,7 +287,11 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   for (size_t i = 0; i < in.passes.size(); ++i) {
     const std::string pass = "passes[" + std::to_string(i) + "].";
     if (auto r = checkAxes(in.passes[i].axes, in.degree, pass + "axes"); !r) return r.error();
-    if (auto r = checkMeasured(in.passes[i].measured, grid, pass + "measured"); !r) return r.error();
+    if (in.passes[i].measuredPoints) {
+      if (auto r = checkPoints(*in.passes[i].measuredPoints, region, pass + "measuredPoints"); !r) return r.error();
+    } else if (auto r = checkMeasured(in.passes[i].measured, grid, pass + "measured"); !r) {
+      return r.error();
+    }
     if (in.passes[i].correction)
       if (auto r = correctionOptions(*in.passes[i].correction, in.degree, pass + "correction"); !r) return r.error();
   }

@@ -145,3 +145,33 @@ test('a saved history that no longer fits the grid is left out, the rest loads, 
   assert.equal(await page.isHidden('#pass-history'), true);
   await page.context().close();
 });
+
+// A pass measured at the measuring machine's own points (a points CSV) is kept with its points:
+// the history computes it again from them, and the saved case holds them in the pass.
+test('points measured, used as next run: the pass keeps its points', async () => {
+  const page = await openPage(base, desk);
+  await page.waitForFunction(() => window.hobsharpTimings.results > 0);
+  const csv = readFileSync(path.join(root, 'tests', 'data', 'points-2000.csv'));
+  await afterResult(page, () => page.setInputFiles('#measured-file', { name: 'probe-run.csv', mimeType: 'text/csv', buffer: csv }));
+  assert.match(await page.textContent('#before-title'), /^Measured at 2000 points/);
+  let rows = await table(page);
+  assert.deepEqual(rows.map((r) => r[0]), ['1 (under way)', '2 (next, predicted)']);
+  const first = sseOf(rows[0], 'measured');
+  const sseBefore = Number(await page.getAttribute('#verdict', 'data-sse-before'));
+  assert.ok(sseBefore > 100 && Math.abs(first - sseBefore) < 1e-5 * sseBefore, `pass 1 measured ${first} µm², the correction's ${sseBefore} µm²`);
+  assert.equal(await page.isDisabled('#next-run'), false, 'points can be used as a pass');
+
+  await afterResult(page, () => page.click('#next-run'));
+  rows = await table(page);
+  assert.deepEqual(rows.map((r) => [r[0], r[7]]), [['1', ''], ['2 (under way)', 'not measured yet']]);
+  assert.equal(sseOf(rows[0], 'measured'), first, 'the kept pass, computed again from its axes and points');
+  assert.doesNotMatch(await page.textContent('#before-title'), /Measured at/, 'the pass under way is not measured yet');
+  const { saved } = await save(page);
+  assert.equal(saved.passes.length, 1);
+  assert.equal(saved.passes[0].measuredPoints.length, 2000);
+  assert.equal('measured' in saved.passes[0], false);
+  assert.equal('measuredPoints' in saved, false, 'the points went with their pass');
+  await page.locator('#passes-section').screenshot({ path: path.join(shots, 'passes-points.png') });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

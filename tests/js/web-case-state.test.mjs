@@ -87,7 +87,8 @@ test('what loading another case would replace, in words', () => {
 // The grinding passes (docs/case-format.md, "passes"): saved, loaded, read by the calculator.
 const grid = (v) => Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (_, j) => v + i - j / 8));
 const history = [{ axes, measured: grid(1.25) },
-  { axes: { ...axes, Y: [39.31, 0, 0, 0, 1e-6] }, measured: grid(-0.5), correction: { probeNoise: 1, resolution: { A: 0.001 }, lockedAxes: ['B'], locked: [] } }];
+  { axes: { ...axes, Y: [39.31, 0, 0, 0, 1e-6] }, measured: grid(-0.5), correction: { probeNoise: 1, resolution: { A: 0.001 }, lockedAxes: ['B'], locked: [] } },
+  { axes, measuredPoints: [[19.5, -60, 1.25], [30, 0, -0.5], [38, 60.5, 2]] }];  // measured at the measuring machine's points
 
 test('the grinding passes are saved and loaded with the case, and the calculator reads them', async () => {
   const state = stateWith({ passes: structuredClone(history), axes, measured: grid(0.1) });
@@ -99,7 +100,8 @@ test('the grinding passes are saved and loaded with the case, and the calculator
   assert.deepEqual(back.formCase, paper, 'the history is not taken for a field of the form');
   assert.equal(savedCase(stateWith({})).passes, undefined, 'no history, no member');
   assert.deepEqual(inputsFromCase(paper).passes, []);
-  assert.deepEqual(userData(stateWith({ passes: history })), ['the history of 2 grinding passes']);
+  assert.deepEqual(userData(stateWith({ passes: history })), ['the history of 3 grinding passes']);
+  assert.equal('measured' in back.passes[2], false, 'a pass of points has no grid');
   // The C++ case reader (in the module) takes the saved case, and the result is the one without the history.
   const hobsharp = await loadHobSharp();
   const withHistory = hobsharp.evaluate(calculatorCase(saved));
@@ -117,6 +119,10 @@ test('a history that does not fit its grid is refused by the calculator, naming 
   bad[0].axes = { ...axes, B: [0.22] };
   assert.throws(() => hobsharp.evaluate({ ...paper, passes: bad }), (e) => e.field === 'passes[0].axes.B');
   bad[0].axes = axes;
+  bad[2].measuredPoints[1] = [45, 0, 1];
+  assert.throws(() => hobsharp.evaluate({ ...paper, passes: bad }),
+    (e) => e.field === 'passes[2].measuredPoints[1]' && /off the rake face/.test(e.message));
+  bad[2].measuredPoints = history[2].measuredPoints;
   bad[1].correction.probeNoise = -1;
   assert.throws(() => hobsharp.evaluate({ ...paper, passes: bad }),
     (e) => e.field === 'passes[1].correction.probeNoise' && /must be positive/.test(e.message));

@@ -40,6 +40,31 @@ test('"Use as next run" keeps the pass under way and runs the proposed axes, wit
   assert.deepEqual(next.axes, nominal);
 });
 
+test('"Use as next run" with the measuring machine\'s points: the pass keeps them, the next run has none yet', () => {
+  const points = [[19.5, -60, 1.25], [30, 0, -0.5], [38, 60.5, 2]];
+  const inspection = { gashDeviations: [1, 2] };
+  const first = computed({ extra: { measuredPoints: points, inspection } });
+  const { inputs } = nextRunInputs(first);
+  assert.deepEqual(inputs.passes, [{ axes: nominal, measuredPoints: points, correction: { lockedAxes: [], locked: [] } }]);
+  assert.equal('measured' in inputs.passes[0], false);
+  assert.deepEqual(inputs.axes, proposed);
+  assert.equal(inputs.measured, null);
+  assert.deepEqual(inputs.extra, { inspection }, 'the points leave the pass under way; the rest stays');
+  inputs.passes[0].measuredPoints[0][2] = 99;
+  assert.equal(points[0][2], 1.25, 'the history holds its own copy');
+  // The kept pass's case: its points, not those of the pass under way, and no grid.
+  const second = computed({ passes: nextRunInputs(first).inputs.passes, axes: proposed, measured: [[0.1]] , extra: { inspection } });
+  const c = passCase(second, second.passes[0]);
+  assert.deepEqual(c.measuredPoints, points);
+  assert.equal('measured' in c, false);
+  assert.deepEqual(c.axes, nominal);
+  assert.deepEqual(c.inspection, inspection);
+  // A grid pass kept while points are under way: the pass's case has its grid and no points.
+  const gridPass = passCase(computed({ extra: { measuredPoints: points } }), { axes: nominal, measured: [[1, 2]] });
+  assert.deepEqual(gridPass.measured, [[1, 2]]);
+  assert.equal('measuredPoints' in gridPass, false);
+});
+
 test('"Use as next run" says why it cannot be done: no grid, an older result, no correction', () => {
   assert.match(nextRunInputs(computed({})).why, /Measure the face first/);
   const stale = computed({ measured: [[1]] });

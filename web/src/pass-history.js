@@ -1,6 +1,8 @@
 // The grinding passes (pure, with Node tests). A pass is the axes the machine ran, the face
-// measured after it, and the options its correction was computed with. The history keeps the passes done (state.passes, oldest first); the pass under
-// way is the run axes (state.axes, or the nominal axes) with the measured grid, once there is one.
+// measured after it (a grid, `measured`, or the measuring machine's points, `measuredPoints`), and
+// the options its correction was computed with. The history keeps the passes done (state.passes,
+// oldest first); the pass under way is the run axes (state.axes, or the nominal axes) with the
+// measured grid or points (state.extra.measuredPoints), once there are some.
 // "Use as next run" keeps the pass under way and makes the proposed axes the run of the next.
 //
 // Per pass the page shows, measured and predicted, the sum of squares (µm²), the largest
@@ -30,19 +32,23 @@ export function resultIsCurrent(state) {
 
 // The inputs after "Use as next run", or a sentence saying why it cannot be done now.
 export function nextRunInputs(state) {
-  if (!state.measured) return { why: 'Measure the face first: paste or generate a measured grid.' };
-  if (!resultIsCurrent(state)) return { why: 'Wait for the correction of the grid now in use.' };
+  const { measuredPoints, ...extra } = state.extra || {};
+  if (!state.measured && !measuredPoints) return { why: 'Measure the face first: paste or generate a measured grid, or load measured points.' };
+  if (!resultIsCurrent(state)) return { why: 'Wait for the correction of the measurement now in use.' };
   const c = state.result.correction;
   if (!c || !c.axes) return { why: 'There is no correction to run.' };
-  const pass = { axes: structuredClone(state.axes || state.result.axes), measured: structuredClone(state.measured),
+  const measurement = state.measured ? { measured: structuredClone(state.measured) } : { measuredPoints: structuredClone(measuredPoints) };
+  const pass = { axes: structuredClone(state.axes || state.result.axes), ...measurement,
     correction: structuredClone(caseOf(state).correction) };
-  return { inputs: { passes: [...state.passes, pass], axes: structuredClone(c.axes), measured: null } };
+  return { inputs: { passes: [...state.passes, pass], axes: structuredClone(c.axes), measured: null, extra } };
 }
 
 // The case that gives a kept pass's figures: the form, with the pass's axes and grid, and the
 // correction's options the pass kept (a pass from an older case without them: those in use now).
 export function passCase(state, pass) {
-  const c = caseOf({ ...state, axes: pass.axes, measured: pass.measured });
+  const { measuredPoints, ...extra } = state.extra || {};
+  const c = caseOf({ ...state, axes: pass.axes, measured: pass.measured || null,
+    extra: pass.measuredPoints ? { ...extra, measuredPoints: pass.measuredPoints } : extra });
   if (pass.correction) c.correction = structuredClone(pass.correction);
   return c;
 }

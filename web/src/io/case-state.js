@@ -84,7 +84,8 @@ export function inputsFromCase(c) {
     formCase, measured: measured === undefined ? null : measured, extra: extraOf(formCase),
     locked: [...locked], lockedAxes: [...lockedAxes], tuning: { ...tuning },
     axes: axes === undefined ? null : structuredClone(axes), offsets,
-    passes: passes.map(({ axes: a, measured: m, correction: o }) => ({ axes: structuredClone(a), measured: structuredClone(m),
+    passes: passes.map(({ axes: a, measured: m, measuredPoints: p, correction: o }) => ({ axes: structuredClone(a),
+      ...(p === undefined ? { measured: structuredClone(m) } : { measuredPoints: structuredClone(p) }),
       ...(o === undefined ? {} : { correction: structuredClone(o) }) })),
   };
 }

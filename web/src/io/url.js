@@ -7,11 +7,12 @@ import { savedCase } from './case-state.js';
 // the measured grid.
 export const MAX_LINK_VALUES = 2500;
 
+// A grid's values, or a list of points' (three numbers each).
 const valuesOf = (grid) => (Array.isArray(grid) ? grid.length * (grid[0] || []).length : 0);
 
 export function caseToHash(caseObject) {
   const c = { ...caseObject };
-  const history = (c.passes || []).reduce((n, p) => n + valuesOf(p.measured), 0);
+  const history = (c.passes || []).reduce((n, p) => n + valuesOf(p.measured || p.measuredPoints), 0);
   if (history && valuesOf(c.measured) + history > MAX_LINK_VALUES) delete c.passes;
   if (valuesOf(c.measured) > MAX_LINK_VALUES) {
     delete c.measured;
