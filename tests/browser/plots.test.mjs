@@ -147,8 +147,22 @@ test('the 3D surfaces: drawn on demand, one scale, titles inside the plot, hover
   }
   assert.match(text, /^r = \d+\.\d\d mm\s*x = -?\d+\.\d\d mm\s*deviation -?\d+\.\d{3} µm$/);
   await page.locator('#topography-section').screenshot({ path: path.join(shots, 'topography-3d.png') });
+  // The link keeps what the page shows: the surfaces, and the circular deviation once chosen.
+  await after_(page, 'draws', () => page.check('input[name="view"][value="circular"]'));
+  const linkPage = () => JSON.parse(decodeURIComponent(page.url().split('#case=')[1])).page;
+  assert.deepEqual(linkPage(), { view: 'circular', surfaces: true });
+  const linked = await openPage(page.url(), { viewport });
+  await plotted(linked);
+  await linked.waitForFunction(() => !document.getElementById('plot-before-3d').hidden);
+  assert.equal(await linked.isChecked('#show-3d'), true, 'the link opens with the 3D surfaces');
+  assert.equal(await linked.isChecked('input[name="view"][value="circular"]'), true, 'and the circular deviation');
+  assert.equal(await linked.textContent('#figures-before'), await page.textContent('#figures-before'), 'the circular figures');
+  assert.deepEqual(linked.problems, []);
+  await linked.context().close();
+  await page.check('input[name="view"][value="normal"]');
   await page.uncheck('#show-3d');
   assert.equal(await page.isVisible('#plot-before-3d'), false);
+  assert.equal(linkPage(), undefined, 'the defaults: no page member');
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

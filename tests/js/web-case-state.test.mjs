@@ -73,8 +73,19 @@ test('a malformed page member is refused, naming it', () => {
   assert.throws(bad({ whatIf: { W: [1] } }), /^Error: page\.whatIf\.W: unknown axis/);
   assert.throws(bad({ whatIf: { X: [1, 'a'] } }), /^Error: page\.whatIf\.X: must be a list of at most 7 finite numbers/);
   assert.throws(bad({ whatIf: { X: new Array(8).fill(0) } }), /page\.whatIf\.X/);
-  assert.throws(bad({ notes: 'x' }), /^Error: page\.notes: unknown field \(expected: whatIf\)/);
+  assert.throws(bad({ notes: 'x' }), /^Error: page\.notes: unknown field \(expected: whatIf, view, surfaces\)/);
+  assert.throws(bad({ view: 'tangential' }), /^Error: page\.view: must be "normal" or "circular"/);
+  assert.throws(bad({ surfaces: 'yes' }), /^Error: page\.surfaces: must be true or false/);
   assert.deepEqual(inputsFromCase({ ...paper, page: {} }).offsets, {});
+});
+
+test('how the page shows the topography (circular deviation, 3D surfaces) is saved only when not the default', () => {
+  assert.deepEqual(savedCase(stateWith({ view: 'circular', surfaces: true })).page, { view: 'circular', surfaces: true });
+  assert.deepEqual(savedCase(stateWith({ surfaces: true, offsets: { Y: [0.01] } })).page, { whatIf: { Y: [0.01] }, surfaces: true });
+  assert.equal(savedCase(stateWith({ view: 'normal', surfaces: false })).page, undefined);
+  assert.deepEqual(inputsFromCase({ ...paper, page: { view: 'circular', surfaces: true } }).pageView, { view: 'circular', surfaces: true });
+  assert.deepEqual(inputsFromCase(paper).pageView, { view: 'normal', surfaces: false }, 'without a page member: the defaults');
+  assert.equal('page' in calculatorCase(savedCase(stateWith({ view: 'circular' }))), false, 'never sent to the calculator');
 });
 
 test('what loading another case would replace, in words', () => {

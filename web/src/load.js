@@ -31,9 +31,12 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
     const formCase = form.write(inputs.formCase);
     const measured = setAside ? null : inputs.measured;
     measuredView.setText(setAside ? measuredText(setAside) : measured ? measuredText(measured) : '');
-    const { locked, lockedAxes, tuning, axes, offsets, passes, extra } = inputs;
+    const { locked, lockedAxes, tuning, axes, offsets, passes, extra, pageView } = inputs;
     store.setInputs({ form: formCase, measured, locked, lockedAxes, tuning, axes, offsets, passes, paper, extra },
       { source: 'load', force: true });
+    // How the case's page showed the topography (the page member; the defaults without one).
+    if (pageView.view !== store.state.view) store.setView(pageView.view);
+    if (pageView.surfaces !== store.state.surfaces) store.setSurfaces(pageView.surfaces);
     store.emit('commit');
   }
 

@@ -11,8 +11,9 @@
 //   aside      a measured grid the calculator refused was set aside: {error}
 //   status     state.status changed
 //   notice     state.notice changed (a message that stays until the user changes something)
-//   view       what the views show changed: state.view (normal or circular deviation), or
-//              state.pinned (a pinned result, whose difference the views then show)
+//   view       what the views show changed: state.view (normal or circular deviation),
+//              state.surfaces (the 3D surfaces shown), or state.pinned (a pinned result, whose
+//              difference the views then show)
 //   plots      every plot shows the newest result: {at}
 import { CASE_FORMAT } from './limits.js';
 
@@ -32,7 +33,8 @@ export function initialState() {
     resultCase: null,        // the case it came from
     status: { text: 'Loading the calculator…', kind: '' },
     notice: null,            // {text, kind}
-    view: 'normal',
+    view: 'normal',          // the deviation shown: normal or circular
+    surfaces: false,         // the 3D surfaces shown beside the maps
     pinned: null,            // a result the views compare with: {result, caseObject}
   };
 }
@@ -95,6 +97,10 @@ export function createStore(state = initialState()) {
     },
     setView(view) {
       state.view = view;
+      store.emit('view');
+    },
+    setSurfaces(on) {
+      state.surfaces = on;
       store.emit('view');
     },
     pin(pinned) {

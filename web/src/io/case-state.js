@@ -4,8 +4,10 @@
 // ("passes", docs/case-format.md), and the what-if offsets.
 //
 // The offsets are the page's own: they travel in a "page" member, {"page": {"whatIf": {"Y":
-// [0.01, 0, ...]}}}. The C++ case reader refuses unknown top-level members (onlyKnown in
-// core/case_json.cpp), so calculatorCase() strips it before a case goes to the calculator.
+// [0.01, 0, ...]}}}, with how the page shows the topography when it is not the default
+// ("view": "circular", "surfaces": true for the 3D surfaces). The C++ case reader refuses unknown
+// top-level members (onlyKnown in core/case_json.cpp), so calculatorCase() strips it before a
+// case goes to the calculator.
 import { AXES } from '../limits.js';
 import { caseOf } from '../store.js';
 
@@ -30,7 +32,12 @@ export function savedCase(state) {
   }
   if (state.passes.length) c.passes = structuredClone(state.passes);
   const whatIf = offsetsToSave(state.offsets);
-  if (Object.keys(whatIf).length) c.page = { whatIf };
+  const page = {
+    ...(Object.keys(whatIf).length ? { whatIf } : {}),
+    ...(state.view === 'circular' ? { view: 'circular' } : {}),
+    ...(state.surfaces ? { surfaces: true } : {}),
+  };
+  if (Object.keys(page).length) c.page = page;
   return c;
 }
 
@@ -49,18 +56,28 @@ export function extraOf(c) {
   return out;
 }
 
+// How the page member says to show the topography: {view: 'normal' | 'circular', surfaces: boolean}.
+export function readPageView(page = {}) {
+  const { view = 'normal', surfaces = false } = page;
+  if (!['normal', 'circular'].includes(view)) throw new Error('page.view: must be "normal" or "circular" (the deviation shown).');
+  if (typeof surfaces !== 'boolean') throw new Error('page.surfaces: must be true or false (the 3D surfaces shown).');
+  return { view, surfaces };
+}
+
 export function calculatorCase(c) {
   if (!isPlainObject(c) || !('page' in c)) return c;
   const { page, ...rest } = c;
   return rest;
 }
 
+// The what-if offsets of a page member (readPageView gives how it shows the topography).
 export function readPage(page) {
   if (page === undefined) return {};
   if (!isPlainObject(page)) throw new Error('page: must be an object such as {"whatIf": {"Y": [0.01]}}.');
   for (const key of Object.keys(page)) {
-    if (key !== 'whatIf') throw new Error(`page.${key}: unknown field (expected: whatIf).`);
+    if (!['whatIf', 'view', 'surfaces'].includes(key)) throw new Error(`page.${key}: unknown field (expected: whatIf, view, surfaces).`);
   }
+  readPageView(page);
   const whatIf = page.whatIf === undefined ? {} : page.whatIf;
   if (!isPlainObject(whatIf)) throw new Error('page.whatIf: must be an object of axis offsets such as {"Y": [0.01]}.');
   const offsets = {};
@@ -83,7 +100,7 @@ export function inputsFromCase(c) {
   return {
     formCase, measured: measured === undefined ? null : measured, extra: extraOf(formCase),
     locked: [...locked], lockedAxes: [...lockedAxes], tuning: { ...tuning },
-    axes: axes === undefined ? null : structuredClone(axes), offsets,
+    axes: axes === undefined ? null : structuredClone(axes), offsets, pageView: readPageView(page),
     passes: passes.map(({ axes: a, measured: m, measuredPoints: p, correction: o }) => ({ axes: structuredClone(a),
       ...(p === undefined ? { measured: structuredClone(m) } : { measuredPoints: structuredClone(p) }),
       ...(o === undefined ? {} : { correction: structuredClone(o) }) })),

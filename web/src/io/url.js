@@ -35,5 +35,7 @@ export function caseFromHash(hash) {
 // Keeps the address in step with the last good result (a refused input never gets into a link);
 // the entry's state (the undo step, views/undo.js) stays.
 export function mountLink(store) {
-  store.on('result', () => history.replaceState(history.state, '', caseToHash(savedCase(store.state))));
+  const write = () => history.replaceState(history.state, '', caseToHash(savedCase(store.state)));
+  store.on('result', write);
+  store.on('view', () => { if (store.state.result) write(); });  // the deviation shown, the 3D surfaces
 }

@@ -90,12 +90,18 @@ function drawMaps({ Plotly, result: r, state }) {
     v.after ? drawMap(Plotly, 'plot-after-2d', spec(v.after, v.afterName, v.afterPoints)) : Plotly.purge('plot-after-2d')]);
 }
 
+// The switches show the state (a loaded case or link may set them: state.view, state.surfaces).
 function mount3dSwitch(store, plots) {
-  $('#show-3d').addEventListener('change', () => {
+  const apply = () => {
     const [before, after] = [$('#plot-before-3d'), $('#plot-after-3d')];
     before.hidden = after.hidden = !show3d();
     if (show3d()) plots.redraw();
     else if (self.Plotly) { self.Plotly.purge(before); self.Plotly.purge(after); }  // frees their WebGL
+  };
+  $('#show-3d').addEventListener('change', () => { apply(); store.setSurfaces(show3d()); });
+  store.on('view', (_, state) => {
+    if (show3d() !== state.surfaces) { $('#show-3d').checked = state.surfaces; apply(); }
+    for (const input of document.querySelectorAll('input[name="view"]')) input.checked = input.value === state.view;
   });
 }
 
