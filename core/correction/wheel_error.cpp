@@ -55,23 +55,25 @@ struct JointResidual : Eigen::DenseFunctor<double> {
       return simulateGroundFace(setupAt(t), axesAt(t), grid, Sensitivities::Skip);
     });
   }
-  // The same face given its sensitivities (in place: the same figures as simulating it with them),
-  // where the solver asks for the Jacobian and at the solution.
+  // The same face with its sensitivities (added to a copy: the same figures as simulating it with
+  // them), where the solver asks for the Jacobian and at the solution. Kept apart from the trial
+  // faces, so that the solution, when the last trial step was rejected, is not simulated again.
   const GroundFace* sensitiveFaceAt(const Eigen::VectorXd& x) {
+    if (sensitive && sensitiveX.size() == x.size() && sensitiveX == x) return &*sensitive;
     const GroundFace* f = faceAt(x);
     if (!f) return nullptr;
-    if (sensitiveEvaluation == cache.evaluations && sensitiveX == x) return f;
-    if (!addSensitivities(*cache.lastFace, setupAt(x), axesAt(x))) return nullptr;
+    GroundFace g = *f;
+    if (!addSensitivities(g, setupAt(x), axesAt(x))) return nullptr;
+    sensitive = std::move(g);
     sensitiveX = x;
-    sensitiveEvaluation = cache.evaluations;
-    return f;
+    return &*sensitive;
   }
-  // The cached face is `face` at x, with its sensitivities.
+  // `face`, with its sensitivities, is the face at x.
   void seed(const Eigen::VectorXd& x, const GroundFace& face) {
     cache.lastX = x;
     cache.lastFace = face;
+    sensitive = face;
     sensitiveX = x;
-    sensitiveEvaluation = cache.evaluations;
   }
 
   int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& fvec) {
@@ -91,8 +93,8 @@ struct JointResidual : Eigen::DenseFunctor<double> {
  private:
   SharpeningSetup setupAt(const Eigen::VectorXd& x) const { return withWheelDeviation(setup, knots, wheelPart(x)); }
   AxisPolynomials axesAt(const Eigen::VectorXd& x) const { return plusChange(run, coefficients, axesPart(x)); }
+  std::optional<GroundFace> sensitive;
   Eigen::VectorXd sensitiveX;
-  int sensitiveEvaluation = -1;  // cache.evaluations when it was given them: a later face replaced it
 };
 
 // Which of the directions (singular values s, the data's components c along them) are used:
