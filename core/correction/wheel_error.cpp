@@ -233,7 +233,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
       const Eigen::MatrixXd R = qr.matrixQR().topRows(mm).triangularView<Eigen::Upper>();
       const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(SE.rows(), mm);
       const Eigen::VectorXd qtd = Q.transpose() * data;
-      const Eigen::BDCSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
+      const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
       axes = decide(svd.singularValues(), svd.matrixU().transpose() * qtd, data.norm(), o);
       a.singularValues = svd.singularValues();
       VE = columns(svd.matrixV(), axes.kept);
