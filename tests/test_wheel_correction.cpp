@@ -123,10 +123,26 @@ void print(const char* hob, const char* what, const Pass& p) {
 // shape is of degree 2 to 4 along the radius, plus an in-span axis error of 1e3 µm², in one pass
 // to below 0.01 µm² (`target`); a face that is pure axis error leaves the wheel offset below 0.1 µm.
 // NOT MET on the paper hob: 7.0e-3, 1.4e-2 and 4.2e-3 µm² for degrees 2, 3, 4 (the straight gash:
-// below 6e-4). The fit leaves 1.4e-3 to 3.9e-3 µm² there (the true offset, a spline through 11
-// points, is not one through the 5 of the correction, and on a helical gash a row is ground at
-// more than one wheel radius); the re-simulated face, with the true offset minus the dressing,
-// differs from that prediction by up to 1e-2 µm². The paper hob is held to 0.02 µm² here.
+// below 6e-4), so the paper hob is held to 0.02 µm² here. The predicted 1.4e-3 to 3.9e-3 µm² misses
+// the re-simulated face by up to 1.03e-2 µm² (degree 3), and the cause is not the model nor how the
+// offsets are composed (the prediction re-simulates the identified model exactly) but what the
+// probe grid cannot tell apart (TheProbeGridReadsTheOffsetAtItsKnots below):
+// - the 5 points suffice: dressing the true offset's values there, with the true axes, leaves
+//   5.7e-6 to 5.9e-4 µm²; on the nominal axes each row is ground at its point's wheel radius only;
+// - to first order an offset constant along R, and on Tab. 1 with the axis directions this error
+//   needs one linear in R, are faces the axes make too (off their span by 1e-6 and 3e-5 of their
+//   size), so the split rule leaves them to the axes: for degree 3 E differs from the true error by
+//   a face of 950 µm² and W from the true offset by a line of +-6.5 µm; for degrees 2 and 4 by a
+//   constant and a line of 1 to 2 µm;
+// - the axes make that offset only where the measured face was ground: the axis error and the
+//   offset's slope move each row 8 to 17 µm of wheel radius off its point, so the offset the axes
+//   stand in for is read there, and after the pass, ground at the points again, it misses by its
+//   slope times that shift (the natural spline's slope at the end points adds the same kind of
+//   error). A face shape alone, with no axis error, leaves 6.9e-4 to 4.5e-3 µm² for that reason.
+// More points (6 to 9, evenly) leave more (up to 40 µm²): the grid shows the offset only at its
+// 5 rows. Deciding the directions of axes and wheel together (the wheel in units of 0.01 to 1 µm)
+// gives the wheel the line, but then pure axis error moves the wheel by 0.15 to 3 µm, or, at 0.01,
+// a face shape alone is left at 750 µm².
 void expectTargets(const char* hob, const CaseInput& c, double target, double predictionGap) {
   for (int degree : {2, 3, 4}) {
     SCOPED_TRACE(std::string(hob) + ", degree " + std::to_string(degree));
@@ -156,8 +172,40 @@ void expectTargets(const char* hob, const CaseInput& c, double target, double pr
   print(hob, "pure axis error", p);
 }
 
-TEST(WheelCorrection, TargetsOnThePaperHob) { expectTargets("Tab. 1", paperCase(), 0.02, 0.012); }
+TEST(WheelCorrection, TargetsOnThePaperHob) { expectTargets("Tab. 1", paperCase(), 0.02, 0.011); }
 TEST(WheelCorrection, TargetsOnAStraightGash) { expectTargets("straight gash", straightCase(), 0.01, 1e-3); }
+
+// Why the paper hob misses the target (above): on the nominal axes the probe grid reads the wheel
+// offset at the correction's points and nowhere else, so the 5 points suffice; what the pass leaves
+// comes from the identified split, not from the basis.
+TEST(WheelCorrection, TheProbeGridReadsTheOffsetAtItsKnots) {
+  for (int degree : {2, 3, 4}) {
+    SCOPED_TRACE("degree " + std::to_string(degree));
+    const Scene s = sceneOf(paperCase(), faceShape(degree), 1e3);
+    const SharpeningJob& job = s.job;
+    const WheelKnots knots = wheelKnots(job.setup, job.grid, std::max(job.grid.r.front(), job.rootRadius),
+                                        std::min(job.grid.r.back(), job.outerRadius)).value();
+    ASSERT_EQ(knots.R.size(), 5u);
+    // Each row of the run face is ground at one point's wheel radius, and only the offset's value
+    // there moves it (dt/d delta = -1, dt/d delta' = 0: Eq. 11 holds for any slope on the nominal axes).
+    const SharpeningSetup zero = withWheelDeviation(job.setup, knots, Eigen::VectorXd::Zero(5));
+    const GroundFace run = simulateGroundFace(zero, job.nominalAxes, job.grid).value();
+    for (int i = 0; i < job.grid.rows(); ++i)
+      for (int j = 0; j < job.grid.cols(); ++j) {
+        const EnvelopePoint& e = run.envelope[i * job.grid.cols() + j];
+        EXPECT_NEAR(e.wheelRadius, knots.R[job.grid.rows() - 1 - i], 1e-9) << i << ", " << j;  // mm
+        EXPECT_NEAR(e.dtdOffset, -1.0, 1e-9);
+        EXPECT_NEAR(e.dtdOffsetSlope, 0.0, 1e-9);  // mm per unit slope
+      }
+    // Dressing the true offset's values at the points, with the true error corrected exactly,
+    // leaves a face 10 times below the target (5.7e-6 to 5.9e-4 µm²).
+    Eigen::VectorXd atKnots(5);
+    for (int k = 0; k < 5; ++k) atKnots(k) = 1000 * s.truth.wheel.offset->value(knots.R[k]);
+    const double left = faceOn(withWheelDeviation(s.truth, knots, -atKnots), job.nominalAxes, job.grid).squaredNorm();
+    EXPECT_LT(left, 1e-3);
+    std::printf("[ figures  ] Tab. 1         degree %d: the true offset's values dressed, true axes: %.2e µm²\n", degree, left);
+  }
+}
 
 // With 1 µm of probe noise the face after the pass stays within the noise level between the
 // probe points too; noise alone moves neither the axes nor the wheel much.

@@ -49,10 +49,31 @@ struct JointResidual : Eigen::DenseFunctor<double> {
   Eigen::VectorXd axesPart(const Eigen::VectorXd& x) const { return PE * x.head(PE.cols()); }
   Eigen::VectorXd wheelPart(const Eigen::VectorXd& x) const { return PW * x.tail(PW.cols()); }
 
+  // The face at x without sensitivities: a trial step needs only the deviations.
   const GroundFace* faceAt(const Eigen::VectorXd& x) {
     return cache.at(x, [&](const Eigen::VectorXd& t) {
-      return simulateGroundFace(withWheelDeviation(setup, knots, wheelPart(t)), plusChange(run, coefficients, axesPart(t)), grid);
+      return simulateGroundFace(setupAt(t), axesAt(t), grid, Sensitivities::Skip);
     });
+  }
+  // The same face with its sensitivities (added to a copy: the same figures as simulating it with
+  // them), where the solver asks for the Jacobian and at the solution. Kept apart from the trial
+  // faces, so that the solution, when the last trial step was rejected, is not simulated again.
+  const GroundFace* sensitiveFaceAt(const Eigen::VectorXd& x) {
+    if (sensitive && sensitiveX.size() == x.size() && sensitiveX == x) return &*sensitive;
+    const GroundFace* f = faceAt(x);
+    if (!f) return nullptr;
+    GroundFace g = *f;
+    if (!addSensitivities(g, setupAt(x), axesAt(x))) return nullptr;
+    sensitive = std::move(g);
+    sensitiveX = x;
+    return &*sensitive;
+  }
+  // `face`, with its sensitivities, is the face at x.
+  void seed(const Eigen::VectorXd& x, const GroundFace& face) {
+    cache.lastX = x;
+    cache.lastFace = face;
+    sensitive = face;
+    sensitiveX = x;
   }
 
   int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& fvec) {
@@ -61,13 +82,19 @@ struct JointResidual : Eigen::DenseFunctor<double> {
   }
 
   int df(const Eigen::VectorXd& x, Eigen::MatrixXd& jac) {
-    const GroundFace* f = faceAt(x);
+    const GroundFace* f = sensitiveFaceAt(x);
     if (!f) return -1;  // never at an accepted iterate: those were all simulated
     jac.resize(values(), inputs());
     jac.leftCols(PE.cols()) = sensitivityMatrix(*f, coefficients).normal * PE;
     jac.rightCols(PW.cols()) = wheelOffsetSensitivity(*f, wheelBasis).normal * PW;
     return 0;
   }
+
+ private:
+  SharpeningSetup setupAt(const Eigen::VectorXd& x) const { return withWheelDeviation(setup, knots, wheelPart(x)); }
+  AxisPolynomials axesAt(const Eigen::VectorXd& x) const { return plusChange(run, coefficients, axesPart(x)); }
+  std::optional<GroundFace> sensitive;
+  Eigen::VectorXd sensitiveX;
 };
 
 // Which of the directions (singular values s, the data's components c along them) are used:
@@ -169,11 +196,18 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
   const Eigen::VectorXd d = flat(measured);
   const CubicSpline wheelBasis(knots.R, std::vector<double>(static_cast<size_t>(K), 0.0));
 
-  // The run face again, now with W = 0 in the model, so that it carries the partials to W (the
-  // face itself is runFace's: a zero offset grinds today's face).
-  auto start = simulateGroundFace(withWheelDeviation(setup, knots, Eigen::VectorXd::Zero(K)), run, grid);
-  if (!start) return start.error();
-  GroundFace current = *start;
+  // The run face with W = 0 in the model, so that it carries the partials to W: its envelope
+  // points are runFace's (a zero offset grinds today's face), given the sensitivities again.
+  GroundFace start = runFace;
+  const SharpeningSetup withoutDeviation = withWheelDeviation(setup, knots, Eigen::VectorXd::Zero(K));
+  if (runFace.atProbes()) {
+    auto f = simulateGroundFace(withoutDeviation, run, grid);
+    if (!f) return f.error();
+    start = std::move(f).value();
+  } else if (auto added = addSensitivities(start, withoutDeviation, run); !added) {
+    return added.error();
+  }
+  GroundFace current = start;
   a.summary.initialCost = (faceNormal(current) - d).squaredNorm();
 
   Eigen::VectorXd zE = Eigen::VectorXd::Zero(nb);  // E in the identifiable basis, machine steps
@@ -228,16 +262,13 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     theta.resize(VE.cols() + VW.cols());
     theta << VE.transpose() * zE, VW.transpose() * w;  // the estimate so far, in the directions decided here
     if (theta.size() == 0) {
-      current = *start;
+      current = start;
       zE.setZero();
       w.setZero();
       break;
     }
     JointResidual residual(setup, run, grid, cs, knots, wheelBasis, PE, PW, d);
-    if (round == 0) {
-      residual.cache.lastX = theta;
-      residual.cache.lastFace = *start;
-    }
+    if (round == 0) residual.seed(theta, start);
     Eigen::LevenbergMarquardt<JointResidual> lm(residual);
     lm.setFtol(o.solver.functionTolerance);
     lm.setXtol(o.solver.parameterTolerance);
@@ -259,7 +290,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
                              ? "failed: the solver refused its inputs."
                              : "failed: the face of the estimate cannot be simulated.";
       theta.setZero();
-      current = *start;
+      current = start;
       break;
     }
     int iterations = 0;
@@ -271,7 +302,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     a.summary.iterations += iterations;
     describeSolve(a.summary, status, residual.cache.unsolvable, o.solver, "neither an identified axis direction nor the wheel's profile");
     // theta is the best iterate: the solver only ever accepts steps that reduce the sum of squares.
-    const GroundFace* f = residual.faceAt(theta);
+    const GroundFace* f = residual.sensitiveFaceAt(theta);
     evaluations += residual.cache.evaluations;
     if (!f)
       return refuse("measured", "the identified machine error and wheel deviation leave a face that cannot be simulated.",

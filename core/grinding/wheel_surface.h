@@ -23,25 +23,37 @@ struct WheelSurface {
   // proposes to dress in addition (core/correction/wheel_correction.h). delta is their sum.
   std::optional<CubicSpline> added;
   bool hasOffset() const { return offset.has_value() || added.has_value(); }
-  // delta(R), delta'(R), delta''(R) of the sum, mm (zero for the conjugate wheel).
-  double value(double R) const { return (offset ? offset->value(R) : 0.0) + (added ? added->value(R) : 0.0); }
-  double slope(double R) const { return (offset ? offset->slope(R) : 0.0) + (added ? added->slope(R) : 0.0); }
-  double curvature(double R) const {
-    return (offset ? offset->curvature(R) : 0.0) + (added ? added->curvature(R) : 0.0);
+  // delta(R), delta'(R), delta''(R) of the sum, mm (zero for the conjugate wheel): each spline
+  // evaluated once.
+  CubicSpline::Point at(double R) const {
+    CubicSpline::Point p;
+    for (const std::optional<CubicSpline>* s : {&offset, &added})
+      if (*s) {
+        const CubicSpline::Point q = (*s)->at(R);
+        p.value += q.value, p.slope += q.slope, p.curvature += q.curvature;
+      }
+    return p;
   }
+  double value(double R) const { return at(R).value; }
+  double slope(double R) const { return at(R).slope; }
+  double curvature(double R) const { return at(R).curvature; }
 };
 
 // The offset's value and slope at R, with R's derivatives carried by the chain rule
 // (d delta = delta'(R) dR, d delta' = delta''(R) dR).
-inline double offsetValue(const WheelSurface& s, double R) { return s.value(R); }
-inline double offsetSlope(const WheelSurface& s, double R) { return s.slope(R); }
-template <class Der>
-Eigen::AutoDiffScalar<Der> offsetValue(const WheelSurface& s, const Eigen::AutoDiffScalar<Der>& R) {
-  return Eigen::AutoDiffScalar<Der>(s.value(R.value()), s.slope(R.value()) * R.derivatives());
+template <class T>
+struct OffsetAt {
+  T value, slope;
+};
+inline OffsetAt<double> offsetAt(const WheelSurface& s, double R) {
+  const CubicSpline::Point p = s.at(R);
+  return {p.value, p.slope};
 }
 template <class Der>
-Eigen::AutoDiffScalar<Der> offsetSlope(const WheelSurface& s, const Eigen::AutoDiffScalar<Der>& R) {
-  return Eigen::AutoDiffScalar<Der>(s.slope(R.value()), s.curvature(R.value()) * R.derivatives());
+OffsetAt<Eigen::AutoDiffScalar<Der>> offsetAt(const WheelSurface& s, const Eigen::AutoDiffScalar<Der>& R) {
+  const CubicSpline::Point p = s.at(R.value());
+  return {Eigen::AutoDiffScalar<Der>(p.value, p.slope * R.derivatives()),
+          Eigen::AutoDiffScalar<Der>(p.slope, p.curvature * R.derivatives())};
 }
 
 // The wheel's meridian at one conjugate point: the profile point (R, Z) and a normal (nR, nZ),
@@ -65,8 +77,9 @@ WheelMeridian<T> wheelMeridian(const WheelSurface& wheel, const WheelContact<T>&
                                const T& slopeShift) {
   WheelMeridian<T> m{c.R(), c.Z(), c.nRadial(), c.n.z()};
   if (!wheel.hasOffset()) return m;
-  const T delta = offsetValue(wheel, m.R) + valueShift;
-  const T slope = offsetSlope(wheel, m.R) + slopeShift;
+  const OffsetAt<T> o = offsetAt(wheel, m.R);
+  const T delta = o.value + valueShift;
+  const T slope = o.slope + slopeShift;
   const T nR = m.nR, nZ = m.nZ;
   m.R = m.R - delta * nR;
   m.Z = m.Z - delta * nZ;

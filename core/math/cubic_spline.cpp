@@ -42,7 +42,7 @@ std::size_t CubicSpline::segment(double t) const {
   return std::min(std::max<std::size_t>(i, 1), x_.size() - 1) - 1;
 }
 
-double CubicSpline::evaluate(double t, int derivative) const {
+CubicSpline::Point CubicSpline::at(double t) const {
   const std::size_t n = x_.size();
   // Beyond the ends: the tangent line (m = 0 there).
   if (t <= x_.front() || t >= x_.back()) {
@@ -51,34 +51,44 @@ double CubicSpline::evaluate(double t, int derivative) const {
     const double h = x_[b] - x_[a];
     const double slopeAtEnd = left ? (y_[b] - y_[a]) / h - h * (2 * m_(a) + m_(b)) / 6
                                    : (y_[b] - y_[a]) / h + h * (m_(a) + 2 * m_(b)) / 6;
-    if (derivative == 2) return 0.0;
-    if (derivative == 1) return slopeAtEnd;
     const double xe = left ? x_.front() : x_.back(), ye = left ? y_.front() : y_.back();
-    return ye + slopeAtEnd * (t - xe);
+    return {ye + slopeAtEnd * (t - xe), slopeAtEnd, 0.0};
   }
   const std::size_t i = segment(t);
   const double h = x_[i + 1] - x_[i];
   const double a = (x_[i + 1] - t) / h, b = (t - x_[i]) / h;
-  if (derivative == 2) return a * m_(i) + b * m_(i + 1);
-  if (derivative == 1)
-    return (y_[i + 1] - y_[i]) / h + (-(3 * a * a - 1) * m_(i) + (3 * b * b - 1) * m_(i + 1)) * (h / 6);
-  return a * y_[i] + b * y_[i + 1] + ((a * a * a - a) * m_(i) + (b * b * b - b) * m_(i + 1)) * (h * h / 6);
+  return {a * y_[i] + b * y_[i + 1] + ((a * a * a - a) * m_(i) + (b * b * b - b) * m_(i + 1)) * (h * h / 6),
+          (y_[i + 1] - y_[i]) / h + (-(3 * a * a - 1) * m_(i) + (3 * b * b - 1) * m_(i + 1)) * (h / 6),
+          a * m_(i) + b * m_(i + 1)};
 }
 
+// The same formulas with y the unit vectors: the second derivatives of the j-th cardinal
+// function are s_.col(j), so the weights of segment i are rows i and i + 1 of s_.
 CubicSpline::Basis CubicSpline::basis(double t) const {
   const int n = static_cast<int>(x_.size());
   Basis out{Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
-  // The spline of each unit knot vector, evaluated at t.
-  for (int j = 0; j < n; ++j) {
-    std::vector<double> unit(n, 0.0);
-    unit[j] = 1.0;
-    CubicSpline e;
-    e.x_ = x_;
-    e.y_ = std::move(unit);
-    e.m_ = s_.col(j);
-    out.B(j) = e.value(t);
-    out.dB(j) = e.slope(t);
+  if (t <= x_.front() || t >= x_.back()) {
+    const bool left = t <= x_.front();
+    const int a = left ? 0 : n - 2, b = a + 1, e = left ? 0 : n - 1;
+    const double h = x_[b] - x_[a];
+    // slopeAtEnd per knot value, then the tangent line from the end knot.
+    out.dB = left ? Eigen::VectorXd(-h / 6 * (2 * s_.row(a) + s_.row(b)).transpose())
+                  : Eigen::VectorXd(h / 6 * (s_.row(a) + 2 * s_.row(b)).transpose());
+    out.dB(a) -= 1 / h;
+    out.dB(b) += 1 / h;
+    out.B = out.dB * (t - x_[e]);
+    out.B(e) += 1;
+    return out;
   }
+  const int i = static_cast<int>(segment(t));
+  const double h = x_[i + 1] - x_[i];
+  const double a = (x_[i + 1] - t) / h, b = (t - x_[i]) / h;
+  out.B = ((a * a * a - a) * s_.row(i) + (b * b * b - b) * s_.row(i + 1)).transpose() * (h * h / 6);
+  out.B(i) += a;
+  out.B(i + 1) += b;
+  out.dB = (-(3 * a * a - 1) * s_.row(i) + (3 * b * b - 1) * s_.row(i + 1)).transpose() * (h / 6);
+  out.dB(i) -= 1 / h;
+  out.dB(i + 1) += 1 / h;
   return out;
 }
 

@@ -27,9 +27,13 @@ class CubicSpline {
   bool empty() const { return x_.empty(); }
 
   // The value, the first and the second derivative at t.
-  double value(double t) const { return evaluate(t, 0); }
-  double slope(double t) const { return evaluate(t, 1); }
-  double curvature(double t) const { return evaluate(t, 2); }
+  struct Point {
+    double value = 0, slope = 0, curvature = 0;
+  };
+  Point at(double t) const;
+  double value(double t) const { return at(t).value; }
+  double slope(double t) const { return at(t).slope; }
+  double curvature(double t) const { return at(t).curvature; }
 
   // Weights of the knot values: value(t) = B.dot(y), slope(t) = dB.dot(y).
   struct Basis {
@@ -43,7 +47,6 @@ class CubicSpline {
   Eigen::MatrixXd s_;  // m = s y: the second derivatives per knot value (for `basis`)
 
   std::size_t segment(double t) const;
-  double evaluate(double t, int derivative) const;
 };
 
 }  // namespace hobsharp
