@@ -14,30 +14,63 @@
 namespace hobsharp {
 namespace {
 
-// Independent variables of the full derivative: t, u, w, five axis values, five axis rates, and
-// with a wheel profile offset the shifts of the offset's value and slope (wheel_surface.h).
-constexpr int kVars = 3 + 2 * kAxisCount;
-constexpr int kVarsWithOffset = kVars + 2;
-
-// The wheel surface point is (R, Z) of the dressed wheel (wheel_surface.h) at the conjugate point
-// (u, w); for the conjugate wheel (no offset) these are c.R(), c.Z() and the normal n_t itself.
+// The wheel's side of Eqs. 5-6 at the face coordinates (u, w) of its contact line: the equation
+// of meshing and the dressed meridian there (for the conjugate wheel c.R(), c.Z() and n_t itself).
+// It depends on u and w (and the offset's shifts) only, so its derivatives need those directions alone.
 template <class T>
-Eigen::Matrix<T, 4, 1> residual(const SharpeningSetup& s, const GridPoint& g, const T& t, const T& u,
-                                const T& w, const AxisState<T>& axes, const T& offsetShift = T(0),
-                                const T& slopeShift = T(0)) {
-  using std::sqrt;
-  const Vec3<T> G = g.p.cast<T>() + g.n.cast<T>() * t;
-  const WheelFramePoint<T> h = hobPointInWheelFrame(G, axes, s.machine, s.psiC());
+struct WheelSide {
+  T meshing;
+  WheelMeridian<T> m;
+};
+
+template <class T>
+WheelSide<T> wheelSide(const SharpeningSetup& s, const T& u, const T& w, const T& offsetShift = T(0),
+                       const T& slopeShift = T(0)) {
   const WheelContact<T> c =
       wheelContact(s.face, s.universal, s.normalSign, s.universal.centerDistance.coefficient(0), u, w);
-  const WheelMeridian<T> m = wheelMeridian(s.wheel, c, offsetShift, slopeShift);
+  return {c.meshing, wheelMeridian(s.wheel, c, offsetShift, slopeShift)};
+}
+
+// The hob's side: q and q-dot (Eq. 7) of the point G = P + t n on the normal line, with the axes
+// at the motion phi. It depends on t and the axes only.
+template <class T>
+WheelFramePoint<T> hobSide(const SharpeningSetup& s, const GridPoint& g, const T& t, const AxisState<T>& axes) {
+  const Vec3<T> G = g.p.cast<T>() + g.n.cast<T>() * t;
+  return hobPointInWheelFrame(G, axes, s.machine, s.psiC());
+}
+
+// Eqs. 5, 6 and 11 from the two sides.
+template <class T>
+Eigen::Matrix<T, 4, 1> envelopeEquations(const WheelSide<T>& wheel, const WheelFramePoint<T>& h) {
+  using std::sqrt;
+  const WheelMeridian<T>& m = wheel.m;
   const T rho = sqrt(h.q.x() * h.q.x() + h.q.y() * h.q.y());
   Eigen::Matrix<T, 4, 1> F;
-  F(0) = c.meshing;
+  F(0) = wheel.meshing;
   F(1) = rho - m.R;
   F(2) = h.q.z() - m.Z;
   F(3) = m.nR * (h.q.x() * h.qDot.x() + h.q.y() * h.qDot.y()) / rho + m.nZ * h.qDot.z();
   return F;
+}
+
+// The two sides, differentiated each in its own directions, carried into the N directions of the
+// whole: the hob's from direction 0 on, the wheel's from direction `wheelFirst` on.
+template <int N, int H, int W>
+Eigen::Matrix<Dual<N>, 4, 1> joinedEquations(const WheelSide<Dual<W>>& wheel, const WheelFramePoint<Dual<H>>& h,
+                                             int wheelFirst) {
+  static_assert(H + W <= N, "the sides' directions must fit the whole's");
+  const auto fromHob = [](const Dual<H>& x) { return embedded<N>(x, 0); };
+  const auto fromWheel = [wheelFirst](const Dual<W>& x) { return embedded<N>(x, wheelFirst); };
+  const WheelFramePoint<Dual<N>> hN{h.q.unaryExpr(fromHob), h.qDot.unaryExpr(fromHob)};
+  const WheelSide<Dual<N>> wN{fromWheel(wheel.meshing), {fromWheel(wheel.m.R), fromWheel(wheel.m.Z),
+                                                          fromWheel(wheel.m.nR), fromWheel(wheel.m.nZ)}};
+  return envelopeEquations(wN, hN);
+}
+
+template <class T>
+Eigen::Matrix<T, 4, 1> residual(const SharpeningSetup& s, const GridPoint& g, const T& t, const T& u, const T& w,
+                                const AxisState<T>& axes) {
+  return envelopeEquations(wheelSide(s, u, w), hobSide(s, g, t, axes));
 }
 
 struct Linearisation {
@@ -45,18 +78,19 @@ struct Linearisation {
   Eigen::Matrix4d J;  // d F / d(t, phi, u, w)
 };
 
-// For Newton's method: four directions, phi entering through the axis values and rates.
+// For Newton's method: four directions, the hob's side in (t, phi), phi entering through the axis
+// values and rates, and the wheel's side in (u, w).
 Linearisation linearise(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
                         const EnvelopeGuess& v) {
-  using D4 = Dual<4>;
-  AxisState<D4> state;
+  using D2 = Dual<2>;
+  AxisState<D2> state;
   for (int i = 0; i < kAxisCount; ++i) {
     const PolynomialValue p = axes.axis[i].at(v.phi);
-    state.value[i] = seeded<4>(p.value, Eigen::Vector4d(0, p.d1, 0, 0));
-    state.rate[i] = seeded<4>(p.d1, Eigen::Vector4d(0, p.d2, 0, 0));
+    state.value[i] = seeded<2>(p.value, Eigen::Vector2d(0, p.d1));
+    state.rate[i] = seeded<2>(p.d1, Eigen::Vector2d(0, p.d2));
   }
-  const Eigen::Matrix<D4, 4, 1> F =
-      residual<D4>(s, g, variable<4>(v.t, 0), variable<4>(v.u, 2), variable<4>(v.w, 3), state);
+  const Eigen::Matrix<Dual<4>, 4, 1> F = joinedEquations<4>(
+      wheelSide<D2>(s, variable<2>(v.u, 0), variable<2>(v.w, 1)), hobSide<D2>(s, g, variable<2>(v.t, 0), state), 2);
   Linearisation L;
   for (int r = 0; r < 4; ++r) {
     L.F(r) = F(r).value();
@@ -73,34 +107,40 @@ struct FullLinearisation {
   Eigen::Vector4d dSlope = Eigen::Vector4d::Zero();    // d F / d(offset slope), with an offset
 };
 
-template <int N>
+// The hob's side in t, the five axis values and the five rates (directions 0 to 10); the wheel's
+// side in u, w and, with a wheel profile offset (W = 4), the shifts of the offset's value and
+// slope (wheel_surface.h), from direction 11 on.
+constexpr int kHobVars = 1 + 2 * kAxisCount;
+
+template <int W>
 FullLinearisation lineariseFully(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
                                  const EnvelopeGuess& v) {
-  using D = Dual<N>;
-  AxisState<D> state;
+  constexpr int H = kHobVars, N = H + W;
+  AxisState<Dual<H>> state;
   std::array<PolynomialValue, kAxisCount> p;
   for (int i = 0; i < kAxisCount; ++i) {
     p[i] = axes.axis[i].at(v.phi);
-    state.value[i] = variable<N>(p[i].value, 3 + i);
-    state.rate[i] = variable<N>(p[i].d1, 3 + kAxisCount + i);
+    state.value[i] = variable<H>(p[i].value, 1 + i);
+    state.rate[i] = variable<H>(p[i].d1, 1 + kAxisCount + i);
   }
-  const bool offset = N == kVarsWithOffset;
-  const D offsetShift = offset ? variable<N>(0.0, kVars) : D(0.0);
-  const D slopeShift = offset ? variable<N>(0.0, kVars + 1) : D(0.0);
-  const Eigen::Matrix<D, 4, 1> F = residual<D>(s, g, variable<N>(v.t, 0), variable<N>(v.u, 1),
-                                               variable<N>(v.w, 2), state, offsetShift, slopeShift);
+  const bool offset = W == 4;
+  const Dual<W> offsetShift = offset ? variable<W>(0.0, 2) : Dual<W>(0.0);
+  const Dual<W> slopeShift = offset ? variable<W>(0.0, 3) : Dual<W>(0.0);
+  const Eigen::Matrix<Dual<N>, 4, 1> F = joinedEquations<N>(
+      wheelSide<Dual<W>>(s, variable<W>(v.u, 0), variable<W>(v.w, 1), offsetShift, slopeShift),
+      hobSide<Dual<H>>(s, g, variable<H>(v.t, 0), state), H);
   FullLinearisation L;
   for (int r = 0; r < 4; ++r) {
     const auto& d = F(r).derivatives();
-    if (offset) L.dOffset(r) = d(kVars), L.dSlope(r) = d(kVars + 1);
+    if (offset) L.dOffset(r) = d(H + 2), L.dSlope(r) = d(H + 3);
     L.J(r, 0) = d(0);
-    L.J(r, 2) = d(1);
-    L.J(r, 3) = d(2);
+    L.J(r, 2) = d(H);
+    L.J(r, 3) = d(H + 1);
     double dphi = 0;
     for (int i = 0; i < kAxisCount; ++i) {
-      L.dValue(r, i) = d(3 + i);
-      L.dRate(r, i) = d(3 + kAxisCount + i);
-      dphi += d(3 + i) * p[i].d1 + d(3 + kAxisCount + i) * p[i].d2;  // chain rule through phi
+      L.dValue(r, i) = d(1 + i);
+      L.dRate(r, i) = d(1 + kAxisCount + i);
+      dphi += d(1 + i) * p[i].d1 + d(1 + kAxisCount + i) * p[i].d2;  // chain rule through phi
     }
     L.J(r, 1) = dphi;
   }
@@ -171,9 +211,8 @@ bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes,
   // Linearise once more at the solution (Eqs. 13-15): dt by each axis value and rate, by
   // the implicit-function theorem on the four envelope equations.
   const EnvelopeGuess v{e.t, e.phi, e.u, e.w};
-  const FullLinearisation S = setup.wheel.hasOffset()
-                                  ? lineariseFully<kVarsWithOffset>(setup, axes, point, v)
-                                  : lineariseFully<kVars>(setup, axes, point, v);
+  const FullLinearisation S = setup.wheel.hasOffset() ? lineariseFully<4>(setup, axes, point, v)
+                                                      : lineariseFully<2>(setup, axes, point, v);
   const Eigen::Vector4d lambda = S.J.transpose().partialPivLu().solve(Eigen::Vector4d::UnitX());
   if (!lambda.allFinite()) return false;
   for (int i = 0; i < kAxisCount; ++i) {

@@ -22,4 +22,13 @@ Dual<N> seeded(double v, const Eigen::Matrix<double, N, 1>& derivatives) {
   return Dual<N>(v, derivatives);
 }
 
+// x, differentiated in M directions, as a function of N >= M directions: its directions are
+// first, first + 1, ..., first + M - 1 of the N, and it does not depend on the others.
+template <int N, int M>
+Dual<N> embedded(const Dual<M>& x, int first) {
+  Eigen::Matrix<double, N, 1> d = Eigen::Matrix<double, N, 1>::Zero();
+  d.template segment<M>(first) = x.derivatives();
+  return Dual<N>(x.value(), d);
+}
+
 }  // namespace hobsharp
