@@ -39,6 +39,29 @@ TEST(SolverOptions, DefaultEnvelopeOptionsAreTheDefaultSolve) {
   EXPECT_GT(totalIterations(*implicit), 2 * static_cast<int>(implicit->envelope.size()));
 }
 
+// The solve may end on a chord step (the last Newton step's LU, envelope.cpp) where quadratic
+// convergence predicts the next step below the tolerance. Its point must be where Newton's method
+// ends: started there, one full Newton step, below the tolerance, moves it no further.
+TEST(SolverOptions, AnEnvelopeSolveEndsWhereNewtonsMethodWould) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials run = runWithError(job.nominalAxes);
+  auto f = simulateGroundFace(job.setup, run, job.grid, Sensitivities::Skip);
+  ASSERT_TRUE(f.ok());
+  const EnvelopeSolverOptions o;
+  for (size_t k = 0; k < f->envelope.size(); ++k) {
+    const EnvelopePoint& e = f->envelope[k];
+    auto again = solveEnvelopePoint(job.setup, run, f->points[k], EnvelopeGuess{e.t, e.phi, e.u, e.w},
+                                    Sensitivities::Skip);
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(again->iterations, 1) << "grid point " << k;
+    // Within the step tolerance, each unknown in the tolerance's own measure (mm, motion weighted).
+    EXPECT_LT(std::abs(again->t - e.t) + std::abs(again->u - e.u) +
+                  o.helicalMotionWeight * (std::abs(again->phi - e.phi) + std::abs(again->w - e.w)),
+              o.stepTolerance)
+        << "grid point " << k;
+  }
+}
+
 TEST(SolverOptions, EnvelopeIterationLimitAndStepLimitsAreHonoured) {
   const SharpeningJob job = jobOf(paperCase());
   const AxisPolynomials run = runWithError(job.nominalAxes);

@@ -99,6 +99,18 @@ Linearisation linearise(const SharpeningSetup& s, const AxisPolynomials& axes, c
   return L;
 }
 
+// The residual alone, for a step with a Jacobian already factorised.
+Eigen::Vector4d residualAt(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
+                           const EnvelopeGuess& v) {
+  AxisState<double> state;
+  for (int i = 0; i < kAxisCount; ++i) {
+    const PolynomialValue p = axes.axis[i].at(v.phi);
+    state.value[i] = p.value;
+    state.rate[i] = p.d1;
+  }
+  return residual<double>(s, g, v.t, v.u, v.w, state);
+}
+
 // At the solution, with respect to everything: (t, u, w), the axis values and the axis rates.
 struct FullLinearisation {
   Eigen::Matrix4d J;                                   // d F / d(t, phi, u, w)
@@ -231,10 +243,43 @@ bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes,
 Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
                                           const GridPoint& point, const EnvelopeGuess& guess,
                                           Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
+  const auto fail = [&point] {
+    return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
+                              ": the wheel does not envelop the tooth face there (Eq. 11 has no "
+                              "solution). Check the axis polynomials and the grid.",
+                  ErrorCode::Unsolvable);
+  };
   EnvelopeGuess v = guess;
   const bool helical = setup.face.helical();
   const double motionLimit = helical ? o.helicalMotionStepLimit : o.straightMotionStepLimit;
   const double motionWeight = helical ? o.helicalMotionWeight : o.straightMotionWeight;
+  const auto sizeOf = [motionWeight](const Eigen::Vector4d& step) {
+    return std::abs(step(0)) + std::abs(step(2)) + (std::abs(step(1)) + std::abs(step(3))) * motionWeight;
+  };
+  const auto take = [&v](const Eigen::Vector4d& step) {
+    v.t -= step(0);
+    v.phi -= step(1);
+    v.u -= step(2);
+    v.w -= step(3);
+  };
+  const auto converged = [&](int it) -> Outcome<EnvelopePoint> {
+    EnvelopePoint e;
+    e.t = v.t;
+    e.phi = v.phi;
+    e.u = v.u;
+    e.w = v.w;
+    e.iterations = it;
+    if (setup.wheel.hasOffset() && pastEnvelopeEdge(setup, axes, point, v, o.edgeStep(helical)))
+      return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
+                               ": the dressed wheel's profile offset curves too sharply there, so the "
+                               "wheel no longer envelops the face (Eq. 11 holds past the envelope's "
+                               "edge). Check wheel.profileOffset or wheel.measuredProfile.",
+                    ErrorCode::Unsolvable);
+    if (sensitivities == Sensitivities::Skip) return e;
+    if (!addSensitivities(setup, axes, point, e)) return fail();
+    return e;
+  };
+  double lastSize = 0;  // the last full step's size; 0 after a shortened one
   for (int it = 1; it <= o.maxIterations; ++it) {
     const Linearisation L = linearise(setup, axes, point, v);
     if (!L.F.allFinite() || !L.J.allFinite()) break;
@@ -244,34 +289,29 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
     const double scale = std::max({std::abs(step(0)) / o.offsetStepLimit, std::abs(step(1)) / motionLimit,
                                    std::abs(step(2)) / o.lineStepLimit, std::abs(step(3)) / motionLimit, 1.0});
     step /= scale;
-    v.t -= step(0);
-    v.phi -= step(1);
-    v.u -= step(2);
-    v.w -= step(3);
-    const double size =
-        std::abs(step(0)) + std::abs(step(2)) + (std::abs(step(1)) + std::abs(step(3))) * motionWeight;
-    if (scale == 1.0 && size < o.stepTolerance) {
-      EnvelopePoint e;
-      e.t = v.t;
-      e.phi = v.phi;
-      e.u = v.u;
-      e.w = v.w;
-      e.iterations = it;
-      if (setup.wheel.hasOffset() && pastEnvelopeEdge(setup, axes, point, v, o.edgeStep(helical)))
-        return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
-                                 ": the dressed wheel's profile offset curves too sharply there, so the "
-                                 "wheel no longer envelops the face (Eq. 11 holds past the envelope's "
-                                 "edge). Check wheel.profileOffset or wheel.measuredProfile.",
-                      ErrorCode::Unsolvable);
-      if (sensitivities == Sensitivities::Skip) return e;
-      if (!addSensitivities(setup, axes, point, e)) break;
-      return e;
+    take(step);
+    const double size = sizeOf(step);
+    if (scale == 1.0 && size < o.stepTolerance) return converged(it);
+    // Newton's method converging quadratically: the contraction theta = size / lastSize squares
+    // from step to step, so the next step would be about size theta^2 (Deuflhard's estimate).
+    // Where that is below the tolerance, the next step is taken with this step's LU (a chord step:
+    // the residual alone, no new Jacobian), and the solve ends when it is below the tolerance, as
+    // a Newton step would be: the two differ by a share of the order of this step's size.
+    const bool full = scale == 1.0;
+    if (full && lastSize > 0 && size < lastSize && size * (size / lastSize) * (size / lastSize) < o.stepTolerance &&
+        it < o.maxIterations) {
+      ++it;
+      const Eigen::Vector4d F = residualAt(setup, axes, point, v);
+      const Eigen::Vector4d chord = lu.solve(F);
+      if (!chord.allFinite()) break;
+      take(chord);
+      if (sizeOf(chord) < o.stepTolerance) return converged(it);
+      lastSize = sizeOf(chord);
+      continue;
     }
+    lastSize = full ? size : 0;
   }
-  return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
-                           ": the wheel does not envelop the tooth face there (Eq. 11 has no "
-                           "solution). Check the axis polynomials and the grid.",
-                ErrorCode::Unsolvable);
+  return fail();
 }
 
 }  // namespace hobsharp
