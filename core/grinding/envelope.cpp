@@ -122,25 +122,41 @@ struct FullLinearisation {
 // The hob's side in t, the five axis values and the five rates (directions 0 to 10); the wheel's
 // side in u, w and, with a wheel profile offset (W = 4), the shifts of the offset's value and
 // slope (wheel_surface.h), from direction 11 on.
+//
+// The rates need no directions of their own: q-dot is dq/dphi = sum_i rate_i dq/d(value_i) (Eq. 7
+// differentiated along the motion; machine_kinematics.h), so d q-dot / d rate_i = dq / d value_i,
+// which the value directions give. The hob's side is differentiated in t and the values alone.
 constexpr int kHobVars = 1 + 2 * kAxisCount;
+constexpr int kHobDifferentiated = 1 + kAxisCount;
+
+WheelFramePoint<Dual<kHobVars>> hobSideFully(const SharpeningSetup& s, const GridPoint& g, double t,
+                                             const std::array<PolynomialValue, kAxisCount>& p) {
+  constexpr int H = kHobDifferentiated;
+  AxisState<Dual<H>> state;
+  for (int i = 0; i < kAxisCount; ++i) {
+    state.value[i] = variable<H>(p[i].value, 1 + i);
+    state.rate[i] = Dual<H>(p[i].d1);
+  }
+  const WheelFramePoint<Dual<H>> h = hobSide<Dual<H>>(s, g, variable<H>(t, 0), state);
+  WheelFramePoint<Dual<kHobVars>> full{h.q.unaryExpr([](const Dual<H>& x) { return embedded<kHobVars>(x, 0); }),
+                                       h.qDot.unaryExpr([](const Dual<H>& x) { return embedded<kHobVars>(x, 0); })};
+  for (int k = 0; k < 3; ++k)
+    full.qDot(k).derivatives().template segment<kAxisCount>(H) = h.q(k).derivatives().template segment<kAxisCount>(1);
+  return full;
+}
 
 template <int W>
 FullLinearisation lineariseFully(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
                                  const EnvelopeGuess& v) {
   constexpr int H = kHobVars, N = H + W;
-  AxisState<Dual<H>> state;
   std::array<PolynomialValue, kAxisCount> p;
-  for (int i = 0; i < kAxisCount; ++i) {
-    p[i] = axes.axis[i].at(v.phi);
-    state.value[i] = variable<H>(p[i].value, 1 + i);
-    state.rate[i] = variable<H>(p[i].d1, 1 + kAxisCount + i);
-  }
+  for (int i = 0; i < kAxisCount; ++i) p[i] = axes.axis[i].at(v.phi);
   const bool offset = W == 4;
   const Dual<W> offsetShift = offset ? variable<W>(0.0, 2) : Dual<W>(0.0);
   const Dual<W> slopeShift = offset ? variable<W>(0.0, 3) : Dual<W>(0.0);
   const Eigen::Matrix<Dual<N>, 4, 1> F = joinedEquations<N>(
       wheelSide<Dual<W>>(s, variable<W>(v.u, 0), variable<W>(v.w, 1), offsetShift, slopeShift),
-      hobSide<Dual<H>>(s, g, variable<H>(v.t, 0), state), H);
+      hobSideFully(s, g, v.t, p), H);
   FullLinearisation L;
   for (int r = 0; r < 4; ++r) {
     const auto& d = F(r).derivatives();
