@@ -14,6 +14,19 @@
 namespace hobsharp {
 namespace {
 
+// One envelope point's equations: the setup, the axes, the grid point, and the cosines and sines
+// of the setup's fixed angles (phi_1, gamma_m, eta of Eq. 3; psi_c of Eq. 7), formed once for the
+// point rather than at every Newton step.
+struct PointEquations {
+  PointEquations(const SharpeningSetup& setup, const AxisPolynomials& a, const GridPoint& point)
+      : s(setup), axes(a), g(point), contact(contactRotations(setup.universal)), psiC(cosSin(setup.psiC())) {}
+  const SharpeningSetup& s;
+  const AxisPolynomials& axes;
+  const GridPoint& g;
+  ContactRotations contact;
+  CosSin<double> psiC;
+};
+
 // The wheel's side of Eqs. 5-6 at the face coordinates (u, w) of its contact line: the equation
 // of meshing and the dressed meridian there (for the conjugate wheel c.R(), c.Z() and n_t itself).
 // It depends on u and w (and the offset's shifts) only, so its derivatives need those directions alone.
@@ -24,19 +37,20 @@ struct WheelSide {
 };
 
 template <class T>
-WheelSide<T> wheelSide(const SharpeningSetup& s, const T& u, const T& w, const T& offsetShift = T(0),
+WheelSide<T> wheelSide(const PointEquations& q, const T& u, const T& w, const T& offsetShift = T(0),
                        const T& slopeShift = T(0)) {
-  const WheelContact<T> c =
-      wheelContact(s.face, s.universal, s.normalSign, s.universal.centerDistance.coefficient(0), u, w);
+  const SharpeningSetup& s = q.s;
+  const WheelContact<T> c = wheelContact(s.face, s.universal, q.contact, s.normalSign,
+                                         s.universal.centerDistance.coefficient(0), u, w);
   return {c.meshing, wheelMeridian(s.wheel, c, offsetShift, slopeShift)};
 }
 
 // The hob's side: q and q-dot (Eq. 7) of the point G = P + t n on the normal line, with the axes
 // at the motion phi. It depends on t and the axes only.
 template <class T>
-WheelFramePoint<T> hobSide(const SharpeningSetup& s, const GridPoint& g, const T& t, const AxisState<T>& axes) {
-  const Vec3<T> G = g.p.cast<T>() + g.n.cast<T>() * t;
-  return hobPointInWheelFrame(G, axes, s.machine, s.psiC());
+WheelFramePoint<T> hobSide(const PointEquations& q, const T& t, const AxisState<T>& axes) {
+  const Vec3<T> G = q.g.p.cast<T>() + q.g.n.cast<T>() * t;
+  return hobPointInWheelFrame(G, axes, q.s.machine, q.psiC);
 }
 
 // Eqs. 5, 6 and 11 from the two sides.
@@ -68,9 +82,9 @@ Eigen::Matrix<Dual<N>, 4, 1> joinedEquations(const WheelSide<Dual<W>>& wheel, co
 }
 
 template <class T>
-Eigen::Matrix<T, 4, 1> residual(const SharpeningSetup& s, const GridPoint& g, const T& t, const T& u, const T& w,
+Eigen::Matrix<T, 4, 1> residual(const PointEquations& q, const T& t, const T& u, const T& w,
                                 const AxisState<T>& axes) {
-  return envelopeEquations(wheelSide(s, u, w), hobSide(s, g, t, axes));
+  return envelopeEquations(wheelSide(q, u, w), hobSide(q, t, axes));
 }
 
 struct Linearisation {
@@ -80,17 +94,16 @@ struct Linearisation {
 
 // For Newton's method: four directions, the hob's side in (t, phi), phi entering through the axis
 // values and rates, and the wheel's side in (u, w).
-Linearisation linearise(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
-                        const EnvelopeGuess& v) {
+Linearisation linearise(const PointEquations& q, const EnvelopeGuess& v) {
   using D2 = Dual<2>;
   AxisState<D2> state;
   for (int i = 0; i < kAxisCount; ++i) {
-    const PolynomialValue p = axes.axis[i].at(v.phi);
+    const PolynomialValue p = q.axes.axis[i].at(v.phi);
     state.value[i] = seeded<2>(p.value, Eigen::Vector2d(0, p.d1));
     state.rate[i] = seeded<2>(p.d1, Eigen::Vector2d(0, p.d2));
   }
   const Eigen::Matrix<Dual<4>, 4, 1> F = joinedEquations<4>(
-      wheelSide<D2>(s, variable<2>(v.u, 0), variable<2>(v.w, 1)), hobSide<D2>(s, g, variable<2>(v.t, 0), state), 2);
+      wheelSide<D2>(q, variable<2>(v.u, 0), variable<2>(v.w, 1)), hobSide<D2>(q, variable<2>(v.t, 0), state), 2);
   Linearisation L;
   for (int r = 0; r < 4; ++r) {
     L.F(r) = F(r).value();
@@ -100,15 +113,14 @@ Linearisation linearise(const SharpeningSetup& s, const AxisPolynomials& axes, c
 }
 
 // The residual alone, for a step with a Jacobian already factorised.
-Eigen::Vector4d residualAt(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
-                           const EnvelopeGuess& v) {
+Eigen::Vector4d residualAt(const PointEquations& q, const EnvelopeGuess& v) {
   AxisState<double> state;
   for (int i = 0; i < kAxisCount; ++i) {
-    const PolynomialValue p = axes.axis[i].at(v.phi);
+    const PolynomialValue p = q.axes.axis[i].at(v.phi);
     state.value[i] = p.value;
     state.rate[i] = p.d1;
   }
-  return residual<double>(s, g, v.t, v.u, v.w, state);
+  return residual<double>(q, v.t, v.u, v.w, state);
 }
 
 // At the solution, with respect to everything: (t, u, w), the axis values and the axis rates.
@@ -129,7 +141,7 @@ struct FullLinearisation {
 constexpr int kHobVars = 1 + 2 * kAxisCount;
 constexpr int kHobDifferentiated = 1 + kAxisCount;
 
-WheelFramePoint<Dual<kHobVars>> hobSideFully(const SharpeningSetup& s, const GridPoint& g, double t,
+WheelFramePoint<Dual<kHobVars>> hobSideFully(const PointEquations& q, double t,
                                              const std::array<PolynomialValue, kAxisCount>& p) {
   constexpr int H = kHobDifferentiated;
   AxisState<Dual<H>> state;
@@ -137,7 +149,7 @@ WheelFramePoint<Dual<kHobVars>> hobSideFully(const SharpeningSetup& s, const Gri
     state.value[i] = variable<H>(p[i].value, 1 + i);
     state.rate[i] = Dual<H>(p[i].d1);
   }
-  const WheelFramePoint<Dual<H>> h = hobSide<Dual<H>>(s, g, variable<H>(t, 0), state);
+  const WheelFramePoint<Dual<H>> h = hobSide<Dual<H>>(q, variable<H>(t, 0), state);
   WheelFramePoint<Dual<kHobVars>> full{h.q.unaryExpr([](const Dual<H>& x) { return embedded<kHobVars>(x, 0); }),
                                        h.qDot.unaryExpr([](const Dual<H>& x) { return embedded<kHobVars>(x, 0); })};
   for (int k = 0; k < 3; ++k)
@@ -146,17 +158,16 @@ WheelFramePoint<Dual<kHobVars>> hobSideFully(const SharpeningSetup& s, const Gri
 }
 
 template <int W>
-FullLinearisation lineariseFully(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
-                                 const EnvelopeGuess& v) {
+FullLinearisation lineariseFully(const PointEquations& q, const EnvelopeGuess& v) {
   constexpr int H = kHobVars, N = H + W;
   std::array<PolynomialValue, kAxisCount> p;
-  for (int i = 0; i < kAxisCount; ++i) p[i] = axes.axis[i].at(v.phi);
+  for (int i = 0; i < kAxisCount; ++i) p[i] = q.axes.axis[i].at(v.phi);
   const bool offset = W == 4;
   const Dual<W> offsetShift = offset ? variable<W>(0.0, 2) : Dual<W>(0.0);
   const Dual<W> slopeShift = offset ? variable<W>(0.0, 3) : Dual<W>(0.0);
   const Eigen::Matrix<Dual<N>, 4, 1> F = joinedEquations<N>(
-      wheelSide<Dual<W>>(s, variable<W>(v.u, 0), variable<W>(v.w, 1), offsetShift, slopeShift),
-      hobSideFully(s, g, v.t, p), H);
+      wheelSide<Dual<W>>(q, variable<W>(v.u, 0), variable<W>(v.w, 1), offsetShift, slopeShift),
+      hobSideFully(q, v.t, p), H);
   FullLinearisation L;
   for (int r = 0; r < 4; ++r) {
     const auto& d = F(r).derivatives();
@@ -177,10 +188,9 @@ FullLinearisation lineariseFully(const SharpeningSetup& s, const AxisPolynomials
 
 // Where the wheel at the fixed motion phi = v.phi crosses the normal line of g: Eqs. 5-6 alone,
 // solved for (t, u, w) from v; nothing when Newton's method does not settle.
-std::optional<double> crossingAt(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
-                                 EnvelopeGuess v) {
+std::optional<double> crossingAt(const PointEquations& q, EnvelopeGuess v) {
   for (int it = 0; it < 30; ++it) {
-    const Linearisation L = linearise(s, axes, g, v);
+    const Linearisation L = linearise(q, v);
     Eigen::Matrix3d J;
     J << L.J(0, 0), L.J(0, 2), L.J(0, 3), L.J(1, 0), L.J(1, 2), L.J(1, 3), L.J(2, 0), L.J(2, 2), L.J(2, 3);
     const Eigen::Vector3d step = J.partialPivLu().solve(L.F.head<3>());
@@ -197,13 +207,12 @@ std::optional<double> crossingAt(const SharpeningSetup& s, const AxisPolynomials
 // the face is ground where that holds. An offset that curves so sharply that a crossing a small
 // motion step away lies beyond the envelope point has taken the wheel past the envelope's edge
 // (the two sheets of the envelope meet there): the point found is no longer what the wheel grinds.
-bool pastEnvelopeEdge(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
-                      const EnvelopeGuess& v, double motionStep) {
+bool pastEnvelopeEdge(const PointEquations& q, const EnvelopeGuess& v, double motionStep) {
   constexpr double kBeyond = 1e-9;  // mm: beyond the solver's noise
   for (double step : {-motionStep, motionStep}) {
     EnvelopeGuess moved = v;
     moved.phi += step;
-    const std::optional<double> t = crossingAt(s, axes, g, moved);
+    const std::optional<double> t = crossingAt(q, moved);
     if (t && *t > v.t + kBeyond) return true;
   }
   return false;
@@ -234,13 +243,14 @@ EnvelopeGuess nominalGuess(const GridPoint& point, double contactW) {
   return g;
 }
 
-bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
-                      EnvelopePoint& e) {
+namespace {
+
+bool addSensitivities(const PointEquations& q, EnvelopePoint& e) {
   // Linearise once more at the solution (Eqs. 13-15): dt by each axis value and rate, by
   // the implicit-function theorem on the four envelope equations.
+  const SharpeningSetup& setup = q.s;
   const EnvelopeGuess v{e.t, e.phi, e.u, e.w};
-  const FullLinearisation S = setup.wheel.hasOffset() ? lineariseFully<4>(setup, axes, point, v)
-                                                      : lineariseFully<2>(setup, axes, point, v);
+  const FullLinearisation S = setup.wheel.hasOffset() ? lineariseFully<4>(q, v) : lineariseFully<2>(q, v);
   const Eigen::Vector4d lambda = S.J.transpose().partialPivLu().solve(Eigen::Vector4d::UnitX());
   if (!lambda.allFinite()) return false;
   for (int i = 0; i < kAxisCount; ++i) {
@@ -250,10 +260,17 @@ bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes,
   if (setup.wheel.hasOffset()) {
     e.dtdOffset = -lambda.dot(S.dOffset);
     e.dtdOffsetSlope = -lambda.dot(S.dSlope);
-    e.wheelRadius = wheelContact(setup.face, setup.universal, setup.normalSign,
+    e.wheelRadius = wheelContact(setup.face, setup.universal, q.contact, setup.normalSign,
                                  setup.universal.centerDistance.coefficient(0), v.u, v.w).R();
   }
   return true;
+}
+
+}  // namespace
+
+bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
+                      EnvelopePoint& e) {
+  return addSensitivities(PointEquations(setup, axes, point), e);
 }
 
 Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
@@ -265,6 +282,7 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
                               "solution). Check the axis polynomials and the grid.",
                   ErrorCode::Unsolvable);
   };
+  const PointEquations q(setup, axes, point);
   EnvelopeGuess v = guess;
   const bool helical = setup.face.helical();
   const double motionLimit = helical ? o.helicalMotionStepLimit : o.straightMotionStepLimit;
@@ -285,19 +303,19 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
     e.u = v.u;
     e.w = v.w;
     e.iterations = it;
-    if (setup.wheel.hasOffset() && pastEnvelopeEdge(setup, axes, point, v, o.edgeStep(helical)))
+    if (setup.wheel.hasOffset() && pastEnvelopeEdge(q, v, o.edgeStep(helical)))
       return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
                                ": the dressed wheel's profile offset curves too sharply there, so the "
                                "wheel no longer envelops the face (Eq. 11 holds past the envelope's "
                                "edge). Check wheel.profileOffset or wheel.measuredProfile.",
                     ErrorCode::Unsolvable);
     if (sensitivities == Sensitivities::Skip) return e;
-    if (!addSensitivities(setup, axes, point, e)) return fail();
+    if (!addSensitivities(q, e)) return fail();
     return e;
   };
   double lastSize = 0;  // the last full step's size; 0 after a shortened one
   for (int it = 1; it <= o.maxIterations; ++it) {
-    const Linearisation L = linearise(setup, axes, point, v);
+    const Linearisation L = linearise(q, v);
     if (!L.F.allFinite() || !L.J.allFinite()) break;
     const Eigen::PartialPivLU<Eigen::Matrix4d> lu(L.J);
     Eigen::Vector4d step = lu.solve(L.F);
@@ -317,7 +335,7 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
     if (full && lastSize > 0 && size < lastSize && size * (size / lastSize) * (size / lastSize) < o.stepTolerance &&
         it < o.maxIterations) {
       ++it;
-      const Eigen::Vector4d F = residualAt(setup, axes, point, v);
+      const Eigen::Vector4d F = residualAt(q, v);
       const Eigen::Vector4d chord = lu.solve(F);
       if (!chord.allFinite()) break;
       take(chord);
