@@ -317,8 +317,10 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
   for (int it = 1; it <= o.maxIterations; ++it) {
     const Linearisation L = linearise(q, v);
     if (!L.F.allFinite() || !L.J.allFinite()) break;
-    const Eigen::PartialPivLU<Eigen::Matrix4d> lu(L.J);
-    Eigen::Vector4d step = lu.solve(L.F);
+    // Eigen's closed-form 4 x 4 inverse (cofactors) is a fraction of the cost of a pivoted LU:
+    // a Newton step needs the direction only to within rounding, the solution being where F = 0.
+    const Eigen::Matrix4d inverse = L.J.inverse();
+    Eigen::Vector4d step = inverse * L.F;
     if (!step.allFinite()) break;
     const double scale = std::max({std::abs(step(0)) / o.offsetStepLimit, std::abs(step(1)) / motionLimit,
                                    std::abs(step(2)) / o.lineStepLimit, std::abs(step(3)) / motionLimit, 1.0});
@@ -328,7 +330,7 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
     if (scale == 1.0 && size < o.stepTolerance) return converged(it);
     // Newton's method converging quadratically: the contraction theta = size / lastSize squares
     // from step to step, so the next step would be about size theta^2 (Deuflhard's estimate).
-    // Where that is below the tolerance, the next step is taken with this step's LU (a chord step:
+    // Where that is below the tolerance, the next step is taken with this step's inverse (a chord step:
     // the residual alone, no new Jacobian), and the solve ends when it is below the tolerance, as
     // a Newton step would be: the two differ by a share of the order of this step's size.
     const bool full = scale == 1.0;
@@ -336,7 +338,7 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
         it < o.maxIterations) {
       ++it;
       const Eigen::Vector4d F = residualAt(q, v);
-      const Eigen::Vector4d chord = lu.solve(F);
+      const Eigen::Vector4d chord = inverse * F;
       if (!chord.allFinite()) break;
       take(chord);
       if (sizeOf(chord) < o.stepTolerance) return converged(it);
