@@ -1,6 +1,7 @@
 // The solvers' options structs: their defaults are the figures the results were pinned with, and
 // each member that the tests can reach changes what the solver does.
 #include <cmath>
+#include <cstdio>
 
 #include "correction.h"
 #include "test_support.h"
@@ -60,6 +61,35 @@ TEST(SolverOptions, AnEnvelopeSolveEndsWhereNewtonsMethodWould) {
               o.stepTolerance)
         << "grid point " << k;
   }
+}
+
+// The first-order start (solveEnvelopePointNear, as the identification's faces are solved from
+// the run face): the same points as Newton's method started from the nearby face's solutions,
+// with fewer Jacobians formed.
+TEST(SolverOptions, AFirstOrderStartFromANearbyFaceEndsWhereTheColdStartDoes) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials run = runWithError(job.nominalAxes);
+  auto nominal = simulateGroundFace(job.setup, job.nominalAxes, job.grid, Sensitivities::Skip);
+  ASSERT_TRUE(nominal.ok());
+  const EnvelopeSolverOptions o;
+  int nearJacobians = 0, coldJacobians = 0;
+  for (size_t k = 0; k < nominal->envelope.size(); ++k) {
+    const EnvelopePoint& from = nominal->envelope[k];
+    auto near = solveEnvelopePointNear(job.setup, run, nominal->points[k], from, Sensitivities::Skip);
+    auto cold = solveEnvelopePoint(job.setup, run, nominal->points[k], EnvelopeGuess{from.t, from.phi, from.u, from.w},
+                                   Sensitivities::Skip);
+    ASSERT_TRUE(near.ok() && cold.ok());
+    // Within the step tolerance, each unknown in the tolerance's own measure (mm, motion weighted).
+    EXPECT_LT(std::abs(near->t - cold->t) + std::abs(near->u - cold->u) +
+                  o.helicalMotionWeight * (std::abs(near->phi - cold->phi) + std::abs(near->w - cold->w)),
+              o.stepTolerance)
+        << "grid point " << k;
+    nearJacobians += near->jacobians;
+    coldJacobians += cold->jacobians;
+  }
+  std::printf("[ figures  ] Jacobians over %zu points: %d from the first-order start, %d from the solutions\n",
+              nominal->envelope.size(), nearJacobians, coldJacobians);
+  EXPECT_LT(nearJacobians, coldJacobians);
 }
 
 TEST(SolverOptions, EnvelopeIterationLimitAndStepLimitsAreHonoured) {

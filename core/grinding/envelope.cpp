@@ -273,9 +273,13 @@ bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes,
   return addSensitivities(PointEquations(setup, axes, point), e);
 }
 
-Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
-                                          const GridPoint& point, const EnvelopeGuess& guess,
-                                          Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
+namespace {
+
+// Newton's method on Eqs. 5, 6, 11 from `guess`; with `startInverse`, the first step is a chord
+// step with it (solveEnvelopePointNear).
+Outcome<EnvelopePoint> solve(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
+                             const EnvelopeGuess& guess, const Eigen::Matrix4d* startInverse,
+                             Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
   const auto fail = [&point] {
     return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
                               ": the wheel does not envelop the tooth face there (Eq. 11 has no "
@@ -290,12 +294,9 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
   const auto sizeOf = [motionWeight](const Eigen::Vector4d& step) {
     return std::abs(step(0)) + std::abs(step(2)) + (std::abs(step(1)) + std::abs(step(3))) * motionWeight;
   };
-  const auto take = [&v](const Eigen::Vector4d& step) {
-    v.t -= step(0);
-    v.phi -= step(1);
-    v.u -= step(2);
-    v.w -= step(3);
-  };
+  // The inverse Jacobian the steps are taken with: a new one at each Newton step, kept for a chord step.
+  Eigen::Matrix4d inverse = startInverse ? *startInverse : Eigen::Matrix4d::Zero();
+  int jacobians = 0;
   const auto converged = [&](int it) -> Outcome<EnvelopePoint> {
     EnvelopePoint e;
     e.t = v.t;
@@ -303,6 +304,8 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
     e.u = v.u;
     e.w = v.w;
     e.iterations = it;
+    e.jacobians = jacobians;
+    e.jacobianInverse = inverse;
     if (setup.wheel.hasOffset() && pastEnvelopeEdge(q, v, o.edgeStep(helical)))
       return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
                                ": the dressed wheel's profile offset curves too sharply there, so the "
@@ -314,40 +317,56 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
     return e;
   };
   double lastSize = 0;  // the last full step's size; 0 after a shortened one
+  bool chord = startInverse != nullptr;  // the next step with `inverse` as it is
   for (int it = 1; it <= o.maxIterations; ++it) {
-    const Linearisation L = linearise(q, v);
-    if (!L.F.allFinite() || !L.J.allFinite()) break;
-    // Eigen's closed-form 4 x 4 inverse (cofactors) is a fraction of the cost of a pivoted LU:
-    // a Newton step needs the direction only to within rounding, the solution being where F = 0.
-    const Eigen::Matrix4d inverse = L.J.inverse();
-    Eigen::Vector4d step = inverse * L.F;
+    Eigen::Vector4d step;
+    if (chord) {
+      step = inverse * residualAt(q, v);
+    } else {
+      const Linearisation L = linearise(q, v);
+      if (!L.F.allFinite() || !L.J.allFinite()) break;
+      // Eigen's closed-form 4 x 4 inverse (cofactors) is a fraction of the cost of a pivoted LU:
+      // a Newton step needs the direction only to within rounding, the solution being where F = 0.
+      inverse = L.J.inverse();
+      ++jacobians;
+      step = inverse * L.F;
+    }
     if (!step.allFinite()) break;
     const double scale = std::max({std::abs(step(0)) / o.offsetStepLimit, std::abs(step(1)) / motionLimit,
                                    std::abs(step(2)) / o.lineStepLimit, std::abs(step(3)) / motionLimit, 1.0});
     step /= scale;
-    take(step);
+    v.t -= step(0);
+    v.phi -= step(1);
+    v.u -= step(2);
+    v.w -= step(3);
     const double size = sizeOf(step);
-    if (scale == 1.0 && size < o.stepTolerance) return converged(it);
+    const bool full = scale == 1.0;
+    if (full && size < o.stepTolerance) return converged(it);
     // Newton's method converging quadratically: the contraction theta = size / lastSize squares
     // from step to step, so the next step would be about size theta^2 (Deuflhard's estimate).
-    // Where that is below the tolerance, the next step is taken with this step's inverse (a chord step:
-    // the residual alone, no new Jacobian), and the solve ends when it is below the tolerance, as
-    // a Newton step would be: the two differ by a share of the order of this step's size.
-    const bool full = scale == 1.0;
-    if (full && lastSize > 0 && size < lastSize && size * (size / lastSize) * (size / lastSize) < o.stepTolerance &&
-        it < o.maxIterations) {
-      ++it;
-      const Eigen::Vector4d F = residualAt(q, v);
-      const Eigen::Vector4d chord = inverse * F;
-      if (!chord.allFinite()) break;
-      take(chord);
-      if (sizeOf(chord) < o.stepTolerance) return converged(it);
-      lastSize = sizeOf(chord);
-      continue;
-    }
+    // Where that is below the tolerance, the next step is taken with this step's inverse (a chord
+    // step: the residual alone, no new Jacobian), and the solve ends when it is below the
+    // tolerance, as a Newton step would be: the two differ by a share of the order of this step's size.
+    chord = !chord && full && lastSize > 0 && size < lastSize &&
+            size * (size / lastSize) * (size / lastSize) < o.stepTolerance;
     lastSize = full ? size : 0;
   }
   return fail();
+}
+
+}  // namespace
+
+Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
+                                          const GridPoint& point, const EnvelopeGuess& guess,
+                                          Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
+  return solve(setup, axes, point, guess, nullptr, sensitivities, o);
+}
+
+Outcome<EnvelopePoint> solveEnvelopePointNear(const SharpeningSetup& setup, const AxisPolynomials& axes,
+                                              const GridPoint& point, const EnvelopePoint& near,
+                                              Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
+  return solve(setup, axes, point, EnvelopeGuess{near.t, near.phi, near.u, near.w}, &near.jacobianInverse,
+               sensitivities, o);
 }
 
 }  // namespace hobsharp
