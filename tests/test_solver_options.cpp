@@ -1,6 +1,7 @@
 // The solvers' options structs: their defaults are the figures the results were pinned with, and
 // each member that the tests can reach changes what the solver does.
 #include <cmath>
+#include <cstdio>
 
 #include "correction.h"
 #include "test_support.h"
@@ -37,6 +38,58 @@ TEST(SolverOptions, DefaultEnvelopeOptionsAreTheDefaultSolve) {
     EXPECT_EQ(implicit->envelope[k].iterations, explicitDefaults->envelope[k].iterations);
   }
   EXPECT_GT(totalIterations(*implicit), 2 * static_cast<int>(implicit->envelope.size()));
+}
+
+// The solve may end on a chord step (the last Newton step's LU, envelope.cpp) where quadratic
+// convergence predicts the next step below the tolerance. Its point must be where Newton's method
+// ends: started there, one full Newton step, below the tolerance, moves it no further.
+TEST(SolverOptions, AnEnvelopeSolveEndsWhereNewtonsMethodWould) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials run = runWithError(job.nominalAxes);
+  auto f = simulateGroundFace(job.setup, run, job.grid, Sensitivities::Skip);
+  ASSERT_TRUE(f.ok());
+  const EnvelopeSolverOptions o;
+  for (size_t k = 0; k < f->envelope.size(); ++k) {
+    const EnvelopePoint& e = f->envelope[k];
+    auto again = solveEnvelopePoint(job.setup, run, f->points[k], EnvelopeGuess{e.t, e.phi, e.u, e.w},
+                                    Sensitivities::Skip);
+    ASSERT_TRUE(again.ok());
+    EXPECT_EQ(again->iterations, 1) << "grid point " << k;
+    // Within the step tolerance, each unknown in the tolerance's own measure (mm, motion weighted).
+    EXPECT_LT(std::abs(again->t - e.t) + std::abs(again->u - e.u) +
+                  o.helicalMotionWeight * (std::abs(again->phi - e.phi) + std::abs(again->w - e.w)),
+              o.stepTolerance)
+        << "grid point " << k;
+  }
+}
+
+// The first-order start (solveEnvelopePointNear, as the identification's faces are solved from
+// the run face): the same points as Newton's method started from the nearby face's solutions,
+// with fewer Jacobians formed.
+TEST(SolverOptions, AFirstOrderStartFromANearbyFaceEndsWhereTheColdStartDoes) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials run = runWithError(job.nominalAxes);
+  auto nominal = simulateGroundFace(job.setup, job.nominalAxes, job.grid, Sensitivities::Skip);
+  ASSERT_TRUE(nominal.ok());
+  const EnvelopeSolverOptions o;
+  int nearJacobians = 0, coldJacobians = 0;
+  for (size_t k = 0; k < nominal->envelope.size(); ++k) {
+    const EnvelopePoint& from = nominal->envelope[k];
+    auto near = solveEnvelopePointNear(job.setup, run, nominal->points[k], from, Sensitivities::Skip);
+    auto cold = solveEnvelopePoint(job.setup, run, nominal->points[k], EnvelopeGuess{from.t, from.phi, from.u, from.w},
+                                   Sensitivities::Skip);
+    ASSERT_TRUE(near.ok() && cold.ok());
+    // Within the step tolerance, each unknown in the tolerance's own measure (mm, motion weighted).
+    EXPECT_LT(std::abs(near->t - cold->t) + std::abs(near->u - cold->u) +
+                  o.helicalMotionWeight * (std::abs(near->phi - cold->phi) + std::abs(near->w - cold->w)),
+              o.stepTolerance)
+        << "grid point " << k;
+    nearJacobians += near->jacobians;
+    coldJacobians += cold->jacobians;
+  }
+  std::printf("[ figures  ] Jacobians over %zu points: %d from the first-order start, %d from the solutions\n",
+              nominal->envelope.size(), nearJacobians, coldJacobians);
+  EXPECT_LT(nearJacobians, coldJacobians);
 }
 
 TEST(SolverOptions, EnvelopeIterationLimitAndStepLimitsAreHonoured) {

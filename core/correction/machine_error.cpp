@@ -120,8 +120,11 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
   Eigen::MatrixXd P(q, 0);
   Eigen::VectorXd theta(0);
   Eigen::VectorXd zE = Eigen::VectorXd::Zero(m.space.basis.cols());  // E in the basis, machine steps
-  GroundFace current = runFace;
-  Eigen::MatrixXd currentS = sensitivityMatrix(runFace, cs).normal;  // of `current`
+  // The face at the estimate: the run face until the solver has moved, then the solver's (the run
+  // face is not copied: a face of 2,000 points is most of a megabyte).
+  std::optional<GroundFace> solved;
+  const auto current = [&]() -> const GroundFace& { return solved ? *solved : runFace; };
+  Eigen::MatrixXd currentS = sensitivityMatrix(runFace, cs).normal;  // of current()
   std::vector<bool> previous;
   Eigen::MatrixXd keptP(q, 0);  // the last round's solution, kept if a later round cannot start
   Eigen::VectorXd keptTheta(0);
@@ -129,7 +132,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
   for (int round = 0; round < kDecisionRounds; ++round) {
     if (q == 0 || m.space.basis.cols() == 0) break;
     const Eigen::MatrixXd Jz = currentS * m.space.step.asDiagonal() * m.space.basis;
-    const Eigen::VectorXd data = d - faceNormal(current) + Jz * zE;  // what E makes, linearised here
+    const Eigen::VectorXd data = d - faceNormal(current()) + Jz * zE;  // what E makes, linearised here
     // The SVD of Jz through its QR (Jz = Q R, R = U S V^T): the data's components along the
     // left singular vectors are U^T (Q^T data), without forming the p x m factor.
     // A grid with fewer points than directions (3 x 3 at degree 4) has a wide R.
@@ -170,7 +173,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     P = m.space.step.asDiagonal() * (m.space.basis * V);
     theta = V.transpose() * zE;  // the estimate so far, in the directions decided here
     if (kept.empty()) {
-      current = runFace;
+      solved.reset();
       currentS = sensitivityMatrix(runFace, cs).normal;
       zE.setZero();
       break;
@@ -181,7 +184,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
       residual.cache.lastFace = runFace;  // with its sensitivities, and their matrix
       residual.sensitiveX = theta;
       residual.sensitiveEvaluation = residual.cache.evaluations;
-      residual.S = currentS;
+      residual.S = std::move(currentS);  // back at the solution below, or formed again on failure
     }
     Eigen::LevenbergMarquardt<FaceResidual> lm(residual);
     lm.setFtol(o.solver.functionTolerance);
@@ -206,7 +209,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
                              : "failed: the face of the estimate cannot be simulated.";
       evaluations += residual.cache.evaluations;
       theta.setZero();
-      current = runFace;
+      solved.reset();
       currentS = sensitivityMatrix(runFace, cs).normal;
       break;
     }
@@ -223,7 +226,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     evaluations += residual.cache.evaluations;
     if (!f) return refuse("measured", "the identified machine error leaves a face that cannot be simulated.",
                           ErrorCode::Unsolvable);
-    current = std::move(*residual.cache.lastFace);
+    solved = std::move(residual.cache.lastFace);
     currentS = std::move(residual.S);
     zE = V * theta;
     keptP = P;
@@ -235,7 +238,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     m.summary.reason = "converged: the measurement shows nothing above the probe noise that the axes can make.";
     theta = Eigen::VectorXd::Zero(0);
   }
-  m.face = current;
+  m.face = solved ? std::move(*solved) : runFace;
   m.summary.faceEvaluations = evaluations;
   m.coefficientError = P * theta;
   m.error = run;

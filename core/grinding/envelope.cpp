@@ -14,30 +14,77 @@
 namespace hobsharp {
 namespace {
 
-// Independent variables of the full derivative: t, u, w, five axis values, five axis rates, and
-// with a wheel profile offset the shifts of the offset's value and slope (wheel_surface.h).
-constexpr int kVars = 3 + 2 * kAxisCount;
-constexpr int kVarsWithOffset = kVars + 2;
+// One envelope point's equations: the setup, the axes, the grid point, and the cosines and sines
+// of the setup's fixed angles (phi_1, gamma_m, eta of Eq. 3; psi_c of Eq. 7), formed once for the
+// point rather than at every Newton step.
+struct PointEquations {
+  PointEquations(const SharpeningSetup& setup, const AxisPolynomials& a, const GridPoint& point)
+      : s(setup), axes(a), g(point), contact(contactRotations(setup.universal)), psiC(cosSin(setup.psiC())) {}
+  const SharpeningSetup& s;
+  const AxisPolynomials& axes;
+  const GridPoint& g;
+  ContactRotations contact;
+  CosSin<double> psiC;
+};
 
-// The wheel surface point is (R, Z) of the dressed wheel (wheel_surface.h) at the conjugate point
-// (u, w); for the conjugate wheel (no offset) these are c.R(), c.Z() and the normal n_t itself.
+// The wheel's side of Eqs. 5-6 at the face coordinates (u, w) of its contact line: the equation
+// of meshing and the dressed meridian there (for the conjugate wheel c.R(), c.Z() and n_t itself).
+// It depends on u and w (and the offset's shifts) only, so its derivatives need those directions alone.
 template <class T>
-Eigen::Matrix<T, 4, 1> residual(const SharpeningSetup& s, const GridPoint& g, const T& t, const T& u,
-                                const T& w, const AxisState<T>& axes, const T& offsetShift = T(0),
-                                const T& slopeShift = T(0)) {
+struct WheelSide {
+  T meshing;
+  WheelMeridian<T> m;
+};
+
+template <class T>
+WheelSide<T> wheelSide(const PointEquations& q, const T& u, const T& w, const T& offsetShift = T(0),
+                       const T& slopeShift = T(0)) {
+  const SharpeningSetup& s = q.s;
+  const WheelContact<T> c = wheelContact(s.face, s.universal, q.contact, s.normalSign,
+                                         s.universal.centerDistance.coefficient(0), u, w);
+  return {c.meshing, wheelMeridian(s.wheel, c, offsetShift, slopeShift)};
+}
+
+// The hob's side: q and q-dot (Eq. 7) of the point G = P + t n on the normal line, with the axes
+// at the motion phi. It depends on t and the axes only.
+template <class T>
+WheelFramePoint<T> hobSide(const PointEquations& q, const T& t, const AxisState<T>& axes) {
+  const Vec3<T> G = q.g.p.cast<T>() + q.g.n.cast<T>() * t;
+  return hobPointInWheelFrame(G, axes, q.s.machine, q.psiC);
+}
+
+// Eqs. 5, 6 and 11 from the two sides.
+template <class T>
+Eigen::Matrix<T, 4, 1> envelopeEquations(const WheelSide<T>& wheel, const WheelFramePoint<T>& h) {
   using std::sqrt;
-  const Vec3<T> G = g.p.cast<T>() + g.n.cast<T>() * t;
-  const WheelFramePoint<T> h = hobPointInWheelFrame(G, axes, s.machine, s.psiC());
-  const WheelContact<T> c =
-      wheelContact(s.face, s.universal, s.normalSign, s.universal.centerDistance.coefficient(0), u, w);
-  const WheelMeridian<T> m = wheelMeridian(s.wheel, c, offsetShift, slopeShift);
+  const WheelMeridian<T>& m = wheel.m;
   const T rho = sqrt(h.q.x() * h.q.x() + h.q.y() * h.q.y());
   Eigen::Matrix<T, 4, 1> F;
-  F(0) = c.meshing;
+  F(0) = wheel.meshing;
   F(1) = rho - m.R;
   F(2) = h.q.z() - m.Z;
   F(3) = m.nR * (h.q.x() * h.qDot.x() + h.q.y() * h.qDot.y()) / rho + m.nZ * h.qDot.z();
   return F;
+}
+
+// The two sides, differentiated each in its own directions, carried into the N directions of the
+// whole: the hob's from direction 0 on, the wheel's from direction `wheelFirst` on.
+template <int N, int H, int W>
+Eigen::Matrix<Dual<N>, 4, 1> joinedEquations(const WheelSide<Dual<W>>& wheel, const WheelFramePoint<Dual<H>>& h,
+                                             int wheelFirst) {
+  static_assert(H + W <= N, "the sides' directions must fit the whole's");
+  const auto fromHob = [](const Dual<H>& x) { return embedded<N>(x, 0); };
+  const auto fromWheel = [wheelFirst](const Dual<W>& x) { return embedded<N>(x, wheelFirst); };
+  const WheelFramePoint<Dual<N>> hN{h.q.unaryExpr(fromHob), h.qDot.unaryExpr(fromHob)};
+  const WheelSide<Dual<N>> wN{fromWheel(wheel.meshing), {fromWheel(wheel.m.R), fromWheel(wheel.m.Z),
+                                                          fromWheel(wheel.m.nR), fromWheel(wheel.m.nZ)}};
+  return envelopeEquations(wN, hN);
+}
+
+template <class T>
+Eigen::Matrix<T, 4, 1> residual(const PointEquations& q, const T& t, const T& u, const T& w,
+                                const AxisState<T>& axes) {
+  return envelopeEquations(wheelSide(q, u, w), hobSide(q, t, axes));
 }
 
 struct Linearisation {
@@ -45,24 +92,35 @@ struct Linearisation {
   Eigen::Matrix4d J;  // d F / d(t, phi, u, w)
 };
 
-// For Newton's method: four directions, phi entering through the axis values and rates.
-Linearisation linearise(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
-                        const EnvelopeGuess& v) {
-  using D4 = Dual<4>;
-  AxisState<D4> state;
+// For Newton's method: four directions, the hob's side in (t, phi), phi entering through the axis
+// values and rates, and the wheel's side in (u, w).
+Linearisation linearise(const PointEquations& q, const EnvelopeGuess& v) {
+  using D2 = Dual<2>;
+  AxisState<D2> state;
   for (int i = 0; i < kAxisCount; ++i) {
-    const PolynomialValue p = axes.axis[i].at(v.phi);
-    state.value[i] = seeded<4>(p.value, Eigen::Vector4d(0, p.d1, 0, 0));
-    state.rate[i] = seeded<4>(p.d1, Eigen::Vector4d(0, p.d2, 0, 0));
+    const PolynomialValue p = q.axes.axis[i].at(v.phi);
+    state.value[i] = seeded<2>(p.value, Eigen::Vector2d(0, p.d1));
+    state.rate[i] = seeded<2>(p.d1, Eigen::Vector2d(0, p.d2));
   }
-  const Eigen::Matrix<D4, 4, 1> F =
-      residual<D4>(s, g, variable<4>(v.t, 0), variable<4>(v.u, 2), variable<4>(v.w, 3), state);
+  const Eigen::Matrix<Dual<4>, 4, 1> F = joinedEquations<4>(
+      wheelSide<D2>(q, variable<2>(v.u, 0), variable<2>(v.w, 1)), hobSide<D2>(q, variable<2>(v.t, 0), state), 2);
   Linearisation L;
   for (int r = 0; r < 4; ++r) {
     L.F(r) = F(r).value();
     L.J.row(r) = F(r).derivatives().transpose();
   }
   return L;
+}
+
+// The residual alone, for a step with a Jacobian already factorised.
+Eigen::Vector4d residualAt(const PointEquations& q, const EnvelopeGuess& v) {
+  AxisState<double> state;
+  for (int i = 0; i < kAxisCount; ++i) {
+    const PolynomialValue p = q.axes.axis[i].at(v.phi);
+    state.value[i] = p.value;
+    state.rate[i] = p.d1;
+  }
+  return residual<double>(q, v.t, v.u, v.w, state);
 }
 
 // At the solution, with respect to everything: (t, u, w), the axis values and the axis rates.
@@ -73,34 +131,55 @@ struct FullLinearisation {
   Eigen::Vector4d dSlope = Eigen::Vector4d::Zero();    // d F / d(offset slope), with an offset
 };
 
-template <int N>
-FullLinearisation lineariseFully(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
-                                 const EnvelopeGuess& v) {
-  using D = Dual<N>;
-  AxisState<D> state;
-  std::array<PolynomialValue, kAxisCount> p;
+// The hob's side in t, the five axis values and the five rates (directions 0 to 10); the wheel's
+// side in u, w and, with a wheel profile offset (W = 4), the shifts of the offset's value and
+// slope (wheel_surface.h), from direction 11 on.
+//
+// The rates need no directions of their own: q-dot is dq/dphi = sum_i rate_i dq/d(value_i) (Eq. 7
+// differentiated along the motion; machine_kinematics.h), so d q-dot / d rate_i = dq / d value_i,
+// which the value directions give. The hob's side is differentiated in t and the values alone.
+constexpr int kHobVars = 1 + 2 * kAxisCount;
+constexpr int kHobDifferentiated = 1 + kAxisCount;
+
+WheelFramePoint<Dual<kHobVars>> hobSideFully(const PointEquations& q, double t,
+                                             const std::array<PolynomialValue, kAxisCount>& p) {
+  constexpr int H = kHobDifferentiated;
+  AxisState<Dual<H>> state;
   for (int i = 0; i < kAxisCount; ++i) {
-    p[i] = axes.axis[i].at(v.phi);
-    state.value[i] = variable<N>(p[i].value, 3 + i);
-    state.rate[i] = variable<N>(p[i].d1, 3 + kAxisCount + i);
+    state.value[i] = variable<H>(p[i].value, 1 + i);
+    state.rate[i] = Dual<H>(p[i].d1);
   }
-  const bool offset = N == kVarsWithOffset;
-  const D offsetShift = offset ? variable<N>(0.0, kVars) : D(0.0);
-  const D slopeShift = offset ? variable<N>(0.0, kVars + 1) : D(0.0);
-  const Eigen::Matrix<D, 4, 1> F = residual<D>(s, g, variable<N>(v.t, 0), variable<N>(v.u, 1),
-                                               variable<N>(v.w, 2), state, offsetShift, slopeShift);
+  const WheelFramePoint<Dual<H>> h = hobSide<Dual<H>>(q, variable<H>(t, 0), state);
+  WheelFramePoint<Dual<kHobVars>> full{h.q.unaryExpr([](const Dual<H>& x) { return embedded<kHobVars>(x, 0); }),
+                                       h.qDot.unaryExpr([](const Dual<H>& x) { return embedded<kHobVars>(x, 0); })};
+  for (int k = 0; k < 3; ++k)
+    full.qDot(k).derivatives().template segment<kAxisCount>(H) = h.q(k).derivatives().template segment<kAxisCount>(1);
+  return full;
+}
+
+template <int W>
+FullLinearisation lineariseFully(const PointEquations& q, const EnvelopeGuess& v) {
+  constexpr int H = kHobVars, N = H + W;
+  std::array<PolynomialValue, kAxisCount> p;
+  for (int i = 0; i < kAxisCount; ++i) p[i] = q.axes.axis[i].at(v.phi);
+  const bool offset = W == 4;
+  const Dual<W> offsetShift = offset ? variable<W>(0.0, 2) : Dual<W>(0.0);
+  const Dual<W> slopeShift = offset ? variable<W>(0.0, 3) : Dual<W>(0.0);
+  const Eigen::Matrix<Dual<N>, 4, 1> F = joinedEquations<N>(
+      wheelSide<Dual<W>>(q, variable<W>(v.u, 0), variable<W>(v.w, 1), offsetShift, slopeShift),
+      hobSideFully(q, v.t, p), H);
   FullLinearisation L;
   for (int r = 0; r < 4; ++r) {
     const auto& d = F(r).derivatives();
-    if (offset) L.dOffset(r) = d(kVars), L.dSlope(r) = d(kVars + 1);
+    if (offset) L.dOffset(r) = d(H + 2), L.dSlope(r) = d(H + 3);
     L.J(r, 0) = d(0);
-    L.J(r, 2) = d(1);
-    L.J(r, 3) = d(2);
+    L.J(r, 2) = d(H);
+    L.J(r, 3) = d(H + 1);
     double dphi = 0;
     for (int i = 0; i < kAxisCount; ++i) {
-      L.dValue(r, i) = d(3 + i);
-      L.dRate(r, i) = d(3 + kAxisCount + i);
-      dphi += d(3 + i) * p[i].d1 + d(3 + kAxisCount + i) * p[i].d2;  // chain rule through phi
+      L.dValue(r, i) = d(1 + i);
+      L.dRate(r, i) = d(1 + kAxisCount + i);
+      dphi += d(1 + i) * p[i].d1 + d(1 + kAxisCount + i) * p[i].d2;  // chain rule through phi
     }
     L.J(r, 1) = dphi;
   }
@@ -109,10 +188,9 @@ FullLinearisation lineariseFully(const SharpeningSetup& s, const AxisPolynomials
 
 // Where the wheel at the fixed motion phi = v.phi crosses the normal line of g: Eqs. 5-6 alone,
 // solved for (t, u, w) from v; nothing when Newton's method does not settle.
-std::optional<double> crossingAt(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
-                                 EnvelopeGuess v) {
+std::optional<double> crossingAt(const PointEquations& q, EnvelopeGuess v) {
   for (int it = 0; it < 30; ++it) {
-    const Linearisation L = linearise(s, axes, g, v);
+    const Linearisation L = linearise(q, v);
     Eigen::Matrix3d J;
     J << L.J(0, 0), L.J(0, 2), L.J(0, 3), L.J(1, 0), L.J(1, 2), L.J(1, 3), L.J(2, 0), L.J(2, 2), L.J(2, 3);
     const Eigen::Vector3d step = J.partialPivLu().solve(L.F.head<3>());
@@ -129,13 +207,12 @@ std::optional<double> crossingAt(const SharpeningSetup& s, const AxisPolynomials
 // the face is ground where that holds. An offset that curves so sharply that a crossing a small
 // motion step away lies beyond the envelope point has taken the wheel past the envelope's edge
 // (the two sheets of the envelope meet there): the point found is no longer what the wheel grinds.
-bool pastEnvelopeEdge(const SharpeningSetup& s, const AxisPolynomials& axes, const GridPoint& g,
-                      const EnvelopeGuess& v, double motionStep) {
+bool pastEnvelopeEdge(const PointEquations& q, const EnvelopeGuess& v, double motionStep) {
   constexpr double kBeyond = 1e-9;  // mm: beyond the solver's noise
   for (double step : {-motionStep, motionStep}) {
     EnvelopeGuess moved = v;
     moved.phi += step;
-    const std::optional<double> t = crossingAt(s, axes, g, moved);
+    const std::optional<double> t = crossingAt(q, moved);
     if (t && *t > v.t + kBeyond) return true;
   }
   return false;
@@ -166,14 +243,14 @@ EnvelopeGuess nominalGuess(const GridPoint& point, double contactW) {
   return g;
 }
 
-bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
-                      EnvelopePoint& e) {
+namespace {
+
+bool addSensitivities(const PointEquations& q, EnvelopePoint& e) {
   // Linearise once more at the solution (Eqs. 13-15): dt by each axis value and rate, by
   // the implicit-function theorem on the four envelope equations.
+  const SharpeningSetup& setup = q.s;
   const EnvelopeGuess v{e.t, e.phi, e.u, e.w};
-  const FullLinearisation S = setup.wheel.hasOffset()
-                                  ? lineariseFully<kVarsWithOffset>(setup, axes, point, v)
-                                  : lineariseFully<kVars>(setup, axes, point, v);
+  const FullLinearisation S = setup.wheel.hasOffset() ? lineariseFully<4>(q, v) : lineariseFully<2>(q, v);
   const Eigen::Vector4d lambda = S.J.transpose().partialPivLu().solve(Eigen::Vector4d::UnitX());
   if (!lambda.allFinite()) return false;
   for (int i = 0; i < kAxisCount; ++i) {
@@ -183,24 +260,77 @@ bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes,
   if (setup.wheel.hasOffset()) {
     e.dtdOffset = -lambda.dot(S.dOffset);
     e.dtdOffsetSlope = -lambda.dot(S.dSlope);
-    e.wheelRadius = wheelContact(setup.face, setup.universal, setup.normalSign,
+    e.wheelRadius = wheelContact(setup.face, setup.universal, q.contact, setup.normalSign,
                                  setup.universal.centerDistance.coefficient(0), v.u, v.w).R();
   }
   return true;
 }
 
-Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
-                                          const GridPoint& point, const EnvelopeGuess& guess,
-                                          Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
+}  // namespace
+
+bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
+                      EnvelopePoint& e) {
+  return addSensitivities(PointEquations(setup, axes, point), e);
+}
+
+namespace {
+
+// Newton's method on Eqs. 5, 6, 11 from `guess`; with `startInverse`, the first step is a chord
+// step with it (solveEnvelopePointNear).
+Outcome<EnvelopePoint> solve(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
+                             const EnvelopeGuess& guess, const Eigen::Matrix4d* startInverse,
+                             Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
+  const auto fail = [&point] {
+    return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
+                              ": the wheel does not envelop the tooth face there (Eq. 11 has no "
+                              "solution). Check the axis polynomials and the grid.",
+                  ErrorCode::Unsolvable);
+  };
+  const PointEquations q(setup, axes, point);
   EnvelopeGuess v = guess;
   const bool helical = setup.face.helical();
   const double motionLimit = helical ? o.helicalMotionStepLimit : o.straightMotionStepLimit;
   const double motionWeight = helical ? o.helicalMotionWeight : o.straightMotionWeight;
+  const auto sizeOf = [motionWeight](const Eigen::Vector4d& step) {
+    return std::abs(step(0)) + std::abs(step(2)) + (std::abs(step(1)) + std::abs(step(3))) * motionWeight;
+  };
+  // The inverse Jacobian the steps are taken with: a new one at each Newton step, kept for a chord step.
+  Eigen::Matrix4d inverse = startInverse ? *startInverse : Eigen::Matrix4d::Zero();
+  int jacobians = 0;
+  const auto converged = [&](int it) -> Outcome<EnvelopePoint> {
+    EnvelopePoint e;
+    e.t = v.t;
+    e.phi = v.phi;
+    e.u = v.u;
+    e.w = v.w;
+    e.iterations = it;
+    e.jacobians = jacobians;
+    e.jacobianInverse = inverse;
+    if (setup.wheel.hasOffset() && pastEnvelopeEdge(q, v, o.edgeStep(helical)))
+      return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
+                               ": the dressed wheel's profile offset curves too sharply there, so the "
+                               "wheel no longer envelops the face (Eq. 11 holds past the envelope's "
+                               "edge). Check wheel.profileOffset or wheel.measuredProfile.",
+                    ErrorCode::Unsolvable);
+    if (sensitivities == Sensitivities::Skip) return e;
+    if (!addSensitivities(q, e)) return fail();
+    return e;
+  };
+  double lastSize = 0;  // the last full step's size; 0 after a shortened one
+  bool chord = startInverse != nullptr;  // the next step with `inverse` as it is
   for (int it = 1; it <= o.maxIterations; ++it) {
-    const Linearisation L = linearise(setup, axes, point, v);
-    if (!L.F.allFinite() || !L.J.allFinite()) break;
-    const Eigen::PartialPivLU<Eigen::Matrix4d> lu(L.J);
-    Eigen::Vector4d step = lu.solve(L.F);
+    Eigen::Vector4d step;
+    if (chord) {
+      step = inverse * residualAt(q, v);
+    } else {
+      const Linearisation L = linearise(q, v);
+      if (!L.F.allFinite() || !L.J.allFinite()) break;
+      // Eigen's closed-form 4 x 4 inverse (cofactors) is a fraction of the cost of a pivoted LU:
+      // a Newton step needs the direction only to within rounding, the solution being where F = 0.
+      inverse = L.J.inverse();
+      ++jacobians;
+      step = inverse * L.F;
+    }
     if (!step.allFinite()) break;
     const double scale = std::max({std::abs(step(0)) / o.offsetStepLimit, std::abs(step(1)) / motionLimit,
                                    std::abs(step(2)) / o.lineStepLimit, std::abs(step(3)) / motionLimit, 1.0});
@@ -209,30 +339,34 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
     v.phi -= step(1);
     v.u -= step(2);
     v.w -= step(3);
-    const double size =
-        std::abs(step(0)) + std::abs(step(2)) + (std::abs(step(1)) + std::abs(step(3))) * motionWeight;
-    if (scale == 1.0 && size < o.stepTolerance) {
-      EnvelopePoint e;
-      e.t = v.t;
-      e.phi = v.phi;
-      e.u = v.u;
-      e.w = v.w;
-      e.iterations = it;
-      if (setup.wheel.hasOffset() && pastEnvelopeEdge(setup, axes, point, v, o.edgeStep(helical)))
-        return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
-                                 ": the dressed wheel's profile offset curves too sharply there, so the "
-                                 "wheel no longer envelops the face (Eq. 11 holds past the envelope's "
-                                 "edge). Check wheel.profileOffset or wheel.measuredProfile.",
-                      ErrorCode::Unsolvable);
-      if (sensitivities == Sensitivities::Skip) return e;
-      if (!addSensitivities(setup, axes, point, e)) break;
-      return e;
-    }
+    const double size = sizeOf(step);
+    const bool full = scale == 1.0;
+    if (full && size < o.stepTolerance) return converged(it);
+    // Newton's method converging quadratically: the contraction theta = size / lastSize squares
+    // from step to step, so the next step would be about size theta^2 (Deuflhard's estimate).
+    // Where that is below the tolerance, the next step is taken with this step's inverse (a chord
+    // step: the residual alone, no new Jacobian), and the solve ends when it is below the
+    // tolerance, as a Newton step would be: the two differ by a share of the order of this step's size.
+    chord = !chord && full && lastSize > 0 && size < lastSize &&
+            size * (size / lastSize) * (size / lastSize) < o.stepTolerance;
+    lastSize = full ? size : 0;
   }
-  return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
-                           ": the wheel does not envelop the tooth face there (Eq. 11 has no "
-                           "solution). Check the axis polynomials and the grid.",
-                ErrorCode::Unsolvable);
+  return fail();
+}
+
+}  // namespace
+
+Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
+                                          const GridPoint& point, const EnvelopeGuess& guess,
+                                          Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
+  return solve(setup, axes, point, guess, nullptr, sensitivities, o);
+}
+
+Outcome<EnvelopePoint> solveEnvelopePointNear(const SharpeningSetup& setup, const AxisPolynomials& axes,
+                                              const GridPoint& point, const EnvelopePoint& near,
+                                              Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
+  return solve(setup, axes, point, EnvelopeGuess{near.t, near.phi, near.u, near.w}, &near.jacobianInverse,
+               sensitivities, o);
 }
 
 }  // namespace hobsharp

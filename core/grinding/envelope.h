@@ -29,7 +29,11 @@ struct EnvelopePoint {
   double t = 0;    // normal deviation, mm (plus = excess material)
   double phi = 0;  // motion parameter at which the wheel grinds this point: rad, or mm (straight)
   double u = 0, w = 0;
-  int iterations = 0;
+  int iterations = 0;  // steps taken
+  int jacobians = 0;   // of them, Newton steps with a new Jacobian; the others are chord steps
+  // The inverse of the Jacobian d(Eqs. 5, 6, 11) / d(t, phi, u, w) the last step was taken with:
+  // for the first-order start of solveEnvelopePointNear.
+  Eigen::Matrix4d jacobianInverse = Eigen::Matrix4d::Zero();
   // Implicit function theorem: dt / d(axis value) and dt / d(axis rate) at phi, X Y Z A B order.
   std::array<double, kAxisCount> dtdValue{};
   std::array<double, kAxisCount> dtdRate{};
@@ -70,6 +74,16 @@ Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const Ax
                                           const GridPoint& point, const EnvelopeGuess& guess,
                                           Sensitivities sensitivities = Sensitivities::Compute,
                                           const EnvelopeSolverOptions& options = {});
+
+// The same grid point on a face ground with axes near those `near` was solved with: started from
+// its solution with a first-order step, the chord step with its Jacobian, which is the
+// implicit-function change of all four unknowns (t, phi, u, w) for the change of the axes
+// (Eqs. 13-15 for t), then Newton's method as above. One Newton step fewer than starting from
+// `near`'s solution alone, for the same point.
+Outcome<EnvelopePoint> solveEnvelopePointNear(const SharpeningSetup& setup, const AxisPolynomials& axes,
+                                              const GridPoint& point, const EnvelopePoint& near,
+                                              Sensitivities sensitivities = Sensitivities::Compute,
+                                              const EnvelopeSolverOptions& options = {});
 
 // The sensitivities (Eqs. 13-15) of a solved envelope point `e` (as solveEnvelopePoint returned it
 // with Sensitivities::Skip): the same figures as solving with Sensitivities::Compute; false where

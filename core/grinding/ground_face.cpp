@@ -99,9 +99,9 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
 Outcome<GroundFace> simulateGroundFaceLike(const GroundFace& like, const SharpeningSetup& setup,
                                            const AxisPolynomials& axes, Sensitivities sensitivities) {
   if (!like.atProbes()) return simulateGroundFace(setup, axes, like.grid, sensitivities);
-  // At probe points each solve starts from `like`'s solution at the same point: axes that differ
-  // by a correction move the envelope point little, so Newton's method needs a few steps, and no
-  // contact line is solved for.
+  // At probe points each solve starts from `like`'s solution at the same point, moved to first
+  // order (solveEnvelopePointNear): axes that differ by a correction move the envelope point
+  // little, so Newton's method needs a few steps, and no contact line is solved for.
   GroundFace f;
   f.gash = like.gash;
   f.grid = like.grid;
@@ -110,7 +110,7 @@ Outcome<GroundFace> simulateGroundFaceLike(const GroundFace& like, const Sharpen
   f.envelope.reserve(like.envelope.size());
   for (std::size_t k = 0; k < like.points.size(); ++k) {
     const EnvelopePoint& from = like.envelope[k];
-    auto e = solveEnvelopePoint(setup, axes, like.points[k], EnvelopeGuess{from.t, from.phi, from.u, from.w}, sensitivities);
+    auto e = solveEnvelopePointNear(setup, axes, like.points[k], from, sensitivities);
     if (!e) {  // too far for the warm start: from the nominal motion, as the first simulation did
       auto fresh = simulateGroundFace(setup, axes, like.probes, like.grid, sensitivities);
       return fresh;
@@ -119,7 +119,7 @@ Outcome<GroundFace> simulateGroundFaceLike(const GroundFace& like, const Sharpen
   }
   f.meanPoint = like.meanPoint;
   const EnvelopePoint& m = like.meanEnvelope;
-  auto e = solveEnvelopePoint(setup, axes, f.meanPoint, EnvelopeGuess{m.t, m.phi, m.u, m.w}, sensitivities);
+  auto e = solveEnvelopePointNear(setup, axes, f.meanPoint, m, sensitivities);
   if (!e) return simulateGroundFace(setup, axes, like.probes, like.grid, sensitivities);
   f.meanEnvelope = *e;
   return f;

@@ -25,20 +25,27 @@ struct WheelContact {
   T nRadial() const { return (n.x() * r.x() + n.y() * r.y()) / R(); }
 };
 
+// The rotations of Eq. 3, fixed for a job: the cosines and sines of phi_1, gamma_m and eta.
+struct ContactRotations {
+  CosSin<double> phi1, gamma, tilt;
+};
+
+inline ContactRotations contactRotations(const UniversalSettings& s) {
+  return {cosSin(s.rotation.coefficient(0)), cosSin(s.settingAngle.coefficient(0)), cosSin(s.tilt)};
+}
+
 // Eq. 3 at w = 0: r_t = M_tc(eta) M_cb(gamma_m) M_ba(E_t, L_t) M_a1(phi_1) r_1. The centre
 // distance is a parameter of its own so that the boundary equation can solve for it.
 template <class T, class E>
-WheelContact<T> wheelContact(const ToothFace& face, const UniversalSettings& s, double normalSign,
-                             const E& centerDistance, const T& u, const T& w) {
-  using std::cos;
-  using std::sin;
-  const double phi1 = s.rotation.coefficient(0), gamma = s.settingAngle.coefficient(0);
-  const double ce = cos(s.tilt), se = sin(s.tilt), cg = cos(gamma), sg = sin(gamma);
-  const double cp = cos(phi1), sp = sin(phi1);
-  Vec3<T> r = rotateX(face.point(u, w), cp, sp);
+WheelContact<T> wheelContact(const ToothFace& face, const UniversalSettings& s, const ContactRotations& rotations,
+                             double normalSign, const E& centerDistance, const T& u, const T& w) {
+  const double ce = rotations.tilt.c, se = rotations.tilt.s, cg = rotations.gamma.c, sg = rotations.gamma.s;
+  const double cp = rotations.phi1.c, sp = rotations.phi1.s;
+  const auto face1 = face.pointAndNormal(u, w);
+  Vec3<T> r = rotateX(face1.point, cp, sp);
   r.x() += s.axialMovement.coefficient(0);
   r.y() -= centerDistance;
-  Vec3<T> n = rotateX(face.normal(u, w), cp, sp);
+  Vec3<T> n = rotateX(face1.normal, cp, sp);
   using std::sqrt;
   n *= normalSign / sqrt(n.squaredNorm());
   WheelContact<T> c;
@@ -46,6 +53,12 @@ WheelContact<T> wheelContact(const ToothFace& face, const UniversalSettings& s, 
   c.n = rotateX(rotateY(n, cg, sg), ce, -se);
   c.meshing = -c.n.x() * c.r.y() + c.n.y() * c.r.x();  // z_t x r_t = (-y_t, x_t, 0)
   return c;
+}
+
+template <class T, class E>
+WheelContact<T> wheelContact(const ToothFace& face, const UniversalSettings& s, double normalSign,
+                             const E& centerDistance, const T& u, const T& w) {
+  return wheelContact(face, s, contactRotations(s), normalSign, centerDistance, u, w);
 }
 
 // +1 or -1: the orientation that makes r_u x r_w point out of the tooth material, fixed once at

@@ -14,9 +14,10 @@ Outcome<double> contactCoordinate(const ToothFace& face, const UniversalSettings
                                   double normalSign, double u, double wGuess,
                                   const ContactSolverOptions& options) {
   const double E = s.centerDistance.coefficient(0);
+  const ContactRotations rotations = contactRotations(s);  // fixed: formed once, not per step
   double w = wGuess;
   for (int i = 0; i < options.maxIterations; ++i) {
-    const WheelContact<Dual<1>> c = wheelContact(face, s, normalSign, E, Dual<1>(u), variable<1>(w, 0));
+    const WheelContact<Dual<1>> c = wheelContact(face, s, rotations, normalSign, E, Dual<1>(u), variable<1>(w, 0));
     const double f = c.meshing.value(), df = c.meshing.derivatives()(0);
     if (!std::isfinite(f) || !std::isfinite(df) || df == 0.0) break;
     double step = f / df;

@@ -25,16 +25,17 @@ Outcome<void> checkPoints(const std::vector<MeasuredPoint>& points, const PointR
     const MeasuredPoint& p = points[k];
     if (!std::isfinite(p.r) || !std::isfinite(p.x) || !std::isfinite(p.deviation))
       return refuse(pointName(k), "must hold three finite numbers [r, x, deviation].");
-    const std::string at = "(r, x) = (" + numberText(p.r, 7) + ", " + numberText(p.x, 7) + ") mm";
+    // Written only for a refusal: formatting it for every point took most of the check's time.
+    const auto at = [&p] { return "(r, x) = (" + numberText(p.r, 7) + ", " + numberText(p.x, 7) + ") mm"; };
     if (std::abs(p.deviation) > region.maxDeviation)
       return refuse(pointName(k), "the deviation must lie within ±" + numberText(region.maxDeviation, 7) + " µm (10 mm); got " +
                                       numberText(p.deviation, 7) + " µm.");
     if (p.r < region.rootRadius - region.tolerance || p.r > region.outerRadius + region.tolerance)
-      return refuse(pointName(k), at + " is off the rake face, which runs from the gash root (radius " +
+      return refuse(pointName(k), at() + " is off the rake face, which runs from the gash root (radius " +
                                       numberText(region.rootRadius, 7) + " mm) to the outer radius (" + numberText(region.outerRadius, 7) +
                                       " mm).");
     if (std::abs(p.x) > region.axialReach)
-      return refuse(pointName(k), at + " lies outside the ground region: the face ends at x = ±" +
+      return refuse(pointName(k), at() + " lies outside the ground region: the face ends at x = ±" +
                                       numberText(region.axialReach, 7) + " mm.");
   }
   // Duplicates: sorted by r, each point is compared with those within the tolerance in r after it.

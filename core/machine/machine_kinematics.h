@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 
+#include "autodiff.h"
 #include "axis_polynomials.h"
 #include "rotations.h"
 
@@ -28,27 +29,31 @@ struct WheelFramePoint {
   Vec3<T> qDot;  // dq/dw with the hob point held fixed: minus the relative velocity of Eq. 11
 };
 
+// psi_c by its cosine and sine, which are fixed for a job.
 template <class T, class P>
-WheelFramePoint<T> hobPointInWheelFrame(const Vec3<P>& point, const AxisState<T>& s,
-                                        const MachineConstants& m, double psiC) {
-  using std::cos;
-  using std::sin;
+WheelFramePoint<T> hobPointInWheelFrame(const Vec3<P>& point, const AxisState<T>& s, const MachineConstants& m,
+                                        const CosSin<double>& psiC) {
   const Vec3<T> ex(T(1), T(0), T(0)), ey(T(0), T(1), T(0));
-  const T cA = cos(s(Axis::A)), sA = sin(s(Axis::A)), cB = cos(s(Axis::B)), sB = sin(s(Axis::B));
+  const CosSin<T> A = cosSin(s(Axis::A)), B = cosSin(s(Axis::B));
   const Vec3<T> G = point.template cast<T>();
-  const Vec3<T> a = rotateX(G, cA, sA);
+  const Vec3<T> a = rotateX(G, A.c, A.s);
   const Vec3<T> aDot = s.rateOf(Axis::A) * ex.cross(a);
   const Vec3<T> b = a + Vec3<T>(s(Axis::X), -s(Axis::Y), T(-m.K1));
   const Vec3<T> bDot = aDot + Vec3<T>(s.rateOf(Axis::X), -s.rateOf(Axis::Y), T(0));
-  const Vec3<T> c = rotateY(b, cB, sB);
-  const Vec3<T> cDot = s.rateOf(Axis::B) * ey.cross(c) + rotateY(bDot, cB, sB);
-  const double cC = std::cos(psiC), sC = std::sin(psiC);
+  const Vec3<T> c = rotateY(b, B.c, B.s);
+  const Vec3<T> cDot = s.rateOf(Axis::B) * ey.cross(c) + rotateY(bDot, B.c, B.s);
   WheelFramePoint<T> w;
-  w.q = rotateX(Vec3<T>(c - Vec3<T>(T(0), T(0), T(m.K2))), cC, -sC);
+  w.q = rotateX(Vec3<T>(c - Vec3<T>(T(0), T(0), T(m.K2))), psiC.c, -psiC.s);
   w.q.z() -= s(Axis::Z);
-  w.qDot = rotateX(cDot, cC, -sC);
+  w.qDot = rotateX(cDot, psiC.c, -psiC.s);
   w.qDot.z() -= s.rateOf(Axis::Z);
   return w;
+}
+
+template <class T, class P>
+WheelFramePoint<T> hobPointInWheelFrame(const Vec3<P>& point, const AxisState<T>& s,
+                                        const MachineConstants& m, double psiC) {
+  return hobPointInWheelFrame(point, s, m, cosSin(psiC));
 }
 
 }  // namespace hobsharp

@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "autodiff.h"
 #include "rotations.h"
 #include "units.h"
 
@@ -44,21 +45,38 @@ struct ToothFace {
   // Eq. 2.
   template <class T>
   Vec3<T> point(const T& u, const T& w) const {
-    const T y0 = u + y0Pitch();
-    if (!helical()) return Vec3<T>(w, y0, T(rakeOffset));
-    using std::cos;
-    using std::sin;
-    const T c = cos(w), s = sin(w);
-    return Vec3<T>(screwParameter * w, y0 * c - rakeOffset * s, y0 * s + rakeOffset * c);
+    if (!helical()) return Vec3<T>(w, u + y0Pitch(), T(rakeOffset));
+    return pointAt(u, w, cosSin(w));
   }
 
   // r_u x r_w, not normalised: (y0, p sin beta, -p cos beta), or (0, 0, -1) for a straight gash.
   template <class T>
   Vec3<T> normal(const T& u, const T& w) const {
     if (!helical()) return Vec3<T>(T(0), T(0), T(-1));
-    using std::cos;
-    using std::sin;
-    return Vec3<T>(u + y0Pitch(), screwParameter * sin(w), -screwParameter * cos(w));
+    return normalAt(u, cosSin(w));
+  }
+
+  // Both, from one cosine and sine of beta.
+  template <class T>
+  struct PointAndNormal {
+    Vec3<T> point, normal;
+  };
+  template <class T>
+  PointAndNormal<T> pointAndNormal(const T& u, const T& w) const {
+    if (!helical()) return {point(u, w), normal(u, w)};
+    const CosSin<T> beta = cosSin(w);
+    return {pointAt(u, w, beta), normalAt(u, beta)};
+  }
+
+ private:
+  template <class T>
+  Vec3<T> pointAt(const T& u, const T& w, const CosSin<T>& beta) const {
+    const T y0 = u + y0Pitch();
+    return Vec3<T>(screwParameter * w, y0 * beta.c - rakeOffset * beta.s, y0 * beta.s + rakeOffset * beta.c);
+  }
+  template <class T>
+  Vec3<T> normalAt(const T& u, const CosSin<T>& beta) const {
+    return Vec3<T>(u + y0Pitch(), screwParameter * beta.s, -screwParameter * beta.c);
   }
 };
 

@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "rotations.h"
+
 namespace hobsharp {
 
 template <int N>
@@ -20,6 +22,23 @@ Dual<N> variable(double v, int i) {
 template <int N>
 Dual<N> seeded(double v, const Eigen::Matrix<double, N, 1>& derivatives) {
   return Dual<N>(v, derivatives);
+}
+
+// cos and sin of a differentiated angle from one evaluation of both (the figures of cos(x), sin(x)).
+template <class Der>
+CosSin<Eigen::AutoDiffScalar<Der>> cosSin(const Eigen::AutoDiffScalar<Der>& x) {
+  using Scalar = Eigen::AutoDiffScalar<Der>;
+  const double c = std::cos(x.value()), s = std::sin(x.value());
+  return {Scalar(c, x.derivatives() * (-s)), Scalar(s, x.derivatives() * c)};
+}
+
+// x, differentiated in M directions, as a function of N >= M directions: its directions are
+// first, first + 1, ..., first + M - 1 of the N, and it does not depend on the others.
+template <int N, int M>
+Dual<N> embedded(const Dual<M>& x, int first) {
+  Eigen::Matrix<double, N, 1> d = Eigen::Matrix<double, N, 1>::Zero();
+  d.template segment<M>(first) = x.derivatives();
+  return Dual<N>(x.value(), d);
 }
 
 }  // namespace hobsharp

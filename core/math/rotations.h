@@ -3,12 +3,22 @@
 // Ry(t) = [c 0 s; 0 1 0; -s 0 c], as in the matrices of Eqs. 2, 3 and 7.
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Core>
 
 namespace hobsharp {
 
 template <class T>
 using Vec3 = Eigen::Matrix<T, 3, 1>;
+
+// The cosine and sine of one angle, as the rotations take them.
+template <class T>
+struct CosSin {
+  T c, s;
+};
+
+inline CosSin<double> cosSin(double angle) { return {std::cos(angle), std::sin(angle)}; }
 
 template <class T, class C, class S>
 Vec3<T> rotateX(const Vec3<T>& v, const C& c, const S& s) {
