@@ -229,6 +229,41 @@ TEST(WheelCorrection, WithProbeNoiseTheFaceStaysWithinTheNoise) {
   }
 }
 
+// A wheel the case records as dressed (wheel.profileOffset: say an earlier pass's dressing O, at
+// the correction's points) is dressed back to the conjugate wheel, which grinds the nominal face:
+// the dressing takes O away with the identified deviation W, and the face after the pass is as
+// good as with the undressed record. (Dressing -W alone would return the wheel to O, whose face is
+// worse than the one measured, so the run would be kept.) The dressing itself differs from the
+// undressed record's less O by up to 0.4 µm: with O on the wheel the rows are ground at other
+// wheel radii, and the split between axes and wheel is decided there.
+TEST(WheelCorrection, TheCasesOwnOffsetIsDressedAwayToo) {
+  const Scene plain = sceneOf(paperCase(), faceShape(2), 1e3);
+  const Pass a = onePass(plain, 1e-4);
+  const WheelCorrection& wa = *a.e.wheelCorrection;
+  const std::vector<double> O = {1.5, -2.0, 0.5, 3.0, -1.0};  // µm at the correction's points
+  ASSERT_EQ(wa.knots.R.size(), O.size());
+  const Eigen::Map<const Eigen::VectorXd> o(O.data(), static_cast<int>(O.size()));
+  // The machine's wheel is the true one with O dressed on it, and the case says O.
+  CaseInput dressedCase = paperCase();
+  dressedCase.wheelProfileOffset = WheelPointsInput{wa.knots.R, O};
+  const Scene recorded{jobOf(dressedCase), withWheelDeviation(plain.truth, wa.knots, o), plain.error};
+  const Pass b = onePass(recorded, 1e-4);  // its onGrid replaces O by the dressing: not the wheel after
+  const Correction& kb = *b.e.correction;
+  const WheelCorrection& wb = *b.e.wheelCorrection;
+  EXPECT_FALSE(kb.runKept) << kb.verdict;
+  ASSERT_EQ(wb.knots.R, wa.knots.R);
+  // The dressing is -(O + W): the case's offset goes with the identified deviation.
+  for (size_t k = 0; k < O.size(); ++k) EXPECT_NEAR(wb.offset[k], -(wb.deviation[k] + O[k]), 1e-12) << k;
+  // The wheel after the pass: the true one, O and the dressing on the same points.
+  const Eigen::Map<const Eigen::VectorXd> d(wb.offset.data(), static_cast<int>(wb.offset.size()));
+  const SharpeningSetup after = withWheelDeviation(plain.truth, wa.knots, o + d);
+  const double onGrid = faceOn(after, withMachineError(kb.axes, plain.error), plain.job.grid).squaredNorm();
+  std::printf("[ figures  ] Tab. 1 degree 2 + axes, the case's wheel dressed by O: %.2e µm² (predicted %.2e; undressed record %.2e)\n",
+              onGrid, kb.after.sse, a.onGrid);
+  EXPECT_LT(onGrid, 0.01);
+  EXPECT_NEAR(onGrid, a.onGrid, 0.5 * a.onGrid);
+}
+
 // The split: a wheel shape alone is the wheel's; the axes move little for it.
 TEST(WheelCorrection, AWheelShapeAloneIsLeftToTheWheel) {
   const Scene s = sceneOf(paperCase(), faceShape(2), 0);

@@ -79,12 +79,15 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
 // nominal - E (machine_error.h); `after` and `afterRounded` are re-simulated with the nonlinear
 // model, plus the part of the measurement no axis makes.
 // `identified`, when given, is the machine error identified elsewhere (with the wheel,
-// wheel_error.h): used in place of identifying it here (nonlinear method).
+// wheel_error.h): used in place of identifying it here (nonlinear method). `dressed`, when given,
+// is the setup the predicted faces are ground with: the wheel as a dressing leaves it
+// (wheel_correction.h), not the wheel `runFace` was ground with.
 struct MachineErrorEstimate;
 Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                         const AxisPolynomials& run, const GroundFace& runFace,
                                         const Eigen::MatrixXd& measured, const CorrectionOptions& options,
-                                        const MachineErrorEstimate* identified = nullptr);
+                                        const MachineErrorEstimate* identified = nullptr,
+                                        const SharpeningSetup* dressed = nullptr);
 
 // The same for a measurement at a measuring machine's probe points (µm, one per point): the
 // correction's rows are exactly those points (the run face simulated there, its sensitivities

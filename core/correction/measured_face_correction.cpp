@@ -31,13 +31,14 @@ bool sameAxes(const AxisPolynomials& a, const AxisPolynomials& b) {
 }
 
 // The face the machine grinds when `commanded` is run and it adds `error`, plus the part of the
-// measurement no axis makes (which stays), on the probe grid. `known` is a face already
-// simulated for the axes `knownAxes` (the nominal ones, in a first pass: nominal - E + E).
+// measurement no axis makes (which stays), on the probe grid. `runFace` is a face already
+// simulated for the axes `knownAxes` (the nominal ones, in a first pass: nominal - E + E), with
+// `setup`'s wheel when `sameWheel`.
 Outcome<Topography> predictedFace(const SharpeningSetup& setup, const GroundFace& runFace,
                                   const AxisPolynomials& commanded, const AxisPolynomials& error,
-                                  const Eigen::MatrixXd& unexplained, const AxisPolynomials& knownAxes) {
+                                  const Eigen::MatrixXd& unexplained, const AxisPolynomials& knownAxes, bool sameWheel) {
   const AxisPolynomials actual = plusError(commanded, error);
-  if (sameAxes(actual, knownAxes)) return topographyFromNormal(runFace, normalOf(runFace) + unexplained);
+  if (sameWheel && sameAxes(actual, knownAxes)) return topographyFromNormal(runFace, normalOf(runFace) + unexplained);
   auto f = simulateGroundFaceLike(runFace, setup, actual, Sensitivities::Skip);
   if (!f) return f.error();
   return topographyFromNormal(runFace, normalOf(*f) + unexplained);
@@ -106,7 +107,7 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
 Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                         const AxisPolynomials& run, const GroundFace& runFace,
                                         const Eigen::MatrixXd& measured, const CorrectionOptions& o,
-                                        const MachineErrorEstimate* identified) {
+                                        const MachineErrorEstimate* identified, const SharpeningSetup* dressed) {
   Correction c;
   Eigen::MatrixXd unexplained;
   Eigen::MatrixXd coefficientCov;  // of the change of c.coefficients per unit noise variance
@@ -154,7 +155,8 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
                                       run[c.coefficients[j].axis].a[c.coefficients[j].degree];
     coefficientCov = m->covariancePerNoise;
   }
-  auto after = predictedFace(setup, runFace, c.axes, c.identifiedError, unexplained, run);
+  const SharpeningSetup& grinding = dressed ? *dressed : setup;  // the wheel the predicted faces are ground with
+  auto after = predictedFace(grinding, runFace, c.axes, c.identifiedError, unexplained, run, !dressed);
   if (!after) return after.error();
   c.after = *after;
   // Never a proposal worse than the run: the same axes again grind the face measured. (A run that
@@ -170,7 +172,9 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   const MotionRange range = motionRange(runFace);
   const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
   c.roundedAxes = roundToResolution(c.axes, o.resolution, reach);
-  auto rounded = predictedFace(setup, runFace, c.roundedAxes, c.identifiedError, unexplained, run);
+  const bool dressing = dressed && !c.runKept;  // a run kept keeps its wheel as well as its axes
+  auto rounded = predictedFace(dressing ? *dressed : setup, runFace, c.roundedAxes, c.identifiedError, unexplained, run,
+                               !dressing);
   if (!rounded) return rounded.error();
   c.afterRounded = *rounded;
   c.uncorrectableShare = c.before.sse > 0 ? std::min(1.0, c.after.sse / c.before.sse) : 0.0;

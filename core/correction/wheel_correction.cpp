@@ -1,6 +1,7 @@
 #include "wheel_correction.h"
 #include "face_vectors.h"
 #include "number_text.h"
+#include "wheel_surface.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +10,8 @@
 
 namespace hobsharp {
 namespace {
+
+constexpr double kMicrometresPerMm = 1000.0;
 
 // The sentence for the engineer when the solve converged and a change is proposed; otherwise the
 // axes' own sentence (stalled, not converged, run kept) stands.
@@ -46,10 +49,16 @@ Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup
   if (!knots) return knots.error();
   auto estimate = identifyMachineAndWheelError(setup, run, runFace, measured, o, *knots);
   if (!estimate) return estimate.error();
-  // With -W dressed, the wheel is the case's again (W and -W through the same points cancel
-  // exactly), so the axes' figures, re-simulated with the case's wheel plus what neither makes,
-  // are those of both applied.
-  auto axes = correctMeasuredFace(setup, nominal, run, runFace, measured, o, &estimate->axes);
+  // The dressing takes the case's own offset O away too, so that the wheel after the pass is the
+  // conjugate one, which grinds the nominal face: -(O + W) at the points. W and -W through the same
+  // points cancel exactly; of O what a spline through the points cannot take stays, O - O_K. The
+  // axes' figures are re-simulated with that wheel, plus what neither makes.
+  const int K = static_cast<int>(knots->R.size());
+  Eigen::VectorXd current = Eigen::VectorXd::Zero(K);  // O at the points, µm
+  for (int k = 0; k < K; ++k) current(k) = kMicrometresPerMm * offsetAt(setup.wheel, knots->R[k]).value;
+  const bool undressed = !setup.wheel.hasOffset();
+  const SharpeningSetup dressed = withWheelDeviation(setup, *knots, -current);
+  auto axes = correctMeasuredFace(setup, nominal, run, runFace, measured, o, &estimate->axes, undressed ? nullptr : &dressed);
   if (!axes) return axes.error();
 
   AxesAndWheelCorrection out{std::move(axes).value(), {}};
@@ -60,7 +69,7 @@ Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup
   w.used = estimate->wheelUsed;
   w.withinNoise = estimate->wheelWithinNoise;
   w.amplifying = estimate->wheelAmplifying;
-  const Eigen::VectorXd dress = c.runKept ? Eigen::VectorXd::Zero(estimate->deviation.size()) : Eigen::VectorXd(-estimate->deviation);
+  const Eigen::VectorXd dress = c.runKept ? Eigen::VectorXd::Zero(K) : Eigen::VectorXd(-estimate->deviation - current);
   for (int k = 0; k < dress.size(); ++k) {
     w.deviation.push_back(estimate->deviation(k));
     w.offset.push_back(dress(k));

@@ -1,10 +1,12 @@
 // The wheel-profile correction (README §Wheel-profile correction, `correction.wheel: true`): the
 // axes and a wheel-profile offset from one measured face. The machine error E and the wheel's
 // deviation W are identified together (wheel_error.h); the proposal is to run nominal - E and to
-// dress -W in addition to the wheel's current offset. Every figure of the axes' correction
+// dress -(O + W) in addition to the wheel's current offset O (the case's), which brings the wheel
+// back to the conjugate one that grinds the nominal face. Every figure of the axes' correction
 // (correction.h) then holds with both applied: the face predicted after the pass is re-simulated
-// with the true wheel plus the dressing and the true axes, i.e. the case's wheel, plus what
-// neither makes.
+// with the true wheel plus the dressing and the true axes, i.e. the conjugate wheel plus what of O
+// a spline through the dressing's points cannot take (none when O is such a spline, as an earlier
+// pass's dressing is), plus what neither makes.
 #pragma once
 
 #include <vector>
@@ -20,7 +22,7 @@ namespace hobsharp {
 
 struct WheelCorrection {
   WheelKnots knots;
-  std::vector<double> offset;     // µm at knots.R: what to dress in addition to the current offset (-W)
+  std::vector<double> offset;     // µm at knots.R: what to dress in addition to the current offset O, -(O + W)
   std::vector<double> deviation;  // µm at knots.R: W, the wheel's identified deviation from the case's wheel
   // The corrected axial profile: the current profile (with the case's offset) plus `offset`, at the
   // conjugate profile's points given (Fig. 4's), for a CNC dresser.

@@ -80,6 +80,8 @@ test('one topography per gash from CSV files: the per-gash table, the spacing, a
   const file = (name, text) => ({ name, mimeType: 'text/csv', buffer: Buffer.from(text) });
   // A file of the wrong shape: named, nothing changes.
   await page.setInputFiles('#gash-files', [file('gash-1.csv', grid(0)), file('gash-2.csv', '1, 2\n3, 4\n')]);
+  // The files are read asynchronously: the message comes when they have been.
+  await page.waitForFunction(() => document.querySelector('#tolerance-error').textContent !== '');
   assert.match(await page.textContent('#tolerance-error'), /^gash-2\.csv: The grid has 5 radial lines .* The gashes in use are unchanged\.$/);
   assert.ok(await page.isHidden('#per-gash'));
   await afterResult(page, () => page.setInputFiles('#gash-files', ['gash-1.csv', 'gash-2.csv', 'gash-3.csv', 'gash-10.csv']
