@@ -1,12 +1,9 @@
 #include "face_vectors.h"
+#include "units.h"
 
 #include <cstddef>
 
 namespace hobsharp {
-
-namespace {
-constexpr double kMicrometresPerMm = 1000.0;
-}
 
 Eigen::VectorXd flat(const Eigen::MatrixXd& m) {
   Eigen::VectorXd v(m.size());

@@ -12,13 +12,13 @@
 
 #include "face_cache.h"
 #include "face_vectors.h"
-#include "solve_report.h"
 #include "sensitivity_matrix.h"
+#include "solve_report.h"
+#include "units.h"
 
 namespace hobsharp {
 namespace {
 
-constexpr double kMicrometresPerMm = 1000.0;
 // Directions whose singular value is below this share of the largest are numerically null.
 constexpr double kNumericalRank = 1e-12;
 // How often the directions are decided: at E = 0, then at the solution (README, "Correction").

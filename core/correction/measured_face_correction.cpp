@@ -8,11 +8,10 @@
 #include "face_vectors.h"
 #include "machine_error.h"
 #include "number_text.h"
+#include "units.h"
 
 namespace hobsharp {
 namespace {
-
-constexpr double kMicrometresPerMm = 1000.0;
 
 Eigen::MatrixXd normalOf(const GroundFace& f) {
   Eigen::MatrixXd n(f.rows(), f.cols());

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "topography.h"
+#include "units.h"
 
 namespace hobsharp {
 
@@ -16,7 +17,6 @@ Eigen::MatrixXd SensitivityMatrix::topography(int j) const {
 }
 
 SensitivityMatrix sensitivityMatrix(const GroundFace& face, const std::vector<Coefficient>& coefficients) {
-  constexpr double kMicrometresPerMm = 1000.0;
   SensitivityMatrix S;
   S.coefficients = coefficients;
   S.rows = face.rows();  // at probe points: one row per point, one column

@@ -1,6 +1,7 @@
 #include "wheel_correction.h"
 #include "face_vectors.h"
 #include "number_text.h"
+#include "units.h"
 #include "wheel_surface.h"
 
 #include <algorithm>
@@ -10,8 +11,6 @@
 
 namespace hobsharp {
 namespace {
-
-constexpr double kMicrometresPerMm = 1000.0;
 
 // The sentence for the engineer when the solve converged and a change is proposed; otherwise the
 // axes' own sentence (stalled, not converged, run kept) stands.

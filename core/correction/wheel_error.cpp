@@ -12,16 +12,16 @@
 
 #include "face_cache.h"
 #include "face_vectors.h"
-#include "solve_report.h"
 #include "number_text.h"
 #include "sensitivity_matrix.h"
+#include "solve_report.h"
+#include "units.h"
 #include "wheel_offset_sensitivity.h"
 #include "wheel_profile.h"
 
 namespace hobsharp {
 namespace {
 
-constexpr double kMicrometresPerMm = 1000.0;
 // As machine_error.cpp: the numerically null directions, and how often the directions are decided.
 constexpr double kNumericalRank = 1e-12;
 constexpr int kDecisionRounds = 3;

@@ -1,12 +1,11 @@
 #include "topography.h"
+#include "units.h"
 
 #include <cmath>
 #include <limits>
 
 namespace hobsharp {
 namespace {
-
-constexpr double kMicrometresPerMm = 1000.0;
 
 // Bilinear interpolation of an evenly spaced grid at its centre.
 double atCentre(const Eigen::MatrixXd& m) {

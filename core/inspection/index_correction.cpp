@@ -4,11 +4,11 @@
 #include <numeric>
 
 #include "face_grid.h"
+#include "units.h"
 
 namespace hobsharp {
 
 double deviationPerIndexAngle(const SharpeningSetup& setup, double r, double x) {
-  constexpr double kMicrometresPerMm = 1000.0;
   const GridPoint g = gridPoint(setup, r, x);
   const Eigen::Vector3d turn(0, -g.p.z(), g.p.y());  // x_1 x p
   return -kMicrometresPerMm * g.n.dot(turn);

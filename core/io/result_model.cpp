@@ -369,7 +369,6 @@ void visitGearEffect(const Evaluation& e, ResultVisitor& v, bool every) {
 
 // Wheel offsets are computed in mm and shown in µm.
 std::vector<double> micrometres(const std::vector<double>& mm) {
-  constexpr double kMicrometresPerMm = 1000.0;
   std::vector<double> um;
   for (double x : mm) um.push_back(x * kMicrometresPerMm);
   return um;

@@ -8,7 +8,6 @@
 namespace hobsharp {
 namespace {
 
-
 // The index of the line within `tolerance` of v, or -1.
 int lineAt(const std::vector<double>& lines, double v, double tolerance) {
   for (std::size_t i = 0; i < lines.size(); ++i)

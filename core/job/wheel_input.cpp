@@ -6,12 +6,12 @@
 #include <sstream>
 
 #include "dressed_wheel.h"
+#include "units.h"
 #include "wheel_profile.h"
 
 namespace hobsharp {
 namespace {
 
-constexpr double kMicrometresPerMm = 1000.0;
 // The points of the conjugate profile the contact range is taken from (as Fig. 4 shows it).
 constexpr int kContactRangePoints = 41;
 // How far a given radius may lie past the contact range, mm (as a grid past the face).
