@@ -11,9 +11,9 @@
 //   aside      a measured grid the calculator refused was set aside: {error}
 //   status     state.status changed
 //   notice     state.notice changed (a message that stays until the user changes something)
-//   view       what the views show changed: state.view (normal or circular deviation),
-//              state.surfaces (the 3D surfaces shown), or state.pinned (a pinned result, whose
-//              difference the views then show)
+//   view       what the views show changed: state.view (normal or circular deviation), or
+//              state.pinned (a pinned result, whose difference the views then show)
+//   surfaces   state.surfaces changed: the 3D surfaces shown beside the maps, or not
 //   plots      every plot shows the newest result: {at}
 import { CASE_FORMAT } from './limits.js';
 
@@ -101,7 +101,7 @@ export function createStore(state = initialState()) {
     },
     setSurfaces(on) {
       state.surfaces = on;
-      store.emit('view');
+      store.emit('surfaces');
     },
     pin(pinned) {
       state.pinned = pinned;

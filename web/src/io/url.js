@@ -37,5 +37,5 @@ export function caseFromHash(hash) {
 export function mountLink(store) {
   const write = () => history.replaceState(history.state, '', caseToHash(savedCase(store.state)));
   store.on('result', write);
-  store.on('view', () => { if (store.state.result) write(); });  // the deviation shown, the 3D surfaces
+  for (const event of ['view', 'surfaces']) store.on(event, () => { if (store.state.result) write(); });  // as shown
 }

@@ -66,15 +66,14 @@ function renderFigures(state) {
   $('#figures-after').textContent = v.afterFigures;
 }
 
-// The 3D surfaces are drawn only while "3D surfaces" is ticked: Plotly's WebGL surface takes
-// seconds in a browser without a graphics card, so the maps come first and alone by default.
-const show3d = () => $('#show-3d').checked;
+// The 3D surfaces are drawn only while "3D surfaces" is ticked (state.surfaces): Plotly's WebGL
+// surface takes seconds in a browser without a graphics card, so the maps come first and alone by default.
 
 // Measured and after correction share one colour range (and z range), so that they compare.
 function drawSurfaces({ Plotly, result: r, state }) {
   const v = shown(state);
   const [before, after] = [$('#plot-before-3d'), $('#plot-after-3d')];
-  if (!show3d()) return;
+  if (!state.surfaces) return;
   const range = colourRange(v.before, v.after);
   const spec = (z, title) => ({ x: r.topography.x, y: r.topography.r, z, range, title });
   after.hidden = !v.after;
@@ -90,27 +89,27 @@ function drawMaps({ Plotly, result: r, state }) {
     v.after ? drawMap(Plotly, 'plot-after-2d', spec(v.after, v.afterName, v.afterPoints)) : Plotly.purge('plot-after-2d')]);
 }
 
-// The switches show the state (a loaded case or link may set them: state.view, state.surfaces).
+// The switch shows state.surfaces (a loaded case or link may set it); opening the surfaces draws
+// them, closing them frees their WebGL.
 function mount3dSwitch(store, plots) {
-  const apply = () => {
+  $('#show-3d').addEventListener('change', (event) => store.setSurfaces(event.target.checked));
+  store.on('surfaces', (_, state) => {
     const [before, after] = [$('#plot-before-3d'), $('#plot-after-3d')];
-    before.hidden = after.hidden = !show3d();
-    if (show3d()) plots.redraw();
-    else if (self.Plotly) { self.Plotly.purge(before); self.Plotly.purge(after); }  // frees their WebGL
-  };
-  $('#show-3d').addEventListener('change', () => { apply(); store.setSurfaces(show3d()); });
-  store.on('view', (_, state) => {
-    if (show3d() !== state.surfaces) { $('#show-3d').checked = state.surfaces; apply(); }
-    for (const input of document.querySelectorAll('input[name="view"]')) input.checked = input.value === state.view;
+    $('#show-3d').checked = state.surfaces;
+    before.hidden = after.hidden = !state.surfaces;
+    if (state.surfaces) plots.redraw();
+    else if (self.Plotly) { self.Plotly.purge(before); self.Plotly.purge(after); }
   });
 }
 
 export function mountTopography(store, plots) {
+  const radios = document.querySelectorAll('input[name="view"]');
   store.on('result', (_, state) => renderFigures(state));
-  store.on('view', (_, state) => { if (state.result) renderFigures(state); });
-  for (const input of document.querySelectorAll('input[name="view"]')) {
-    input.addEventListener('change', () => store.setView(input.value));
-  }
+  store.on('view', (_, state) => {
+    for (const input of radios) input.checked = input.value === state.view;  // a loaded case may set it
+    if (state.result) renderFigures(state);
+  });
+  for (const input of radios) input.addEventListener('change', () => store.setView(input.value));
   mount3dSwitch(store, plots);
   plots.add(drawMaps);
   plots.add(drawSurfaces, { later: true });
