@@ -3,6 +3,9 @@
 #   ./hobsharp.sh serve   install what is missing, build, and serve the calculator on localhost
 #   ./hobsharp.sh test    install what is missing, build everything, and run every test
 #   ./hobsharp.sh bench   build and run the benchmarks
+#   ./hobsharp.sh validate [--scenarios N] [--seed S] [--docs]
+#                         the validation campaign on random hobs (docs/validation.md); --docs
+#                         writes its table, JSON and plot into docs/validation/
 set -euo pipefail
 cd "$(dirname "$0")"
 ROOT=$PWD
@@ -132,8 +135,20 @@ case "${1:-}" in
     node tests/benchmark-wasm.mjs "$BUILD/bench-native.json"
     node tests/benchmark-page.mjs
     ;;
+  validate)
+    shift
+    install_missing
+    cmake -S "$ROOT" -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake --build "$BUILD" -j"$JOBS" --target hobsharp_validate
+    OUT=$ROOT/build/validation
+    ARGS=()
+    for a in "$@"; do
+      if [ "$a" = --docs ]; then OUT=$ROOT/docs/validation; else ARGS+=("$a"); fi
+    done
+    "$BUILD/tests/hobsharp_validate" --out "$OUT" "${ARGS[@]}"
+    ;;
   *)
-    echo "usage: $0 serve|test|bench" >&2
+    echo "usage: $0 serve|test|bench|validate" >&2
     exit 2
     ;;
 esac

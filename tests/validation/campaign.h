@@ -1,0 +1,53 @@
+// The campaign's table (docs/validation.md): per scenario class the distribution of the face a
+// correction leaves between the probe points (median, 90th and 95th percentile, worst), and the
+// share of scenarios meeting each target of issue 20, beside the share the target asks for.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "run_scenario.h"
+
+namespace hobsharp::validation {
+
+struct Target {
+  std::string what;      // the target in words, with its unit
+  double required = 0;   // the share it asks for, 0..1
+  int met = 0, of = 0;   // scenarios meeting it, scenarios judged
+  double share() const { return of > 0 ? static_cast<double>(met) / of : 0.0; }
+  bool holds() const { return of > 0 && share() >= required; }
+};
+
+struct ClassSummary {
+  ScenarioClass kind = ScenarioClass::Medium;
+  int count = 0, refused = 0, unjudged = 0;
+  // The face after the last pass, between the probe points, µm rms: over the judged scenarios
+  // (a refused one counts as the face before the pass).
+  double median = 0, p90 = 0, p95 = 0, worst = 0;
+  std::vector<double> finals;  // sorted, for the empirical distribution
+  std::vector<Target> targets;
+};
+
+struct Campaign {
+  std::uint64_t seed = 0;
+  int count = 0;
+  double seconds = 0;
+  std::vector<ClassSummary> classes;
+  std::vector<Target> bounds;  // the prediction's bound, over every class
+  std::vector<ScenarioOutcome> outcomes;
+};
+
+Campaign summarise(std::uint64_t seed, std::vector<ScenarioOutcome> outcomes, double seconds);
+
+// The face after the last pass between the probe points, µm rms (the face before the first pass
+// when a pass was refused).
+double finalRms(const ScenarioOutcome& o);
+
+nlohmann::json toJson(const Campaign& c);
+std::string tableText(const Campaign& c);      // the table as the terminal prints it
+std::string markdownTable(const Campaign& c);  // the same for docs/validation.md
+
+}  // namespace hobsharp::validation

@@ -1,0 +1,154 @@
+#include "run_scenario.h"
+
+#include <chrono>
+#include <cmath>
+#include <random>
+
+#include "cubic_spline.h"
+#include "evaluation.h"
+#include "face_vectors.h"
+#include "ground_face.h"
+#include "sharpening_job.h"
+#include "topography.h"
+
+namespace hobsharp::validation {
+namespace {
+
+// The probe noise declared for a noise-free measurement, µm: a probe far better than any real one,
+// so that the correction uses every direction the face shows.
+constexpr double kNoiseFreeDeclared = 0.01;
+
+// An offset (µm at radii R) as a spline, evaluated at R.
+double offsetAt(const WheelPointsInput& o, double R) {
+  return CubicSpline(o.R, o.values).value(R);
+}
+
+// The sum of two offsets at the radii of `at`.
+WheelPointsInput sumAt(const WheelPointsInput& at, const std::optional<WheelPointsInput>& a,
+                       const std::optional<WheelPointsInput>& b) {
+  WheelPointsInput s;
+  s.R = at.R;
+  for (double R : at.R) s.values.push_back((a ? offsetAt(*a, R) : 0.0) + (b ? offsetAt(*b, R) : 0.0));
+  return s;
+}
+
+FaceGrid denseGrid(const FaceGrid& g) {
+  return FaceGrid::even(kDenseFactor * (g.rows() - 1) + 1, kDenseFactor * (g.cols() - 1) + 1, g.r.front(), g.r.back(),
+                        g.x.front(), g.x.back());
+}
+
+// The machine: the engineer's case with the wheel it really has (the recorded offset plus the
+// wheel's own shape).
+Outcome<SharpeningJob> machineJob(const Scenario& s, const std::optional<WheelPointsInput>& recorded) {
+  CaseInput c = s.input;
+  if (s.wheelError) c.wheelProfileOffset = sumAt(*s.wheelError, recorded, s.wheelError);
+  else if (recorded) c.wheelProfileOffset = recorded;
+  return resolveJob(c);
+}
+
+Outcome<double> rmsOf(const SharpeningJob& machine, const AxisPolynomials& commanded, const AxisPolynomials& error,
+                      const FaceGrid& grid) {
+  auto f = simulateGroundFace(machine.setup, plusError(commanded, error), grid, Sensitivities::Skip);
+  if (!f) return f.error();
+  return topographyOf(*f).rms;
+}
+
+}  // namespace
+
+ScenarioOutcome runScenario(const Scenario& s) {
+  const auto start = std::chrono::steady_clock::now();
+  ScenarioOutcome out;
+  out.scenario = s;
+  std::mt19937_64 noise(s.seed * 0x94D049BB133111EBull + static_cast<std::uint64_t>(s.index) + 7);
+  std::normal_distribution<double> gauss(0, 1);
+
+  std::optional<WheelPointsInput> recorded;  // the wheel offset the case records (earlier dressings)
+  auto first = resolveJob(s.input);
+  if (!first) {
+    out.judged = false;
+    out.message = first.error().message;
+    return out;
+  }
+  AxisPolynomials run = first->nominalAxes;
+  const FaceGrid dense = denseGrid(first->grid);
+  {
+    auto machine = machineJob(s, recorded);
+    auto r = machine ? rmsOf(*machine, run, s.error, dense) : Outcome<double>(machine.error());
+    if (!r) {
+      out.judged = false;
+      out.message = "the judging grid: " + r.error().message;
+      return out;
+    }
+    out.initialDenseRms = *r;
+  }
+  for (int pass = 0; pass < s.spec.passes; ++pass) {
+    PassOutcome p;
+    auto machine = machineJob(s, recorded);
+    if (!machine) {
+      p.refused = true;
+      p.message = "the machine's wheel: " + machine.error().message;
+      out.passes.push_back(p);
+      break;
+    }
+    auto ground = simulateGroundFace(machine->setup, plusError(run, s.error), machine->grid, Sensitivities::Skip);
+    if (!ground) {
+      out.judged = false;
+      out.message = "the machine's face: " + ground.error().message;
+      break;
+    }
+    Eigen::MatrixXd measured = topographyOf(*ground).normal;
+    for (int i = 0; i < measured.size(); ++i) measured.data()[i] += s.spec.sigma * gauss(noise);
+    p.measuredRms = std::sqrt(measured.squaredNorm() / static_cast<double>(measured.size()));
+
+    CaseInput c = s.input;
+    c.axes = run;
+    c.measured = measured;
+    c.correction.probeNoise = s.spec.sigma > 0 ? s.spec.sigma : kNoiseFreeDeclared;
+    if (s.spec.wheel) c.correction.wheel = true;
+    if (recorded) c.wheelProfileOffset = recorded;
+    auto job = resolveJob(c);
+    auto e = job ? evaluate(*job) : Outcome<Evaluation>(job.error());
+    if (!e || !e->correction) {
+      p.refused = true;
+      p.message = e ? "no correction was computed" : e.error().message;
+      out.passes.push_back(p);
+      break;
+    }
+    const Correction& k = *e->correction;
+    p.status = statusName(k.summary.status);
+    p.verdict = k.verdict;
+    p.predictedRms = k.after.rms;
+    std::optional<WheelPointsInput> next = recorded;
+    if (e->wheelCorrection) {
+      WheelPointsInput dressing{e->wheelCorrection->knots.R, e->wheelCorrection->offset};
+      next = sumAt(*s.wheelError, recorded, dressing);
+    }
+    auto after = machineJob(s, next);
+    if (!after) {
+      p.refused = true;
+      p.message = "the dressed wheel: " + after.error().message;
+      out.passes.push_back(p);
+      break;
+    }
+    auto probe = rmsOf(*after, k.axes, s.error, after->grid);
+    auto denseRms = rmsOf(*after, k.axes, s.error, dense);
+    auto rounded = rmsOf(*after, k.roundedAxes, s.error, dense);
+    if (!probe || !denseRms || !rounded) {
+      p.refused = true;
+      p.message = "the proposed axes grind a face that cannot be simulated: " +
+                  (!probe ? probe.error() : !denseRms ? denseRms.error() : rounded.error()).message;
+      out.passes.push_back(p);
+      break;
+    }
+    p.probeRms = *probe;
+    p.denseRms = *denseRms;
+    p.denseRmsRounded = *rounded;
+    out.passes.push_back(p);
+    run = k.axes;
+    recorded = next;
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace hobsharp::validation

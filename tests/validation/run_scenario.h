@@ -1,0 +1,42 @@
+// One scenario run as an engineer would (docs/validation.md): measure the face the machine
+// grinds (the module's simulation of the erroneous axes and wheel, plus noise), load it into the
+// case, evaluate, run the proposed axes (and dressing) on the machine, measure again; and judge
+// each pass on the probe grid and on a grid four times as dense, between the probe points.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scenario.h"
+
+namespace hobsharp::validation {
+
+// How many times denser the judging grid is than the probe grid, in each direction.
+constexpr int kDenseFactor = 4;
+
+struct PassOutcome {
+  bool refused = false;      // the calculator refused the case (message says why)
+  std::string message;
+  double measuredRms = 0;    // the measurement's rms (with the noise), µm
+  double probeRms = 0;       // the face the pass leaves, on the probe grid, noise-free, µm
+  double denseRms = 0;       // the same between the probe points (the dense grid), µm
+  double denseRmsRounded = 0;  // ... with correction.roundedAxes run, µm
+  double predictedRms = -1;      // correction.predictedRms, µm (-1: not given)
+  double predictedRmsHigh = -1;  // correction.predictedRmsHigh, µm (-1: not given)
+  std::string status;        // correction.summary status
+  std::string verdict;
+  bool stopAdvised = false;  // the verdict says to stop: the face is within the probe noise
+};
+
+struct ScenarioOutcome {
+  Scenario scenario;
+  bool judged = true;        // false when the judging grid itself cannot be simulated (message)
+  std::string message;
+  double initialDenseRms = 0;  // the face before the first pass, between the probe points, µm
+  std::vector<PassOutcome> passes;
+  double seconds = 0;        // wall time of the scenario
+};
+
+ScenarioOutcome runScenario(const Scenario& scenario);
+
+}  // namespace hobsharp::validation
