@@ -89,7 +89,8 @@ TEST(Identification, Module2BeyondFiveE4NeedsASecondPass) {
   EXPECT_LT(first.c.summary.finalCost, noiseLevel);  // the measured face is explained
   EXPECT_GT(first.onGrid.sse, first.c.summary.finalCost);  // yet the error left is larger
   const Pass second = onePass(job, first.c.axes, error, zero, o);
-  EXPECT_LT(second.onGrid.sse, 1e-4);
+  // In the engineer's units (issue 20 withdrew the 1e-4 µm² targets): nanometres rms.
+  EXPECT_LT(second.onGrid.rms, 2e-3);
   EXPECT_LT(rms(second.dense.normal), 2e-3);
   std::printf("[ figures  ] module 2, SSE0 1e5: fitted to %.1e µm², one pass leaves %.2e, two passes %.2e µm²\n",
               first.c.summary.finalCost, first.onGrid.sse, second.onGrid.sse);

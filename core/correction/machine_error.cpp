@@ -10,6 +10,7 @@
 #include <Eigen/SVD>
 #include <unsupported/Eigen/LevenbergMarquardt>
 
+#include "direction_decision.h"
 #include "face_cache.h"
 #include "face_vectors.h"
 #include "sensitivity_matrix.h"
@@ -19,8 +20,6 @@
 namespace hobsharp {
 namespace {
 
-// Directions whose singular value is below this share of the largest are numerically null.
-constexpr double kNumericalRank = 1e-12;
 // How often the directions are decided: at E = 0, then at the solution (README, "Correction").
 constexpr int kDecisionRounds = 3;
 
@@ -143,25 +142,10 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
     const Eigen::VectorXd s = svd.singularValues();
     const Eigen::VectorXd c = svd.matrixU().transpose() * qtd;
-    // The step the strongest direction needs to make the whole face: the yardstick of "wild".
-    const double yardstick = data.norm() / s(0);
-    std::vector<int> kept;
-    std::vector<bool> used;
-    int withinNoise = 0, amplifying = 0;
-    for (int i = 0; i < s.size(); ++i) {
-      bool use = false;
-      if (s(i) <= kNumericalRank * s(0)) {
-        // numerically null: neither counted nor used
-      } else if (std::abs(c(i)) <= o.significance * o.probeNoise) {
-        ++withinNoise;
-      } else if (std::abs(c(i)) / s(i) > o.spanAmplification * yardstick) {
-        ++amplifying;
-      } else {
-        use = true;
-        kept.push_back(i);
-      }
-      used.push_back(use);
-    }
+    const DirectionDecision decision = decideDirections(s, c, data.norm(), static_cast<int>(d.size()), o);
+    const std::vector<bool>& used = decision.used;
+    const std::vector<int>& kept = decision.kept;
+    const int withinNoise = decision.withinNoise, amplifying = decision.amplifying;
     if (round > 0 && used == previous) break;
     previous = used;
     m.singularValues = s;

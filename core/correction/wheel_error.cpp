@@ -10,6 +10,7 @@
 #include <Eigen/SVD>
 #include <unsupported/Eigen/LevenbergMarquardt>
 
+#include "direction_decision.h"
 #include "face_cache.h"
 #include "face_vectors.h"
 #include "number_text.h"
@@ -22,8 +23,7 @@
 namespace hobsharp {
 namespace {
 
-// As machine_error.cpp: the numerically null directions, and how often the directions are decided.
-constexpr double kNumericalRank = 1e-12;
+// As machine_error.cpp: how often the directions are decided.
 constexpr int kDecisionRounds = 3;
 
 // The parameters theta = (theta_E, theta_W): E = PE theta_E (coefficients), W = PW theta_W (µm).
@@ -96,38 +96,6 @@ struct JointResidual : Eigen::DenseFunctor<double> {
   std::optional<GroundFace> sensitive;
   Eigen::VectorXd sensitiveX;
 };
-
-// Which of the directions (singular values s, the data's components c along them) are used:
-// shown above significance * sigma and not wild (a step beyond spanAmplification times the one the
-// strongest direction needs to make the whole `dataNorm`), as machine_error.cpp decides them.
-struct Decision {
-  std::vector<bool> used;
-  std::vector<int> kept;
-  int withinNoise = 0, amplifying = 0;
-};
-Decision decide(const Eigen::VectorXd& s, const Eigen::VectorXd& c, double dataNorm, const CorrectionOptions& o) {
-  Decision d;
-  if (s.size() == 0 || !(s(0) > 0)) {
-    d.used.assign(static_cast<size_t>(s.size()), false);
-    return d;
-  }
-  const double yardstick = dataNorm / s(0);
-  for (int i = 0; i < s.size(); ++i) {
-    bool use = false;
-    if (s(i) <= kNumericalRank * s(0)) {
-      // numerically null: neither counted nor used
-    } else if (std::abs(c(i)) <= o.significance * o.probeNoise) {
-      ++d.withinNoise;
-    } else if (std::abs(c(i)) / s(i) > o.spanAmplification * yardstick) {
-      ++d.amplifying;
-    } else {
-      use = true;
-      d.kept.push_back(i);
-    }
-    d.used.push_back(use);
-  }
-  return d;
-}
 
 Eigen::MatrixXd columns(const Eigen::MatrixXd& m, const std::vector<int>& kept) {
   Eigen::MatrixXd out(m.rows(), static_cast<int>(kept.size()));
@@ -225,7 +193,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     const Eigen::VectorXd data = d - faceNormal(current) + SE * zE + SW * w;
 
     // The axes first, as machine_error.cpp decides them: the SVD of SE through its QR.
-    Decision axes;
+    DirectionDecision axes;
     Eigen::MatrixXd VE(nb, 0), QE(d.size(), 0);
     if (nb > 0) {
       const Eigen::HouseholderQR<Eigen::MatrixXd> qr(SE);
@@ -234,7 +202,8 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
       const Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(SE.rows(), mm);
       const Eigen::VectorXd qtd = Q.transpose() * data;
       const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, Eigen::ComputeFullU | Eigen::ComputeFullV);
-      axes = decide(svd.singularValues(), svd.matrixU().transpose() * qtd, data.norm(), o);
+      axes = decideDirections(svd.singularValues(), svd.matrixU().transpose() * qtd, data.norm(),
+                              static_cast<int>(d.size()), o, Wild::LeftOut);
       a.singularValues = svd.singularValues();
       VE = columns(svd.matrixV(), axes.kept);
       QE = Q * columns(svd.matrixU(), axes.kept);  // the face directions the axes take, orthonormal
@@ -243,7 +212,8 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     const Eigen::MatrixXd SWoff = SW - QE * (QE.transpose() * SW);
     const Eigen::VectorXd dataOff = data - QE * (QE.transpose() * data);
     const Eigen::JacobiSVD<Eigen::MatrixXd> svdW(SWoff, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    const Decision wheel = decide(svdW.singularValues(), svdW.matrixU().transpose() * dataOff, dataOff.norm(), o);
+    const DirectionDecision wheel = decideDirections(svdW.singularValues(), svdW.matrixU().transpose() * dataOff,
+                                                     dataOff.norm(), static_cast<int>(d.size()), o, Wild::LeftOut);
 
     if (round > 0 && axes.used == previousE && wheel.used == previousW) break;
     previousE = axes.used;

@@ -154,7 +154,8 @@ nlohmann::json toJson(const Campaign& c) {
       nlohmann::json q = {{"refused", p.refused}, {"measuredRms", p.measuredRms}, {"probeRms", p.probeRms},
                           {"denseRms", p.denseRms}, {"denseRmsRounded", p.denseRmsRounded},
                           {"predictedRms", p.predictedRms}, {"predictedRmsHigh", p.predictedRmsHigh},
-                          {"status", p.status}, {"verdict", p.verdict}};
+                          {"status", p.status}, {"verdict", p.verdict}, {"rank", p.rank},
+                          {"withinNoise", p.withinNoise}, {"amplifying", p.amplifying}, {"iterations", p.iterations}};
       if (!p.message.empty()) q["message"] = p.message;
       s["passes"].push_back(q);
     }

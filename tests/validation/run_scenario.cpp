@@ -118,6 +118,10 @@ ScenarioOutcome runScenario(const Scenario& s) {
     p.status = statusName(k.summary.status);
     p.verdict = k.verdict;
     p.predictedRms = k.after.rms;
+    p.rank = k.rank;
+    p.withinNoise = k.withinNoise;
+    p.amplifying = k.amplifyingDropped;
+    p.iterations = k.summary.iterations;
     std::optional<WheelPointsInput> next = recorded;
     if (e->wheelCorrection) {
       WheelPointsInput dressing{e->wheelCorrection->knots.R, e->wheelCorrection->offset};

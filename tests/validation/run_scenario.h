@@ -25,6 +25,7 @@ struct PassOutcome {
   double predictedRmsHigh = -1;  // correction.predictedRmsHigh, µm (-1: not given)
   std::string status;        // correction.summary status
   std::string verdict;
+  int rank = 0, withinNoise = 0, amplifying = 0, iterations = 0;  // how the identification went
   bool stopAdvised = false;  // the verdict says to stop: the face is within the probe noise
 };
 

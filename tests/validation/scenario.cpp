@@ -67,19 +67,22 @@ std::string describe(const CaseInput& c) {
   return s.str();
 }
 
-// A machine error on every coefficient of every axis: each coefficient's share drawn at random in
-// units of the face it makes (its column of Eq. 16 normalised), the whole scaled so that the
-// simulated face deviates `rms` µm from the run face on the probe grid.
+// A machine error on every coefficient of every axis, as a machine has it: each axis's error is a
+// curve over the motion range, every degree's term of it (a_k phi^k at the range's end) drawn at
+// random with one size for every axis, in mm for X, Y, Z and for A, B in rad times the hob's outer
+// radius (the tip's displacement). The whole is then scaled so that the simulated face deviates
+// `rms` µm from the run face on the probe grid.
 Outcome<AxisPolynomials> randomError(Random& rnd, const SharpeningJob& job, double rms) {
   auto face = simulateGroundFace(job.setup, job.runAxes, job.grid);
   if (!face) return face.error();
   const std::vector<Coefficient> cs = allCoefficients(job.input.degree);
   const Eigen::MatrixXd S = sensitivityMatrix(*face, cs).normal;
-  const double largest = S.colwise().norm().maxCoeff();
-  Eigen::VectorXd z = Eigen::VectorXd::Zero(static_cast<int>(cs.size()));
-  for (int j = 0; j < z.size(); ++j) {
-    const double n = S.col(j).norm();
-    if (n > 1e-9 * largest) z(j) = rnd.normal() / n;
+  const MotionRange range = motionRange(*face);
+  const double reach = std::max(std::abs(range.min), std::abs(range.max));
+  Eigen::VectorXd z(static_cast<int>(cs.size()));
+  for (size_t j = 0; j < cs.size(); ++j) {
+    const double unit = isRotary(cs[j].axis) ? 1 / job.outerRadius : 1.0;
+    z(static_cast<int>(j)) = rnd.normal() * unit / std::pow(reach, cs[j].degree);
   }
   const Eigen::VectorXd run0 = faceNormal(*face);
   const double points = static_cast<double>(S.rows());
