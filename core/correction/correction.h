@@ -59,6 +59,11 @@ struct Correction {
   // axes are proposed unchanged, and `discardedSse` is what the discarded proposal predicted, µm².
   bool runKept = false;
   double discardedSse = 0;
+  // What the pass will leave on the probe grid, µm rms, and its bound (face_prediction.h).
+  double predictedRms = 0, predictedRmsHigh = 0;
+  double predictedNoisePart = 0, predictedUnseenPart = 0;  // the bound's shares, µm rms
+  // The measured face is within the probe noise: another pass would only move noise.
+  bool stop = false;
 
   // With a measurement at probe points (correctMeasuredPoints, README "Measured points"): `before`,
   // `after` and `afterRounded` hold one column, a value per point in the points' order, and their

@@ -1,10 +1,12 @@
 // correctMeasuredFace (correction.h): either method, then the figures the engineer reads.
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <vector>
 
 #include "correction.h"
+#include "face_prediction.h"
 #include "face_vectors.h"
 #include "machine_error.h"
 #include "number_text.h"
@@ -80,23 +82,32 @@ std::array<double, kAxisCount> curveDeviation(const std::vector<Coefficient>& cs
 std::string verdictOf(const Correction& c, const CorrectionOptions& o, int points) {
   std::ostringstream v;
   v.precision(3);
+  // What the pass leaves, as the prediction and its bound state it (face_prediction.h).
+  std::ostringstream leaves;
+  leaves.precision(2);
+  leaves << "the face measured " << c.before.rms << " µm rms will be left at about " << c.predictedRms
+         << " µm rms, at most " << c.predictedRmsHigh << " µm rms";
+  if (c.predictedUnseenPart > 0) leaves << " if the error the face cannot show is no larger than the one it shows";
   // Within the noise: the rms left is at most twice the probe's sigma.
   const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
   if (c.runKept) {
     v << "No change proposed: the correction found would leave a sum of squares of " << squaresText(c.discardedSse)
       << " µm², more than the " << squaresText(c.before.sse) << " µm² measured, so the axes run stay as they are.";
+  } else if (c.stop) {
+    v << "Stop: the measured face (" << std::setprecision(2) << c.before.rms << " µm rms) is within the probe noise (sigma "
+      << o.probeNoise << " µm); another pass would only move noise. Keep the axes run.";
   } else if (c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence) {
     v << "Identification " << (c.summary.status == SolveStatus::Stalled ? "stalled" : "did not converge")
-      << "; the best estimate is proposed (predicted sum of squares " << squaresText(c.after.sse) << " µm², from "
-      << squaresText(c.before.sse) << " µm²). " << c.summary.reason;
+      << "; the best estimate is proposed: " << leaves.str() << ". " << c.summary.reason;
   } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
     v << "Correctable: the axes can cancel the measured deviation"
       << (withinNoise && c.uncorrectableShare > o.correctableShare ? " down to the probe noise" : "")
-      << " (predicted sum of squares " << squaresText(c.after.sse) << " µm², from " << squaresText(c.before.sse) << " µm²).";
+      << "; " << leaves.str() << ".";
   } else {
     v << "Partly uncorrectable: " << 100 * c.uncorrectableShare
       << " % of the sum of squares is a shape no axis polynomial produces (such as a second-degree "
-         "shape along the radius); it stays in the residual. Correct the wheel profile to remove it.";
+         "shape along the radius); it stays in the residual: "
+      << leaves.str() << ". Correct the wheel profile to remove it.";
   }
   return v.str();
 }
@@ -195,6 +206,18 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.changePerNoise[i] = perNoise[i];
     c.uncertainty[i] = perNoise[i] * o.probeNoise;
   }
+  {
+    const FacePrediction p =
+        predictFace(setup, c.runKept || !dressing ? setup : *dressed, run, runFace, c, unexplained, o.probeNoise);
+    c.predictedRms = p.rms;
+    c.predictedRmsHigh = p.rmsHigh;
+    c.predictedNoisePart = p.noisePart;
+    c.predictedUnseenPart = p.unseenPart;
+  }
+  // Within the noise: the measured sum of squares is what the probe's noise alone gives, to 3
+  // standard deviations of its chi-square (points * sigma² (1 + 3 sqrt(2 / points))).
+  const double points = std::max(1, runFace.size());
+  c.stop = c.before.sse <= points * o.probeNoise * o.probeNoise * (1 + 3 * std::sqrt(2 / points));
   c.verdict = verdictOf(c, o, runFace.size());
   return c;
 }

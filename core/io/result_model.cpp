@@ -560,6 +560,12 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     v.number({"correction.maxAfter", "µm", "largest absolute deviation predicted after the pass", kWithMeasured}, c.after.max);
     v.number({"correction.rmsBefore", "µm", "root mean square, measured", kWithMeasured}, c.before.rms);
     v.number({"correction.rmsAfter", "µm", "root mean square predicted after the pass", kWithMeasured}, c.after.rms);
+    v.number({"correction.predictedRms", "µm", "the face the exact axes will leave on the probe grid, rms: the misfit left less its expected probe noise", kWithMeasured},
+             c.predictedRms);
+    v.number({"correction.predictedRmsHigh", "µm", "at most this rms on the probe grid: the misfit, the probe noise through the identified directions and the error the face cannot show (assumed no larger than the one it shows)", kWithMeasured},
+             c.predictedRmsHigh);
+    v.flag({"correction.stop", "", "the measured face is within the probe noise: another pass would only move noise", kWithMeasured},
+           c.stop);
     v.number({"correction.peakToValleyBefore", "µm", "largest minus smallest deviation, measured", kWithMeasured},
              c.before.peakToValley);
     v.number({"correction.peakToValleyAfter", "µm", "largest minus smallest deviation predicted after the pass", kWithMeasured},

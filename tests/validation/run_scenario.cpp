@@ -117,7 +117,9 @@ ScenarioOutcome runScenario(const Scenario& s) {
     const Correction& k = *e->correction;
     p.status = statusName(k.summary.status);
     p.verdict = k.verdict;
-    p.predictedRms = k.after.rms;
+    p.predictedRms = k.predictedRms;
+    p.predictedRmsHigh = k.predictedRmsHigh;
+    p.stopAdvised = k.stop;
     p.rank = k.rank;
     p.withinNoise = k.withinNoise;
     p.amplifying = k.amplifyingDropped;

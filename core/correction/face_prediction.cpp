@@ -1,0 +1,90 @@
+#include "face_prediction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <Eigen/SVD>
+
+#include "face_vectors.h"
+#include "sensitivity_matrix.h"
+#include "topography.h"
+
+namespace hobsharp {
+namespace {
+
+// Samples of the error the face cannot show, and their seed: the same figures on every run.
+constexpr int kUnseenSamples = 6;
+constexpr unsigned kUnseenSeed = 20;
+// A direction of the coefficients moves the face no more than this share of the strongest one: it
+// is a direction the face cannot show.
+constexpr double kUnseenShare = 1e-4;
+
+}  // namespace
+
+FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,
+                           const AxisPolynomials& run, const GroundFace& runFace, const Correction& c,
+                           const Eigen::MatrixXd& unexplained, double sigma) {
+  FacePrediction p;
+  const double n = std::max(1, runFace.size());
+  const int k = c.rank;
+  // The misfit is noise (sigma² per point, less what the k directions took) plus shape.
+  const double afterSquares = c.after.normal.squaredNorm();
+  const double noiseSquares = sigma * sigma * std::max(0.0, n - k);
+  p.rms = std::sqrt(std::max(0.0, afterSquares - noiseSquares) / n);
+  p.noisePart = std::sqrt(sigma * sigma * (k + 3 * std::sqrt(2.0 * k)) / n);
+
+  // The error the face cannot show: in units of the tip's displacement, per term at the range's end.
+  const std::vector<Coefficient>& cs = c.coefficients;
+  const int q = static_cast<int>(cs.size());
+  if (q > 0) {
+    const MotionRange range = motionRange(runFace);
+    const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
+    const double tip = runFace.grid.r.empty() ? 1.0 : runFace.grid.r.back();
+    Eigen::VectorXd w(q), y(q);
+    for (int j = 0; j < q; ++j) {
+      w(j) = std::pow(reach, cs[j].degree) * (isRotary(cs[j].axis) ? tip : 1.0);
+      y(j) = c.identifiedError[cs[j].axis].coefficient(cs[j].degree) * w(j);
+    }
+    const double size = y.norm() / std::sqrt(static_cast<double>(q));
+    const Eigen::MatrixXd S = sensitivityMatrix(runFace, cs).normal * w.cwiseInverse().asDiagonal();
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeThinU | Eigen::ComputeFullV);
+    const Eigen::VectorXd s = svd.singularValues();
+    std::vector<int> unseen, seen;
+    for (int i = 0; i < q; ++i) (i >= s.size() || s(i) <= kUnseenShare * s(0) ? unseen : seen).push_back(i);
+    Eigen::MatrixXd U(S.rows(), static_cast<int>(seen.size()));  // the face directions the axes make
+    for (size_t i = 0; i < seen.size(); ++i) U.col(static_cast<int>(i)) = svd.matrixU().col(seen[i]);
+    if (size > 0 && !unseen.empty()) {
+      Eigen::MatrixXd N(q, static_cast<int>(unseen.size()));
+      for (size_t i = 0; i < unseen.size(); ++i) N.col(static_cast<int>(i)) = svd.matrixV().col(unseen[i]);
+      const AxisPolynomials actual = plusError(c.axes, c.identifiedError);
+      const AxisPolynomials measuredAt = plusError(run, c.identifiedError);
+      const Eigen::VectorXd base = flat(c.after.normal) - flat(unexplained);      // the model's face after
+      const Eigen::VectorXd explained = flat(c.before.normal) - flat(unexplained);  // ... at the measurement
+      // mt19937's words are the same in every build; the standard's distributions are not (libstdc++
+      // natively, libc++ in WebAssembly): each term uniform on +-sqrt(3), of unit variance.
+      std::mt19937 rng(kUnseenSeed);
+      const auto g = [&rng] { return std::sqrt(3.0) * (2.0 * rng() / 4294967295.0 - 1.0); };
+      double worst = 0;
+      for (int t = 0; t < kUnseenSamples; ++t) {
+        Eigen::VectorXd d(q);
+        for (int j = 0; j < q; ++j) d(j) = g() * size;
+        const Eigen::VectorXd dc = (N * (N.transpose() * d)).cwiseQuotient(w);  // what the face cannot show
+        auto after = simulateGroundFaceLike(runFace, passSetup, plusChange(actual, cs, dc), Sensitivities::Skip);
+        auto before = simulateGroundFaceLike(runFace, measuredSetup, plusChange(measuredAt, cs, dc), Sensitivities::Skip);
+        if (!after || !before) {
+          worst = std::max(worst, std::sqrt(afterSquares / n) + size * 1e3);  // cannot say: as large as the error
+          continue;
+        }
+        const Eigen::VectorXd moved = faceNormal(*before) - explained;
+        const Eigen::VectorXd left = faceNormal(*after) - base - U * (U.transpose() * moved);
+        worst = std::max(worst, std::sqrt(left.squaredNorm() / n));
+      }
+      p.unseenPart = worst;
+    }
+  }
+  p.rmsHigh = std::sqrt(afterSquares / n + p.noisePart * p.noisePart + p.unseenPart * p.unseenPart);
+  return p;
+}
+
+}  // namespace hobsharp

@@ -1,0 +1,44 @@
+// What a pass will leave on the probe grid, with a bound (README, "Correction"; issue 20): the
+// face the proposed exact axes grind, µm rms, and an upper figure that folds in
+//   - the misfit the identified error leaves (all of it taken as shape, none as noise),
+//   - the probe noise carried through the identified directions (k of them: sigma² (k + 3 sqrt(2k))),
+//   - what the face cannot show: the machine's error along directions that do not move the
+//     measured face to first order (the structural null space, numerically null directions) moves
+//     it at second order. At the measured operating point the identification takes the part of that
+//     which its directions make for axis error (and the axes then compensate an error that is not
+//     there); at the new operating point it moves the face again. It is sampled: errors of the
+//     identified error's size, per term of every axis (mm on X, Y, Z; rad times the grid's tip
+//     radius on A, B, the tip's displacement), in the directions the face cannot show, added to the
+//     identified error; the run and the proposed axes re-simulated with each; the bound takes the
+//     largest of (the face moved at the new point) - (the visible part of the face moved at the
+//     measured point).
+// The last rests on an assumption, stated in the verdict: the error the face cannot show is no
+// larger than the one it shows.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "axis_polynomials.h"
+#include "correction.h"
+#include "ground_face.h"
+#include "outcome.h"
+#include "sharpening_setup.h"
+
+namespace hobsharp {
+
+struct FacePrediction {
+  double rms = 0;      // µm: the predicted face, the misfit less its expected noise
+  double rmsHigh = 0;  // µm: the bound
+  double noisePart = 0, unseenPart = 0;  // µm rms: the bound's noise and second-order shares
+};
+
+// `c` is the correction with its axes, identified error and predicted face (c.after) filled;
+// `measuredSetup` the setup the measured face was ground with, `passSetup` the one the pass grinds
+// with (the dressed wheel when there is one); `run` the axes run; `runFace` the face they ground
+// without error, with its sensitivities, at the measurement's points; `unexplained` measured minus
+// the identified model.
+FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,
+                           const AxisPolynomials& run, const GroundFace& runFace, const Correction& c,
+                           const Eigen::MatrixXd& unexplained, double probeNoise);
+
+}  // namespace hobsharp
