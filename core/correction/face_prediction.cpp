@@ -14,7 +14,9 @@ namespace hobsharp {
 namespace {
 
 // Samples of the error the face cannot show, and their seed: the same figures on every run.
-constexpr int kUnseenSamples = 6;
+constexpr int kUnseenSamples = 8;
+// The size of the error the face cannot show, per term, as a multiple of the identified error's.
+constexpr double kUnseenScale = 2;
 constexpr unsigned kUnseenSeed = 20;
 // A direction of the coefficients moves the face no more than this share of the strongest one: it
 // is a direction the face cannot show.
@@ -46,7 +48,7 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
       w(j) = std::pow(reach, cs[j].degree) * (isRotary(cs[j].axis) ? tip : 1.0);
       y(j) = c.identifiedError[cs[j].axis].coefficient(cs[j].degree) * w(j);
     }
-    const double size = y.norm() / std::sqrt(static_cast<double>(q));
+    const double size = kUnseenScale * y.norm() / std::sqrt(static_cast<double>(q));
     const Eigen::MatrixXd S = sensitivityMatrix(runFace, cs).normal * w.cwiseInverse().asDiagonal();
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeThinU | Eigen::ComputeFullV);
     const Eigen::VectorXd s = svd.singularValues();
@@ -83,7 +85,11 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
       p.unseenPart = worst;
     }
   }
-  p.rmsHigh = std::sqrt(afterSquares / n + p.noisePart * p.noisePart + p.unseenPart * p.unseenPart);
+  // The misfit's shape: at most what it holds beyond the noise's expectation less three of the
+  // noise's standard deviations (chi-square, n - k degrees of freedom).
+  const double dof = std::max(0.0, n - k);
+  const double shapeSquares = std::min(afterSquares, std::max(0.0, afterSquares - noiseSquares + 3 * sigma * sigma * std::sqrt(2 * dof)));
+  p.rmsHigh = std::sqrt(shapeSquares / n + p.noisePart * p.noisePart + p.unseenPart * p.unseenPart);
   return p;
 }
 

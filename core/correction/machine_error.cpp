@@ -118,7 +118,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
   m.summary.initialCost = (face0 - d).squaredNorm();
   Eigen::MatrixXd P(q, 0);
   Eigen::VectorXd theta(0);
-  Eigen::VectorXd zE = Eigen::VectorXd::Zero(m.space.basis.cols());  // E in the basis, machine steps
+  Eigen::VectorXd zFull = Eigen::VectorXd::Zero(q);  // E in machine steps per coefficient
   // The face at the estimate: the run face until the solver has moved, then the solver's (the run
   // face is not copied: a face of 2,000 points is most of a megabyte).
   std::optional<GroundFace> solved;
@@ -130,7 +130,9 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
   int evaluations = 0;
   for (int round = 0; round < kDecisionRounds; ++round) {
     if (q == 0 || m.space.basis.cols() == 0) break;
-    const Eigen::MatrixXd Jz = currentS * m.space.step.asDiagonal() * m.space.basis;
+    const Eigen::MatrixXd& basis = m.space.basis;
+    const Eigen::VectorXd zE = basis.transpose() * zFull;
+    const Eigen::MatrixXd Jz = currentS * m.space.step.asDiagonal() * basis;
     const Eigen::VectorXd data = d - faceNormal(current()) + Jz * zE;  // what E makes, linearised here
     // The SVD of Jz through its QR (Jz = Q R, R = U S V^T): the data's components along the
     // left singular vectors are U^T (Q^T data), without forming the p x m factor.
@@ -152,14 +154,14 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     m.used = used;
     m.withinNoise = withinNoise;
     m.amplifying = amplifying;
-    Eigen::MatrixXd V(m.space.basis.cols(), static_cast<int>(kept.size()));
+    Eigen::MatrixXd V(basis.cols(), static_cast<int>(kept.size()));
     for (size_t k = 0; k < kept.size(); ++k) V.col(static_cast<int>(k)) = svd.matrixV().col(kept[k]);
-    P = m.space.step.asDiagonal() * (m.space.basis * V);
+    P = m.space.step.asDiagonal() * (basis * V);
     theta = V.transpose() * zE;  // the estimate so far, in the directions decided here
     if (kept.empty()) {
       solved.reset();
       currentS = sensitivityMatrix(runFace, cs).normal;
-      zE.setZero();
+      zFull.setZero();
       break;
     }
     FaceResidual residual(setup, run, runFace, cs, P, d);
@@ -212,7 +214,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
                           ErrorCode::Unsolvable);
     solved = std::move(residual.cache.lastFace);
     currentS = std::move(residual.S);
-    zE = V * theta;
+    zFull = basis * (V * theta);
     keptP = P;
     keptTheta = theta;
     if (m.summary.status != SolveStatus::Converged || m.summary.iterations >= o.solver.maxIterations) break;

@@ -1,5 +1,5 @@
-// The validation campaign's default run (seed 20261125, 204 scenarios, docs/validation.md) as a
-// test: each target of issue 20 that the campaign meets is asserted at the share the issue asks
+// The validation campaign's first 204 scenarios of its default seed (20261125; the default run,
+// docs/validation.md, has 600) as a test: each target of issue 20 that the campaign meets is asserted at the share the issue asks
 // for; each it does not yet meet is asserted at the share measured at this commit, so that a
 // change that makes it worse fails. Natively the run takes about a second.
 #include <cstdio>
@@ -39,17 +39,15 @@ TEST(Validation, CampaignTargets) {
   // Met: the issue's shares.
   for (const Target& t : classOf(ScenarioClass::Small).targets) EXPECT_GE(t.share(), t.required) << t.what;
   for (const Target& t : classOf(ScenarioClass::Noisy).targets) EXPECT_GE(t.share(), t.required) << t.what;
-  EXPECT_GE(campaign().bounds[1].share(), 0.80) << campaign().bounds[1].what;
+  for (const Target& t : campaign().bounds) EXPECT_GE(t.share(), t.required) << t.what;
 
-  // Not yet met (docs/validation.md): held at the share measured with g++ -O2, 25/33, 16/34, 31/34,
-  // 30/34, 160/197 and 222/265 of the issue's 95, 90, 95, 90, 90 and 90 %, less one scenario (the
-  // sanitizer build's clang rounds differently, and a scenario at a threshold may fall either way).
+  // Not yet met (docs/validation.md): held at the share measured with g++ -O2, 25/33, 16/34, 31/34
+  // and 30/34 of the issue's 95, 90, 95 and 90 %, less one scenario (the sanitizer build's clang
+  // rounds differently, and a scenario at a threshold may fall either way).
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[0].share(), 24.0 / 33 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::Large).targets[0].share(), 15.0 / 34 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::NoiseOnly).targets[0].share(), 30.0 / 34 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::Wheel).targets[0].share(), 29.0 / 34 - 1e-9);
-  EXPECT_GE(campaign().bounds[0].share(), 159.0 / 197 - 1e-9);
-  EXPECT_GE(campaign().bounds[2].share(), 221.0 / 265 - 1e-9);
   std::printf("%s", tableText(campaign()).c_str());
 }
 

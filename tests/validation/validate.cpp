@@ -1,5 +1,5 @@
 // ./hobsharp.sh validate [--scenarios N] [--seed S] [--out DIR]: the validation campaign
-// (docs/validation.md). Runs N random scenarios (default 204) on every core, prints the table and
+// (docs/validation.md). Runs N random scenarios (default 600) on every core, prints the table and
 // writes DIR/validation.json and DIR/validation.md (the table the docs show).
 #include <atomic>
 #include <chrono>
@@ -16,7 +16,7 @@
 using namespace hobsharp::validation;
 
 int main(int argc, char** argv) {
-  int count = 204;  // 34 per class
+  int count = 600;  // 100 per class
   std::uint64_t seed = 20261125;
   std::string out = "build/validation";
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
