@@ -151,7 +151,10 @@ void expectTargets(const char* hob, const CaseInput& c, double target, double pr
     const Correction& k = *p.e.correction;
     const WheelCorrection& w = *p.e.wheelCorrection;
     EXPECT_GT(k.before.sse, 1e3);
-    EXPECT_EQ(k.summary.status, SolveStatus::Converged) << k.summary.reason;
+    // A tolerance was met; the 5-point wheel leaves a shape of a few nm rms, above the declared
+    // 1e-4 µm noise, which the status says ("aboveNoise").
+    EXPECT_TRUE(k.summary.status == SolveStatus::Converged || k.summary.status == SolveStatus::AboveNoise)
+        << k.summary.reason;
     EXPECT_LT(p.onGrid, target);
     // The prediction is the face the machine grinds with both applied.
     EXPECT_NEAR(k.after.sse, p.onGrid, predictionGap);

@@ -64,6 +64,9 @@ struct Correction {
   double predictedNoisePart = 0, predictedUnseenPart = 0;  // the bound's shares, µm rms
   // The measured face is within the probe noise: another pass would only move noise.
   bool stop = false;
+  // The axes run alone grind no face the wheel envelops (a pass after a large machine error): the
+  // correction was linearised at the nominal axes instead, from the face measured.
+  bool linearisedAtNominal = false;
 
   // With a measurement at probe points (correctMeasuredPoints, README "Measured points"): `before`,
   // `after` and `afterRounded` hold one column, a value per point in the points' order, and their
@@ -86,13 +89,16 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
 // `identified`, when given, is the machine error identified elsewhere (with the wheel,
 // wheel_error.h): used in place of identifying it here (nonlinear method). `dressed`, when given,
 // is the setup the predicted faces are ground with: the wheel as a dressing leaves it
-// (wheel_correction.h), not the wheel `runFace` was ground with.
+// (wheel_correction.h), not the wheel `runFace` was ground with. `linearisedAt`, when given, is the
+// axes `runFace` was simulated for instead of `run` (the nominal ones, where the run alone cannot be
+// simulated); `identified`, when given with it, is the error identified from those axes.
 struct MachineErrorEstimate;
 Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                         const AxisPolynomials& run, const GroundFace& runFace,
                                         const Eigen::MatrixXd& measured, const CorrectionOptions& options,
                                         const MachineErrorEstimate* identified = nullptr,
-                                        const SharpeningSetup* dressed = nullptr);
+                                        const SharpeningSetup* dressed = nullptr,
+                                        const AxisPolynomials* linearisedAt = nullptr);
 
 // The same for a measurement at a measuring machine's probe points (µm, one per point): the
 // correction's rows are exactly those points (the run face simulated there, its sensitivities

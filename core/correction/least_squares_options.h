@@ -26,19 +26,22 @@ struct LeastSquaresOptions {
 };
 
 enum class SolveStatus {
-  Converged,     // one of the tolerances above was met
+  Converged,     // one of the tolerances above was met, and the misfit is within the probe noise
+  AboveNoise,    // a tolerance was met, but the misfit left is above the noise floor: a shape the
+                 // identified directions do not make (the reason says how much)
   NoConvergence, // maxIterations ran out; the best iterate is returned
   Stalled,       // no step reduces the sum of squares further (the reason says why)
   Failed,        // the solve could not start
 };
 
-const char* statusName(SolveStatus s);  // "converged", "notConverged", "stalled", "failed"
+const char* statusName(SolveStatus s);  // "converged", "aboveNoise", "notConverged", "stalled", "failed"
 
 struct LeastSquaresSummary {
   SolveStatus status = SolveStatus::Converged;
   std::string reason;        // a sentence: which tolerance was met, or why it stopped
   int iterations = 0;        // Jacobian evaluations (0: nothing to identify)
   int faceEvaluations = 0;   // re-simulated faces, trial steps included
+  int unsolvableFaces = 0;   // trial steps whose face the wheel cannot grind: rejected, not an error
   double initialCost = 0;    // sum of squares at the start, µm²
   double finalCost = 0;      // sum of squares at the best iterate, µm²
 

@@ -79,6 +79,7 @@ struct FaceResidual : Eigen::DenseFunctor<double> {
 const char* statusName(SolveStatus s) {
   switch (s) {
     case SolveStatus::Converged: return "converged";
+    case SolveStatus::AboveNoise: return "aboveNoise";
     case SolveStatus::NoConvergence: return "notConverged";
     case SolveStatus::Stalled: return "stalled";
     case SolveStatus::Failed: return "failed";
@@ -181,6 +182,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     auto status = lm.minimizeInit(theta);
     if (status != Eigen::LevenbergMarquardtSpace::NotStarted && round > 0) {
       evaluations += residual.cache.evaluations;
+    m.summary.unsolvableFaces += residual.cache.unsolvable;
       P = keptP;
       theta = keptTheta;
       m.summary.status = SolveStatus::Stalled;
@@ -194,6 +196,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
                              ? "failed: the solver refused its inputs."
                              : "failed: the face of the estimate cannot be simulated.";
       evaluations += residual.cache.evaluations;
+    m.summary.unsolvableFaces += residual.cache.unsolvable;
       theta.setZero();
       solved.reset();
       currentS = sensitivityMatrix(runFace, cs).normal;
@@ -210,8 +213,24 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     // theta is the best iterate: the solver only ever accepts steps that reduce the sum of squares.
     const GroundFace* f = residual.sensitiveFaceAt(theta);
     evaluations += residual.cache.evaluations;
-    if (!f) return refuse("measured", "the identified machine error leaves a face that cannot be simulated.",
-                          ErrorCode::Unsolvable);
+    m.summary.unsolvableFaces += residual.cache.unsolvable;
+    if (!f) {
+      // The face at the estimate was simulated (the solver accepted it), but its envelope equations
+      // are singular there, so it has no sensitivities: the estimate and its face are kept, and the
+      // last Jacobian formed stands for the covariance.
+      f = residual.faceAt(theta);
+      if (!f) return refuse("measured", "the identified machine error leaves a face that cannot be simulated.",
+                            ErrorCode::Unsolvable);
+      solved = std::move(residual.cache.lastFace);
+      currentS = residual.S.rows() == d.size() ? residual.S : sensitivityMatrix(runFace, cs).normal;
+      zFull = basis * (V * theta);
+      keptP = P;
+      keptTheta = theta;
+      m.summary.status = SolveStatus::Stalled;
+      m.summary.reason = "stalled: at the estimate the face's envelope equations are singular (no sensitivities), so "
+                         "the solve cannot go on; the estimate is kept.";
+      break;
+    }
     solved = std::move(residual.cache.lastFace);
     currentS = std::move(residual.S);
     zFull = basis * (V * theta);
@@ -235,6 +254,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     for (int j = 0; j < grid.cols(); ++j) m.explained(i, j) = kMicrometresPerMm * m.face.envelope[i * grid.cols() + j].t;
   m.unexplained = measured - m.explained;
   m.summary.finalCost = m.unexplained.squaredNorm();
+  judgeMisfit(m.summary, m.summary.finalCost, static_cast<int>(d.size()), o.probeNoise);
   m.covariancePerNoise = Eigen::MatrixXd::Zero(q, q);
   if (P.cols() > 0) {
     // (J^T J)^-1 in the identified directions, which the decision kept well conditioned.

@@ -117,10 +117,18 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
 Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                         const AxisPolynomials& run, const GroundFace& runFace,
                                         const Eigen::MatrixXd& measured, const CorrectionOptions& o,
-                                        const MachineErrorEstimate* identified, const SharpeningSetup* dressed) {
+                                        const MachineErrorEstimate* identified, const SharpeningSetup* dressed,
+                                        const AxisPolynomials* linearisedAt) {
   Correction c;
+  // The axes runFace was ground with: the run, or the nominal ones where the run alone cannot be
+  // simulated (a pass after a large machine error; correction.h).
+  const AxisPolynomials& at = linearisedAt ? *linearisedAt : run;
+  c.linearisedAtNominal = linearisedAt != nullptr;
   Eigen::MatrixXd unexplained;
   Eigen::MatrixXd coefficientCov;  // of the change of c.coefficients per unit noise variance
+  if (o.method == CorrectionMethod::Linear && linearisedAt)
+    return refuse("axes", "the face these axes grind without the machine's error cannot be simulated, and the linear "
+                          "step needs it: use correction.method \"nonlinear\".", ErrorCode::Unsolvable);
   if (o.method == CorrectionMethod::Linear) {
     auto step = correctionStep(runFace, run, measured, o);
     if (!step) return step.error();
@@ -140,33 +148,38 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     coefficientCov = c.changeCovariancePerNoise;
   } else {
     auto m = identified ? Outcome<MachineErrorEstimate>(*identified)
-                        : identifyMachineError(setup, run, runFace, measured, o);
+                        : identifyMachineError(setup, at, runFace, measured, o);
     if (!m) return m.error();
+    MachineErrorEstimate est = std::move(m).value();
+    // Identified from `at`: the machine ran `run`, so its error is at - run more.
+    if (linearisedAt)
+      for (Axis a : kAxes)
+        for (size_t k = 0; k < est.error[a].a.size(); ++k) est.error[a].a[k] += at[a].coefficient(static_cast<int>(k)) - run[a].coefficient(static_cast<int>(k));
     c.method = CorrectionMethod::Nonlinear;
     c.before = topographyFromNormal(runFace, measured);
-    c.coefficients = m->space.coefficients;
-    c.identifiedError = m->error;
-    c.summary = m->summary;
-    c.singularValues = m->singularValues;
-    c.directionsUsed = m->used;
+    c.coefficients = est.space.coefficients;
+    c.identifiedError = est.error;
+    c.summary = est.summary;
+    c.singularValues = est.singularValues;
+    c.directionsUsed = est.used;
     c.rank = 0;
-    for (bool u : m->used) c.rank += u ? 1 : 0;
-    c.amplifyingDropped = m->amplifying;
-    c.withinNoise = m->withinNoise;
-    c.unobservable = m->space.structural;
-    unexplained = m->unexplained;
+    for (bool u : est.used) c.rank += u ? 1 : 0;
+    c.amplifyingDropped = est.amplifying;
+    c.withinNoise = est.withinNoise;
+    c.unobservable = est.space.structural;
+    unexplained = est.unexplained;
     // nominal - E; a locked coefficient stays as run.
     c.axes = run;
     for (const Coefficient& k : c.coefficients)
-      c.axes[k.axis].a[k.degree] = nominal[k.axis].coefficient(k.degree) - m->error[k.axis].a[k.degree];
+      c.axes[k.axis].a[k.degree] = nominal[k.axis].coefficient(k.degree) - est.error[k.axis].a[k.degree];
     c.change.resize(static_cast<int>(c.coefficients.size()));
     for (size_t j = 0; j < c.coefficients.size(); ++j)
       c.change(static_cast<int>(j)) = c.axes[c.coefficients[j].axis].a[c.coefficients[j].degree] -
                                       run[c.coefficients[j].axis].a[c.coefficients[j].degree];
-    coefficientCov = m->covariancePerNoise;
+    coefficientCov = est.covariancePerNoise;
   }
   const SharpeningSetup& grinding = dressed ? *dressed : setup;  // the wheel the predicted faces are ground with
-  auto after = predictedFace(grinding, runFace, c.axes, c.identifiedError, unexplained, run, !dressed);
+  auto after = predictedFace(grinding, runFace, c.axes, c.identifiedError, unexplained, at, !dressed);
   if (!after) return after.error();
   c.after = *after;
   // Never a proposal worse than the run: the same axes again grind the face measured. (A run that
@@ -183,7 +196,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
   c.roundedAxes = roundToResolution(c.axes, o.resolution, reach);
   const bool dressing = dressed && !c.runKept;  // a run kept keeps its wheel as well as its axes
-  auto rounded = predictedFace(dressing ? *dressed : setup, runFace, c.roundedAxes, c.identifiedError, unexplained, run,
+  auto rounded = predictedFace(dressing ? *dressed : setup, runFace, c.roundedAxes, c.identifiedError, unexplained, at,
                                !dressing);
   if (!rounded) return rounded.error();
   c.afterRounded = *rounded;
@@ -219,6 +232,9 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   const double points = std::max(1, runFace.size());
   c.stop = c.before.sse <= points * o.probeNoise * o.probeNoise * (1 + 3 * std::sqrt(2 / points));
   c.verdict = verdictOf(c, o, runFace.size());
+  if (c.linearisedAtNominal)
+    c.verdict += " The face the axes run grind without the machine's error cannot be simulated (the wheel would not "
+                 "envelop it): the correction was linearised at the nominal axes, from the face measured.";
   return c;
 }
 

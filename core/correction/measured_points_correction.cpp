@@ -30,9 +30,13 @@ Outcome<Correction> correctMeasuredPoints(const SharpeningSetup& setup, const Ax
                                         std::to_string(free) + " free coefficients of degree " + std::to_string(run.degree()) +
                                         " (one equation per point): measure at least " + std::to_string(free) +
                                         " points, or lower the degree, or lock coefficients.");
+  // The run's face at the points, or the nominal one's where the run alone cannot be simulated.
   auto runFace = simulateGroundFace(setup, run, probes, grid);
+  const bool atNominal = !runFace;
+  if (atNominal) runFace = simulateGroundFace(setup, nominal, probes, grid);
   if (!runFace) return runFace.error();
-  auto corrected = correctMeasuredFace(setup, nominal, run, *runFace, measured, o);
+  auto corrected = correctMeasuredFace(setup, nominal, run, *runFace, measured, o, nullptr, nullptr,
+                                       atNominal ? &nominal : nullptr);
   if (!corrected) return corrected.error();
   Correction c = std::move(corrected).value();
   c.probes = probes;

@@ -1,5 +1,6 @@
 #include "solve_report.h"
 
+#include <cmath>
 #include <sstream>
 
 namespace hobsharp {
@@ -56,6 +57,18 @@ void describeSolve(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Statu
       s.reason = "stalled: the Jacobian could not be factorised; the best estimate is kept.";
       break;
   }
+}
+
+void judgeMisfit(LeastSquaresSummary& s, double misfit, int points, double sigma) {
+  if (s.status != SolveStatus::Converged || points <= 0) return;
+  const double n = points;
+  if (misfit <= n * sigma * sigma * (1 + 3 * std::sqrt(2 / n))) return;
+  std::ostringstream r;
+  r.precision(2);
+  r << "ended above the probe noise: " << std::sqrt(misfit / n) << " µm rms of the measured face is left (sigma "
+    << sigma << " µm), a shape the identified directions do not make; " << s.reason;
+  s.status = SolveStatus::AboveNoise;
+  s.reason = r.str();
 }
 
 }  // namespace hobsharp

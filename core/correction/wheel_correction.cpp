@@ -40,13 +40,14 @@ std::string verdictOf(const Correction& c, const WheelCorrection& w, const Corre
 Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                                     const AxisPolynomials& run, const GroundFace& runFace,
                                                     const Eigen::MatrixXd& measured, const CorrectionOptions& o,
-                                                    const WheelProfile& conjugate, double rLow, double rHigh) {
+                                                    const WheelProfile& conjugate, double rLow, double rHigh,
+                                                    const AxisPolynomials* linearisedAt) {
   if (o.method != CorrectionMethod::Nonlinear)
     return refuse("correction.wheel", "needs correction.method \"nonlinear\": the wheel is identified with the machine "
                                       "error, which the linear step does not do.");
   auto knots = wheelKnots(setup, runFace.grid, rLow, rHigh);
   if (!knots) return knots.error();
-  auto estimate = identifyMachineAndWheelError(setup, run, runFace, measured, o, *knots);
+  auto estimate = identifyMachineAndWheelError(setup, linearisedAt ? *linearisedAt : run, runFace, measured, o, *knots);
   if (!estimate) return estimate.error();
   // The dressing takes the case's own offset O away too, so that the wheel after the pass is the
   // conjugate one, which grinds the nominal face: -(O + W) at the points. W and -W through the same
@@ -57,7 +58,8 @@ Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup
   for (int k = 0; k < K; ++k) current(k) = kMicrometresPerMm * offsetAt(setup.wheel, knots->R[k]).value;
   const bool undressed = !setup.wheel.hasOffset();
   const SharpeningSetup dressed = withWheelDeviation(setup, *knots, -current);
-  auto axes = correctMeasuredFace(setup, nominal, run, runFace, measured, o, &estimate->axes, undressed ? nullptr : &dressed);
+  auto axes = correctMeasuredFace(setup, nominal, run, runFace, measured, o, &estimate->axes, undressed ? nullptr : &dressed,
+                                  linearisedAt);
   if (!axes) return axes.error();
 
   AxesAndWheelCorrection out{std::move(axes).value(), {}};
@@ -90,7 +92,8 @@ Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup
     w.axesShare = std::clamp((sse0 - afterAxes) / sse0, 0.0, 1.0);
     w.wheelShare = std::clamp((afterAxes - c.after.sse) / sse0, 0.0, 1.0);
   }
-  if (!c.runKept && c.summary.status == SolveStatus::Converged)
+  if (!c.runKept && !c.stop && !c.linearisedAtNominal &&
+      (c.summary.status == SolveStatus::Converged || c.summary.status == SolveStatus::AboveNoise))
     out.correction.verdict = verdictOf(c, w, o, runFace.grid.size());
   return out;
 }

@@ -48,6 +48,7 @@ struct AxesAndWheelCorrection {
 Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                                     const AxisPolynomials& run, const GroundFace& runFace,
                                                     const Eigen::MatrixXd& measured, const CorrectionOptions& options,
-                                                    const WheelProfile& conjugate, double rLow, double rHigh);
+                                                    const WheelProfile& conjugate, double rLow, double rHigh,
+                                                    const AxisPolynomials* linearisedAt = nullptr);
 
 }  // namespace hobsharp

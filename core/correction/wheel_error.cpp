@@ -248,6 +248,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     auto status = lm.minimizeInit(theta);
     if (status != Eigen::LevenbergMarquardtSpace::NotStarted) {
       evaluations += residual.cache.evaluations;
+    a.summary.unsolvableFaces += residual.cache.unsolvable;
       if (round > 0) {
         PE = keptPE, PW = keptPW, theta = keptTheta;
         a.summary.status = SolveStatus::Stalled;
@@ -274,9 +275,16 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     // theta is the best iterate: the solver only ever accepts steps that reduce the sum of squares.
     const GroundFace* f = residual.sensitiveFaceAt(theta);
     evaluations += residual.cache.evaluations;
-    if (!f)
-      return refuse("measured", "the identified machine error and wheel deviation leave a face that cannot be simulated.",
-                    ErrorCode::Unsolvable);
+    a.summary.unsolvableFaces += residual.cache.unsolvable;
+    if (!f) {
+      // No sensitivities at the estimate (its envelope equations are singular there): the estimate
+      // before this round is kept (none in the first).
+      PE = keptPE, PW = keptPW, theta = keptTheta;
+      a.summary.status = SolveStatus::Stalled;
+      a.summary.reason = "stalled: at the estimate the face's envelope equations are singular (no sensitivities); "
+                         "the estimate before is kept.";
+      break;
+    }
     current = *f;
     zE = VE * theta.head(VE.cols());
     w = VW * theta.tail(VW.cols());
@@ -301,6 +309,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     for (int j = 0; j < grid.cols(); ++j) a.explained(i, j) = kMicrometresPerMm * current.envelope[i * grid.cols() + j].t;
   a.unexplained = measured - a.explained;
   a.summary.finalCost = a.unexplained.squaredNorm();
+  judgeMisfit(a.summary, a.summary.finalCost, static_cast<int>(d.size()), o.probeNoise);
 
   // E's covariance with W free: (J^T J)^-1 of the decided directions, its axes' block.
   const Eigen::MatrixXd JE = sensitivityMatrix(current, cs).normal * PE;

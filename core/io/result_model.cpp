@@ -511,7 +511,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     const double probeNoise = e.job.correction.probeNoise;
     v.text({"correction.method", "", "\"nonlinear\" (identify the machine error, run nominal - error) or \"linear\" (Eq. 17 once)",
             kWithMeasured}, c.method == CorrectionMethod::Linear ? "linear" : "nonlinear");
-    v.text({"correction.status", "", "\"converged\", \"notConverged\" (iterations ran out), \"stalled\" or \"failed\"",
+    v.text({"correction.status", "", "\"converged\" (the misfit within the probe noise), \"aboveNoise\" (a tolerance met, the misfit above the noise), \"notConverged\" (iterations ran out), \"stalled\" or \"failed\"",
             kWithMeasured}, statusName(c.summary.status));
     v.text({"correction.statusReason", "", "a sentence: which tolerance was met, or why the solve stopped", kWithMeasured},
            c.summary.reason);
@@ -566,6 +566,8 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
              c.predictedRmsHigh);
     v.flag({"correction.stop", "", "the measured face is within the probe noise: another pass would only move noise", kWithMeasured},
            c.stop);
+    v.flag({"correction.linearisedAtNominal", "", "the axes run alone grind no face the wheel envelops: the correction was linearised at the nominal axes, from the face measured", kWithMeasured},
+           c.linearisedAtNominal);
     v.number({"correction.peakToValleyBefore", "µm", "largest minus smallest deviation, measured", kWithMeasured},
              c.before.peakToValley);
     v.number({"correction.peakToValleyAfter", "µm", "largest minus smallest deviation predicted after the pass", kWithMeasured},

@@ -67,6 +67,15 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
   if (!profile) return profile.error();
   e.wheelProfile = std::move(profile).value();
   auto face = simulateGroundFace(s, job.runAxes, job.grid);
+  // The machine ground a face with these axes and its error, but the axes alone grind none the wheel
+  // envelops (a pass after a large machine error): with a measurement, the nominal axes' face stands
+  // in (the simulated topography is theirs) and the correction is linearised there (correction.h).
+  const bool measurement = job.input.measured || !job.probes.empty();
+  const AxisPolynomials* linearisedAt = nullptr;
+  if (!face && measurement && job.correction.method == CorrectionMethod::Nonlinear) {
+    face = simulateGroundFace(s, job.nominalAxes, job.grid);
+    linearisedAt = &job.nominalAxes;
+  }
   if (!face) return face.error();
   e.groundFace = std::move(face).value();
   e.topography = topographyOf(e.groundFace);
@@ -78,12 +87,13 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
   if (job.input.measured && job.correction.wheel) {  // README §Wheel-profile correction
     const double rLow = std::max(job.grid.r.front(), job.rootRadius), rHigh = std::min(job.grid.r.back(), job.outerRadius);
     auto c = correctAxesAndWheel(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction,
-                                 e.wheelProfile, rLow, rHigh);
+                                 e.wheelProfile, rLow, rHigh, linearisedAt);
     if (!c) return c.error();
     e.correction = std::move(c->correction);
     e.wheelCorrection = std::move(c->wheel);
   } else if (job.input.measured) {
-    auto c = correctMeasuredFace(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction);
+    auto c = correctMeasuredFace(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction,
+                                 nullptr, nullptr, linearisedAt);
     if (!c) return c.error();
     e.correction = std::move(c).value();
   }

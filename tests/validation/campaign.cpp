@@ -156,7 +156,9 @@ nlohmann::json toJson(const Campaign& c) {
                           {"denseRms", p.denseRms}, {"denseRmsRounded", p.denseRmsRounded},
                           {"predictedRms", p.predictedRms}, {"predictedRmsHigh", p.predictedRmsHigh},
                           {"status", p.status}, {"verdict", p.verdict}, {"rank", p.rank},
-                          {"withinNoise", p.withinNoise}, {"amplifying", p.amplifying}, {"iterations", p.iterations}};
+                          {"withinNoise", p.withinNoise}, {"amplifying", p.amplifying}, {"iterations", p.iterations},
+                          {"linearisedAtNominal", p.linearisedAtNominal}, {"stop", p.stopAdvised},
+                          {"unsolvableTrials", p.unsolvableTrials}};
       if (!p.message.empty()) q["message"] = p.message;
       s["passes"].push_back(q);
     }

@@ -120,6 +120,8 @@ ScenarioOutcome runScenario(const Scenario& s) {
     p.predictedRms = k.predictedRms;
     p.predictedRmsHigh = k.predictedRmsHigh;
     p.stopAdvised = k.stop;
+    p.linearisedAtNominal = k.linearisedAtNominal;
+    p.unsolvableTrials = k.summary.unsolvableFaces;
     p.rank = k.rank;
     p.withinNoise = k.withinNoise;
     p.amplifying = k.amplifyingDropped;

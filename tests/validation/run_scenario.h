@@ -26,7 +26,9 @@ struct PassOutcome {
   std::string status;        // correction.summary status
   std::string verdict;
   int rank = 0, withinNoise = 0, amplifying = 0, iterations = 0;  // how the identification went
-  bool stopAdvised = false;  // the verdict says to stop: the face is within the probe noise
+  bool stopAdvised = false;
+  bool linearisedAtNominal = false;  // the axes run alone could not be simulated
+  int unsolvableTrials = 0;          // trial faces the wheel could not grind (rejected steps)  // the verdict says to stop: the face is within the probe noise
 };
 
 struct ScenarioOutcome {

@@ -43,10 +43,10 @@ export function precisionTable(precision, axes) {
   return { columns, rows };
 }
 
-// The solver's status in words: correction.status ("converged", "notConverged", "stalled",
+// The solver's status in words: correction.status ("converged", "aboveNoise", "notConverged", "stalled",
 // "failed"; or an object with a code and a reason), correction.statusReason, correction.usable,
 // correction.iterations and correction.method.
-const STATUS_WORDS = { converged: 'converged', notConverged: 'not converged (the iterations ran out)', stalled: 'stalled', failed: 'failed' };
+const STATUS_WORDS = { converged: 'converged', aboveNoise: 'ended above the probe noise', notConverged: 'not converged (the iterations ran out)', stalled: 'stalled', failed: 'failed' };
 export function statusText(c) {
   const s = c.status;
   let code = '', why = typeof c.statusReason === 'string' ? c.statusReason : '';

@@ -1,0 +1,75 @@
+// The prediction of what a pass leaves and its bound (face_prediction.h), and the stop verdict at
+// the probe noise (measured_face_correction.cpp). The campaign (tests/validation/) judges the
+// bound's shares on random hobs; these tests pin its parts on the paper's hob.
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "identification_cases.h"
+
+namespace hobsharp::test {
+namespace {
+
+Eigen::MatrixXd gaussian(const SharpeningJob& job, double sigma, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> g(0, sigma);
+  Eigen::MatrixXd n(job.grid.rows(), job.grid.cols());
+  for (int i = 0; i < n.size(); ++i) n.data()[i] = g(rng);
+  return n;
+}
+
+Correction corrected(const SharpeningJob& job, const Eigen::MatrixXd& measured, double sigma) {
+  CorrectionOptions o = job.correction;
+  o.probeNoise = sigma;
+  auto c = correctMeasuredFace(job.setup, job.nominalAxes, job.nominalAxes, groundFaceOf(job, job.nominalAxes), measured, o);
+  EXPECT_TRUE(c.ok()) << (c.ok() ? "" : c.error().message);
+  return c.value();
+}
+
+// A perfect face measured with sigma = 1 µm: the verdict says to stop, on every seed; the bound
+// covers the face the (unchanged or noise-moved) axes leave.
+TEST(Prediction, APerfectFaceWithinTheNoiseSaysStop) {
+  const SharpeningJob job = jobOf(paperCase());
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const Correction c = corrected(job, gaussian(job, 1.0, seed), 1.0);
+    EXPECT_TRUE(c.stop);
+    EXPECT_EQ(c.verdict.rfind("Stop:", 0), 0u) << c.verdict;
+    const double left = topographyFor(job, c.axes).rms;  // the true face after: the machine is perfect
+    EXPECT_LE(left, c.predictedRmsHigh);
+    EXPECT_LE(c.predictedRms, c.predictedRmsHigh);
+  }
+}
+
+// A face 5 µm rms off measured with the same noise is not within it: no stop; the verdict quotes
+// the prediction and its bound, and the bound holds on the face the machine then grinds.
+TEST(Prediction, AFaceAboveTheNoiseIsCorrectedAndItsBoundHolds) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials error = inSpanError(job, 25.0 * job.grid.size(), 7);  // 5 µm rms
+  const Eigen::MatrixXd measured = topographyFor(job, withMachineError(job.nominalAxes, error)).normal;
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const Correction c = corrected(job, measured + gaussian(job, 0.5, seed), 0.5);
+    EXPECT_FALSE(c.stop);
+    EXPECT_NE(c.verdict.find("at most"), std::string::npos) << c.verdict;
+    const double left = topographyFor(job, withMachineError(c.axes, error)).rms;
+    EXPECT_LE(left, c.predictedRmsHigh) << c.verdict;
+    EXPECT_LT(c.predictedRmsHigh, 10 * left + 0.5);  // informative: the noise's share, not more
+  }
+}
+
+// Noise-free, the prediction is the model's face and the bound adds only what the face cannot
+// show: on the paper hob the pass leaves nanometres, and the bound says so.
+TEST(Prediction, NoiseFreeTheBoundIsTight) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials error = inSpanError(job, 1e4, 7);
+  const Eigen::MatrixXd measured = topographyFor(job, withMachineError(job.nominalAxes, error)).normal;
+  const Correction c = corrected(job, measured, 1e-4);
+  const double left = topographyFor(job, withMachineError(c.axes, error)).rms;
+  EXPECT_LE(left, c.predictedRmsHigh);
+  EXPECT_LT(c.predictedRmsHigh, 0.02);
+  EXPECT_EQ(c.summary.status, SolveStatus::Converged) << c.summary.reason;
+}
+
+}  // namespace
+}  // namespace hobsharp::test
