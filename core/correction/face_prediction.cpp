@@ -14,7 +14,7 @@ namespace hobsharp {
 namespace {
 
 // Samples of the error the face cannot show, and their seed: the same figures on every run.
-constexpr int kUnseenSamples = 8;
+constexpr int kUnseenSamples = 6;
 // The size of the error the face cannot show, per term, as a multiple of the identified error's.
 constexpr double kUnseenScale = 2;
 constexpr unsigned kUnseenSeed = 20;
