@@ -63,3 +63,13 @@ test('a validation.json from before the targets carried their limits: 0.35 µm f
   assert.equal(targetOf({ class: 'medium', targets: [{ limit: 0.2 }] }).limit, 0.2);
   assert.throws(() => figure({ seed: 1 }), /no scenario classes/);
 });
+
+test('the manual page (docs/validation.md) shows the committed run: its table, seed, count and plot', () => {
+  const page = readFileSync(new URL('../../docs/validation.md', import.meta.url), 'utf8');
+  const table = readFileSync(new URL('../../docs/validation/validation.md', import.meta.url), 'utf8');
+  const rows = table.split('\n').filter((l) => l.startsWith('|'));
+  assert.ok(rows.length > 10);
+  for (const row of rows) assert.ok(page.includes(`${row}\n`), `docs/validation.md is out of date (./hobsharp.sh validate --docs): ${row}`);
+  assert.ok(page.includes(`Seed ${committed.seed}, ${committed.scenarios} scenarios`));
+  assert.ok(page.includes('](validation/validation.png)'));
+});
