@@ -146,6 +146,9 @@ case "${1:-}" in
       if [ "$a" = --docs ]; then OUT=$ROOT/docs/validation; else ARGS+=("$a"); fi
     done
     "$BUILD/tests/hobsharp_validate" --out "$OUT" "${ARGS[@]}"
+    # The plot beside the table: Plotly from node_modules in Debian's Chromium (playwright-core).
+    install_npm
+    node tests/validation/plot.mjs "$OUT/validation.json"
     ;;
   *)
     echo "usage: $0 serve|test|bench|validate" >&2

@@ -32,11 +32,13 @@ async function table(page) {
   }, null, { timeout: 30000 });
   return page.$$eval('#pass-table tbody tr', (rows) => rows.map((r) => [...r.children].map((c) => c.textContent.trim())));
 }
-const sseOf = (row, set) => Number(row[set === 'measured' ? 1 : 4]);
+// Columns: pass, measured rms, sum of squares, largest |deviation|, thickness; the same predicted; note.
+const sseOf = (row, set) => Number(row[set === 'measured' ? 2 : 6]);
 
 async function plotDrawn(page) {
   const traces = await page.evaluate(() => document.querySelector('#plot-passes').data.map((t) => [t.name, t.y.length]));
-  assert.equal(traces.length, 6, 'measured and predicted, for the sum of squares, the largest deviation and the thickness');
+  assert.equal(traces.length, 9, 'the probe noise, and measured and predicted for the rms, the sum of squares, the largest deviation and the thickness');
+  assert.match(traces[0][0], /^probe noise σ/);
   assert.ok(traces.every(([, n]) => n > 0), JSON.stringify(traces));
   assert.ok(await colours(page, '#plot-passes') > 20, 'the plot is not blank');
 }
@@ -92,7 +94,7 @@ test('measure, correct, use as next run, measure again; the history is saved and
   assert.equal(await page.isVisible('#run-axes'), true);
   assert.equal(await page.inputValue('#measured-csv'), '');
   rows = await table(page);
-  assert.deepEqual(rows.map((r) => [r[0], r[7]]), [['1', ''], ['2 (under way)', 'not measured yet']]);
+  assert.deepEqual(rows.map((r) => [r[0], r[9]]), [['1', ''], ['2 (under way)', 'not measured yet']]);
   assert.equal(sseOf(rows[0], 'measured'), first, 'the kept pass, computed again from its axes and grid');
   const predicted = sseOf(rows[1], 'predicted');
   // Undo takes the step back (the grid in use again, no history), Redo makes it again.
@@ -103,16 +105,25 @@ test('measure, correct, use as next run, measure again; the history is saved and
   await afterResult(page, () => page.click('#redo'));
   assert.deepEqual(await table(page), rows);
 
-  // Measure again: the same machine, now with the corrected axes.
+  // Measure again: the same machine, now with the corrected axes. What is left is within the
+  // probe's noise (0.5 µm): stop; no third pass is predicted or offered.
   await measure(page);
   rows = await table(page);
-  assert.deepEqual(rows.map((r) => r[0]), ['1', '2 (under way)', '3 (next, predicted)']);
+  assert.deepEqual(rows.map((r) => [r[0], r[9]]), [['1', ''], ['2 (under way)', 'within the probe noise: stop']]);
   const second = sseOf(rows[1], 'measured');
   assert.ok(second < first / 100, `pass 2 measured ${second} µm², pass 1 ${first} µm²`);
   assert.equal(sseOf(rows[1], 'predicted'), predicted);
   assert.doesNotMatch(JSON.stringify(rows), /NaN|undefined|Infinity/);
+  assert.match(await page.textContent('#verdict'), /^Stop: /);
+  assert.equal(await page.isDisabled('#next-run'), true);
+  assert.match(await page.textContent('#next-run-why'), /^Stop: .* Keep the axes run\.$/);
   await plotDrawn(page);
   await page.locator('#passes-section').screenshot({ path: path.join(shots, 'passes-two.png') });
+  // A finer probe (0.01 µm) sees what is left: no longer within its noise, a third pass is predicted.
+  await afterResult(page, async () => { await page.fill('#probe-noise', '0.01'); await page.dispatchEvent('#probe-noise', 'change'); });
+  rows = await table(page);
+  assert.deepEqual(rows.map((r) => r[0]), ['1', '2 (under way)', '3 (next, predicted)']);
+  assert.equal(await page.isDisabled('#next-run'), false);
 
   // Kept again: two passes in the history; the case and the link hold them.
   await afterResult(page, () => page.click('#next-run'));
@@ -163,7 +174,7 @@ test('points measured, used as next run: the pass keeps its points', async () =>
 
   await afterResult(page, () => page.click('#next-run'));
   rows = await table(page);
-  assert.deepEqual(rows.map((r) => [r[0], r[7]]), [['1', ''], ['2 (under way)', 'not measured yet']]);
+  assert.deepEqual(rows.map((r) => [r[0], r[9]]), [['1', ''], ['2 (under way)', 'not measured yet']]);
   assert.equal(sseOf(rows[0], 'measured'), first, 'the kept pass, computed again from its axes and points');
   assert.doesNotMatch(await page.textContent('#before-title'), /Measured at/, 'the pass under way is not measured yet');
   const { saved } = await save(page);

@@ -132,6 +132,9 @@ test("the words: no −0.000, no hand for a straight gash, the status, the verdi
   assert.equal(await page.textContent('[data-derived="settingAngle"]'), 'auto: 0.0000° (straight gash: no helix to follow)');
 
   await afterResult(page, () => page.click('#preset-paper'));
+  // A machine error to correct (a perfect face is within the probe noise: the verdict says stop).
+  await page.fill('[data-offset="Z 0"]', '-0.01');
+  await page.dispatchEvent('[data-offset="Z 0"]', 'change');
   await after_(page, 'results', () => page.click('#generate-error'));
   await page.waitForFunction(() => document.querySelector('#verdict').dataset.sseAfter !== undefined);
   const verdict = await page.textContent('#verdict');

@@ -63,6 +63,9 @@ test('the worker keeps its module after a refusal and takes a fresh one after a 
   const w = worker();
   const answer = await w.ask({ id: 1, limits: true });
   assert.deepEqual(answer.result, hobsharp.limits());
+  // The description of the result's fields (the figures' units), as the page asks for it.
+  const fields = await w.ask({ id: 9, fields: true });
+  assert.deepEqual(fields.result, hobsharp.resultFields());
   const c = paper();
   c.setup.tilt = 'steep';
   const refusal = await w.ask({ id: 2, caseObject: c });

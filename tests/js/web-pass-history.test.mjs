@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { historyRows, historySeries, nextRunInputs, passCase, resultFigures, resultIsCurrent } from '../../web/src/pass-history.js';
+import { STOP_WHY, historyRows, historySeries, nextRunInputs, passCase, resultFigures, resultIsCurrent } from '../../web/src/pass-history.js';
 import { caseOf, initialState } from '../../web/src/store.js';
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
@@ -88,12 +88,33 @@ test("a kept pass's case: the form with its axes, its grid and its own correctio
   assert.deepEqual(passCase(state, { axes: nominal, measured: [[1, 2]], correction: kept }).correction, kept);
 });
 
-test('figures: measured, predicted next and simulated; nothing that is not finite', () => {
-  const f = resultFigures({ topography, correction: { ...correction, maxAfter: NaN, thicknessAfter: Infinity } });
-  assert.deepEqual(f.measured, { sse: 120, max: 6, thickness: 4.5 });
-  assert.deepEqual(f.next, { sse: 0.02, max: null, thickness: null });
-  assert.deepEqual(f.simulated, { sse: 1e-9, max: 2e-5, thickness: -1e-5 });
+test('figures: measured, predicted next (the rms with its bound) and simulated, the probe noise; nothing that is not finite', () => {
+  const f = resultFigures({ topography: { ...topography, rms: 4e-6 },
+    correction: { ...correction, maxAfter: NaN, thicknessAfter: Infinity, rmsBefore: 1.6, predictedRms: 0.01, predictedRmsHigh: NaN, probeNoise: 0.5 } });
+  assert.deepEqual(f.measured, { rms: 1.6, sse: 120, max: 6, thickness: 4.5 });
+  assert.deepEqual(f.next, { rms: 0.01, rmsHigh: null, sse: 0.02, max: null, thickness: null });
+  assert.deepEqual(f.simulated, { rms: 4e-6, sse: 1e-9, max: 2e-5, thickness: -1e-5 });
+  assert.equal(f.sigma, 0.5);
+  assert.equal(f.stop, false);
   assert.deepEqual(resultFigures({ topography }).measured, null);
+  assert.equal(resultFigures({ topography }).sigma, null);
+  assert.equal(resultFigures({ topography, correction: { ...correction, stop: true } }).stop, true);
+});
+
+test('stop: the face measured is within the probe noise; no next pass is predicted or offered, and the row says why', () => {
+  const stopped = { ...correction, stop: true, probeNoise: 0.5, rmsBefore: 0.11, predictedRms: 0, predictedRmsHigh: 0.29 };
+  const state = computed({ measured: [[0.1]] }, { axes: nominal, topography, correction: stopped });
+  assert.deepEqual(nextRunInputs(state), { why: STOP_WHY });
+  assert.match(STOP_WHY, /^Stop: .*probe noise.*Keep the axes run\.$/);
+  const current = resultFigures(state.result);
+  const kept = resultFigures({ topography, correction: { ...correction, rmsBefore: 9.7, predictedRms: 0, predictedRmsHigh: 0.29, probeNoise: 0.5 } });
+  const rows = historyRows([kept], current);
+  assert.deepEqual(rows.map((r) => r.label), ['1', '2 (under way)'], 'no next row');
+  assert.deepEqual(rows.map((r) => r.note), ['', 'within the probe noise: stop']);
+  assert.deepEqual(rows[1].predicted, kept.next, 'pass 2 as pass 1\'s correction predicted it, with its bound');
+  assert.deepEqual(rows.map((r) => r.sigma), [0.5, 0.5]);
+  // The same figures not stopped: the next pass predicted.
+  assert.equal(historyRows([kept], { ...current, stop: false }).length, 3);
 });
 
 test('rows: each pass predicted by the correction of the pass before, the first by its simulated face', () => {
@@ -111,14 +132,20 @@ test('rows: each pass predicted by the correction of the pass before, the first 
   assert.deepEqual(historyRows([], fig(7))[0].predicted, fig(7).simulated);
 });
 
-test('series: per quantity the passes with a value, measured and predicted apart', () => {
+test('series: per quantity the passes with a value, measured and predicted apart; the rms\'s bounds; the noise floor', () => {
   const rows = [
-    { pass: 1, measured: { sse: 100, max: 5, thickness: null }, predicted: { sse: 0, max: 0, thickness: 0 } },
-    { pass: 2, measured: null, predicted: { sse: 0.5, max: null, thickness: 0.1 } },
+    { pass: 1, measured: { rms: 1.5, sse: 100, max: 5, thickness: null }, predicted: { rms: 0, sse: 0, max: 0, thickness: 0 }, sigma: 0.5 },
+    { pass: 2, measured: null, predicted: { rms: 0.01, rmsHigh: 0.3, sse: 0.5, max: null, thickness: 0.1 }, sigma: null },
+    { pass: 3, measured: null, predicted: { rms: null, rmsHigh: 0.2, sse: 0.1, max: 0, thickness: 0 }, sigma: 0.25 },
   ];
   const s = historySeries(rows);
-  assert.deepEqual(s.sse, { measured: { x: [1], y: [100] }, predicted: { x: [1, 2], y: [0, 0.5] } });
-  assert.deepEqual(s.max.predicted, { x: [1], y: [0] });
+  assert.deepEqual(s.sse, { measured: { x: [1], y: [100] }, predicted: { x: [1, 2, 3], y: [0, 0.5, 0.1] } });
+  assert.deepEqual(s.max.predicted, { x: [1, 3], y: [0, 0] });
   assert.deepEqual(s.thickness.measured, { x: [], y: [] });
-  for (const q of Object.values(s)) for (const set of Object.values(q)) assert.ok(set.y.every(Number.isFinite));
+  assert.deepEqual(s.rms, { measured: { x: [1], y: [1.5] }, predicted: { x: [1, 2], y: [0, 0.01], high: [null, 0.3] } });
+  assert.deepEqual(s.floor, { x: [1, 3], y: [0.5, 0.25] }, 'the probe noise of the passes that have one');
+  for (const [q, v] of Object.entries(s)) {
+    if (q === 'floor') { assert.ok(v.y.every(Number.isFinite)); continue; }
+    for (const set of Object.values(v)) assert.ok(set.y.every(Number.isFinite));
+  }
 });

@@ -5,7 +5,8 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { fixed, signed } from '../../web/src/format.js';
 import { gridFigures } from '../../web/src/figures.js';
-import { settingAngleNote, updatedText, verdictText } from '../../web/src/words.js';
+import { predictionText, settingAngleNote, updatedText, verdictText } from '../../web/src/words.js';
+import { fieldMeaning, fieldUnit, setResultFields } from '../../web/src/result-fields.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 
 const hobsharp = await loadHobSharp();
@@ -72,4 +73,40 @@ test('a grid\'s figures: the sum of squares and the largest deviation, NaN (a da
   // The circular grid differs from the normal one, so do its figures.
   const circular = gridFigures(t.circular);
   assert.ok(Math.abs(circular.sse - t.sse) > 1e-3 * t.sse);
+});
+
+// A measured grid of the paper's 5 x 9 points: a shape the axes make (10 µm), or noise of 0.2 µm rms
+// (the correction's default sigma is 0.5 µm: within it).
+const shaped = () => Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (__, j) => (i - 2) * (j - 4) * 0.5 + 0.3 * (j - 4)));
+const noisy = () => Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (__, j) => 0.3 * Math.sin(7 * i + 3 * j + 9 * i * j)));
+
+test('the prediction: what the pass will leave and its bound, µm rms at the probe points, units from the module', () => {
+  setResultFields(hobsharp.resultFields());
+  assert.equal(fieldUnit('correction.predictedRms'), 'µm');
+  assert.match(fieldMeaning('correction.predictedRmsHigh'), /^at most this rms/);
+  assert.equal(fieldUnit('no.such.field'), null);
+  const c = hobsharp.evaluate({ ...paper(), measured: shaped() }).correction;
+  assert.equal(c.stop, false);
+  const text = predictionText(c, fieldUnit);
+  assert.match(text, /^Predicted after the pass: [\d.e+-]+ µm rms \(at most [\d.e+-]+ µm rms\) at the probe points\.$/);
+  assert.ok(text.includes(`at most ${Number(c.predictedRmsHigh.toPrecision(3))} µm rms`), text);
+  // Units are the module's: another unit is shown as given; none given, no line.
+  assert.match(predictionText(c, (p) => (p.endsWith('High') ? 'mm' : 'µm')), /µm rms \(at most [\d.e+-]+ mm rms\)/);
+  assert.equal(predictionText(c, () => null), null);
+  // Nothing that is not a number, nothing for a proposal that is not to be run.
+  assert.equal(predictionText({ ...c, predictedRmsHigh: NaN }, fieldUnit), null);
+  assert.equal(predictionText({ ...c, predictedRms: undefined }, fieldUnit), null);
+  assert.equal(predictionText({ ...c, usable: false }, fieldUnit), null);
+  assert.equal(predictionText({ ...c, stop: true }, fieldUnit), null);
+  assert.throws(() => setResultFields({}), /no description of its results/);
+});
+
+test('stop: a face measured within the probe noise says so first, with the figures measured and nothing predicted', () => {
+  const c = hobsharp.evaluate({ ...paper(), measured: noisy() }).correction;
+  assert.equal(c.stop, true);
+  const text = verdictText(c);
+  assert.match(text, /^Stop: the measured face \([\d.]+ µm rms\) is within the probe noise \(sigma 0\.5 µm\); another pass would only move noise\. Keep the axes run\. /);
+  assert.match(text, /Measured: RMS [\d.]+ µm; sum of squares [\d.e+-]+ µm²; thickness [+-]?[\d.]+ µm\.$/);
+  assert.doesNotMatch(text, /→|predicted|NaN|undefined/);
+  assert.equal(predictionText(c, fieldUnit), null);
 });

@@ -70,7 +70,7 @@ Campaign summarise(std::uint64_t seed, std::vector<ScenarioOutcome> outcomes, do
     ClassSummary s;
     s.kind = static_cast<ScenarioClass>(k);
     std::vector<Goal> goals = goalsOf(s.kind);
-    for (const Goal& g : goals) s.targets.push_back(Target{g.what, g.required});
+    for (const Goal& g : goals) s.targets.push_back(Target{g.what, g.required, g.limit});
     for (const ScenarioOutcome& o : outcomes) {
       if (o.scenario.spec.kind != s.kind) continue;
       ++s.count;
@@ -113,8 +113,10 @@ Campaign summarise(std::uint64_t seed, std::vector<ScenarioOutcome> outcomes, do
 namespace {
 
 nlohmann::json targetJson(const Target& t) {
-  return {{"target", t.what}, {"required", t.required}, {"met", t.met}, {"of", t.of}, {"share", t.share()},
-          {"holds", t.holds()}};
+  nlohmann::json j = {{"target", t.what}, {"required", t.required}, {"met", t.met}, {"of", t.of}, {"share", t.share()},
+                      {"holds", t.holds()}};
+  if (t.limit > 0) j["limit"] = t.limit;
+  return j;
 }
 
 std::string percent(double share) {

@@ -16,6 +16,7 @@ namespace hobsharp::validation {
 struct Target {
   std::string what;      // the target in words, with its unit
   double required = 0;   // the share it asks for, 0..1
+  double limit = 0;      // µm rms the face may leave to meet it (0: a target without one)
   int met = 0, of = 0;   // scenarios meeting it, scenarios judged
   double share() const { return of > 0 ? static_cast<double>(met) / of : 0.0; }
   bool holds() const { return of > 0 && share() >= required; }

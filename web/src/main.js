@@ -36,6 +36,7 @@ import { mountCaseFiles } from './io/case-files.js';
 import { caseFromHash, mountLink } from './io/url.js';
 import { createLoader } from './load.js';
 import { setModuleLimits } from './limits.js';
+import { setResultFields } from './result-fields.js';
 
 const store = createStore();
 const calculator = createCalculator();
@@ -75,7 +76,8 @@ mountCaseFiles(store, loader);
 mountLink(store);
 startRecompute(store, calculator);
 
-// The module's limits first (the form's bounds, the axes, the case format), then the case.
+// The module's limits first (the form's bounds, the axes, the case format) and the description of
+// its results (the figures' units), then the case.
 function openCase() {
   const fromLink = caseFromHash(location.hash);
   if (fromLink && fromLink.case !== undefined) loader.link(fromLink.case);
@@ -83,8 +85,9 @@ function openCase() {
   else loader.paper();
 }
 (function ready() {
-  calculator.limits().then((limits) => {
+  Promise.all([calculator.limits(), calculator.fields()]).then(([limits, fields]) => {
     setModuleLimits(limits);
+    setResultFields(fields);
     store.emit('limits');
     openCase();
   }).catch((e) => {

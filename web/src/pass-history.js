@@ -5,23 +5,33 @@
 // measured grid or points (state.extra.measuredPoints), once there are some.
 // "Use as next run" keeps the pass under way and makes the proposed axes the run of the next.
 //
-// Per pass the page shows, measured and predicted, the sum of squares (µm²), the largest
-// |deviation| (µm) and the thickness error (µm). The measured figures are the correction's
+// Per pass the page shows, measured and predicted, the rms (µm), the sum of squares (µm²), the
+// largest |deviation| (µm) and the thickness error (µm). The measured figures are the correction's
 // "before"; the prediction for a pass is what the previous pass's correction predicted (its
-// "after"), and for the first pass the face simulated for its axes, with no machine error known.
+// "after"; for the rms, correction.predictedRms with its bound correction.predictedRmsHigh), and
+// for the first pass the face simulated for its axes, with no machine error known. Beside them,
+// per pass, the probe noise its correction assumed (correction.probeNoise, sigma, µm rms): the
+// floor below which the measured rms only moves noise. When the correction says stop (the face
+// measured is within the probe noise), no next pass is predicted or offered.
 import { caseOf } from './store.js';
 
 const finiteOr = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
-const figures = (sse, max, thickness) => ({ sse: finiteOr(sse), max: finiteOr(max), thickness: finiteOr(thickness) });
+const figures = (rms, sse, max, thickness) => ({ rms: finiteOr(rms), sse: finiteOr(sse), max: finiteOr(max), thickness: finiteOr(thickness) });
 
-// A result's figures: the face measured, the one predicted after its correction, and the one
-// simulated for the axes run. A number that is not finite becomes null (shown as a dash).
+// Why no next pass is offered when the correction says stop.
+export const STOP_WHY = 'Stop: the face measured is within the probe noise; another pass would only move noise. Keep the axes run.';
+
+// A result's figures: the face measured, the one predicted after its correction (with the rms's
+// bound, rmsHigh), and the one simulated for the axes run; the probe noise the correction assumed
+// (sigma) and whether it says stop. A number that is not finite becomes null (shown as a dash).
 export function resultFigures(result) {
   const c = result.correction, t = result.topography;
   return {
-    measured: c ? figures(c.sseBefore, c.maxBefore, c.thicknessBefore) : null,
-    next: c ? figures(c.sseAfter, c.maxAfter, c.thicknessAfter) : null,
-    simulated: figures(t.sse, t.max, t.thickness),
+    measured: c ? figures(c.rmsBefore, c.sseBefore, c.maxBefore, c.thicknessBefore) : null,
+    next: c ? { ...figures(c.predictedRms, c.sseAfter, c.maxAfter, c.thicknessAfter), rmsHigh: finiteOr(c.predictedRmsHigh) } : null,
+    simulated: figures(t.rms, t.sse, t.max, t.thickness),
+    sigma: c ? finiteOr(c.probeNoise) : null,
+    stop: Boolean(c) && c.stop === true,
   };
 }
 
@@ -37,6 +47,7 @@ export function nextRunInputs(state) {
   if (!resultIsCurrent(state)) return { why: 'Wait for the correction of the measurement now in use.' };
   const c = state.result.correction;
   if (!c || !c.axes) return { why: 'There is no correction to run.' };
+  if (c.stop === true) return { why: STOP_WHY };
   const measurement = state.measured ? { measured: structuredClone(state.measured) } : { measuredPoints: structuredClone(measuredPoints) };
   const pass = { axes: structuredClone(state.axes || state.result.axes), ...measurement,
     correction: structuredClone(caseOf(state).correction) };
@@ -53,41 +64,52 @@ export function passCase(state, pass) {
   return c;
 }
 
+const WITHIN_NOISE = 'within the probe noise: stop';
+
 // The rows of the history table and plot. kept: per kept pass, its figures (resultFigures of its
 // passCase), or {error} (the message), or null while computed; current: resultFigures of the
 // result now. Rows: the passes kept, the pass under way, then the next pass when the correction
-// predicts it. Each row: {pass (1, 2, ...), label, measured, predicted, note}.
+// predicts one (not when it says stop). Each row: {pass (1, 2, ...), label, measured, predicted,
+// sigma (the probe noise its correction assumed, µm, or null), note}.
 export function historyRows(kept, current) {
   const rows = [];
   let previous = null;  // the figures of the pass before
   const predictionFor = (k) => (k === 0 ? null : previous && previous.next);
   kept.forEach((f, k) => {
-    const note = f === null ? 'computing…' : f.error ? f.error : '';
     const ok = f && !f.error ? f : null;
+    const note = f === null ? 'computing…' : f.error ? f.error : ok.stop ? WITHIN_NOISE : '';
     rows.push({ pass: k + 1, label: `${k + 1}`, measured: ok && ok.measured,
-      predicted: k === 0 ? ok && ok.simulated : predictionFor(k), note });
+      predicted: k === 0 ? ok && ok.simulated : predictionFor(k), sigma: ok ? ok.sigma : null, note });
     previous = ok;
   });
   const k = kept.length;
   if (current) {
+    const note = !current.measured ? 'not measured yet' : current.stop ? WITHIN_NOISE : '';
     rows.push({ pass: k + 1, label: `${k + 1} (under way)`, measured: current.measured,
-      predicted: k === 0 ? current.simulated : predictionFor(k), note: current.measured ? '' : 'not measured yet' });
-    if (current.next) rows.push({ pass: k + 2, label: `${k + 2} (next, predicted)`, measured: null, predicted: current.next, note: '' });
+      predicted: k === 0 ? current.simulated : predictionFor(k), sigma: current.sigma, note });
+    if (current.next && !current.stop) {
+      rows.push({ pass: k + 2, label: `${k + 2} (next, predicted)`, measured: null, predicted: current.next, sigma: current.sigma, note: '' });
+    }
   }
   return rows;
 }
 
 // The plot's series: per quantity, the passes and the measured and predicted values (nulls left
-// out, so that nothing that is not finite reaches the plot).
+// out, so that nothing that is not finite reaches the plot); for the rms, the predicted values'
+// bounds (high: a number, or null where there is none); and the probe noise's floor, per pass
+// whose correction assumed one (floor: {x, y}, µm rms).
 export function historySeries(rows) {
   const out = {};
-  for (const q of ['sse', 'max', 'thickness']) {
-    const pick = (set) => rows.filter((r) => r[set] && r[set][q] !== null).map((r) => [r.pass, r[set][q]]);
+  for (const q of ['rms', 'sse', 'max', 'thickness']) {
+    const pick = (set) => rows.filter((r) => r[set] && r[set][q] !== null).map((r) => [r.pass, r[set][q], r[set]]);
     const measured = pick('measured'), predicted = pick('predicted');
     out[q] = {
       measured: { x: measured.map((p) => p[0]), y: measured.map((p) => p[1]) },
       predicted: { x: predicted.map((p) => p[0]), y: predicted.map((p) => p[1]) },
     };
+    if (q === 'rms') out[q].predicted.high = predicted.map((p) => finiteOr(p[2].rmsHigh));
   }
+  const floor = rows.filter((r) => finiteOr(r.sigma) !== null && r.sigma > 0);
+  out.floor = { x: floor.map((r) => r.pass), y: floor.map((r) => r.sigma) };
   return out;
 }

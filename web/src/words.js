@@ -23,6 +23,12 @@ const plural = (n, one, many) => `${n} ${n === 1 ? one : many}`;
 // the face would need axis moves far larger than the deviation they remove (README "How the core
 // computes" > Correction).
 export function verdictText(c) {
+  // Stop (correction.stop): the measured face is within the probe noise. Its figures as measured,
+  // and nothing predicted: another pass would only move noise.
+  if (c.stop === true) {
+    const rms = Number.isFinite(c.rmsBefore) ? `RMS ${fixed(c.rmsBefore, 3)} µm; ` : '';
+    return `${c.verdict} Measured: ${rms}sum of squares ${fmt(c.sseBefore, 6)} µm²; thickness ${signed(c.thicknessBefore, 3)} µm.`;
+  }
   const dropped = c.amplifyingDropped
     ? `; ${plural(c.amplifyingDropped, 'combination is', 'combinations are')} left unchanged, because ` +
       `${c.amplifyingDropped === 1 ? 'it' : 'they'} would need large axis moves for little gain`
@@ -34,4 +40,21 @@ export function verdictText(c) {
   return `${c.verdict} ${lead}; ` +
     `thickness ${signed(c.thicknessBefore, 3)} → ${signed(c.thicknessAfter, 3)} µm. ` +
     `The correction changes ${plural(c.rank, 'independent combination', 'independent combinations')} of the coefficients${dropped}.`;
+}
+
+// A figure of µm rms for a sentence: 3 significant digits, 0 as 0.
+const rmsFigure = (v) => fmt(v, 3);
+
+// What the pass will leave (correction.predictedRms and its bound correction.predictedRmsHigh, on
+// the probe grid), with the units the module gives its fields (unitOf: a path to its unit, null
+// for a field it does not describe): "Predicted after the pass: 0.012 µm rms (at most 0.446 µm
+// rms) at the probe points." Null when there is nothing to run (correction.stop, or a proposal
+// that is not usable), when a figure is not a finite number, or when the module gives no unit.
+export function predictionText(c, unitOf) {
+  if (!c || c.stop === true || c.usable === false) return null;
+  const rms = c.predictedRms, high = c.predictedRmsHigh;
+  if (!Number.isFinite(rms) || !Number.isFinite(high)) return null;
+  const unit = unitOf('correction.predictedRms'), highUnit = unitOf('correction.predictedRmsHigh');
+  if (!unit || !highUnit) return null;
+  return `Predicted after the pass: ${rmsFigure(rms)} ${unit} rms (at most ${rmsFigure(high)} ${highUnit} rms) at the probe points.`;
 }

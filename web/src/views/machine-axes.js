@@ -9,9 +9,14 @@ import { axisPositions, coefficientsText, machineCoefficients, machineUnit, posi
 
 const $ = (selector) => document.querySelector(selector);
 
-// The axes shown, and in words which they are.
+// The axes shown, and in words which they are. When the correction says stop (the face measured
+// is within the probe noise) the axes run stay: those are shown, not a proposal.
 function axesOf(state) {
   const r = state.result, c = r.correction;
+  if (c && c.stop === true) {
+    return { axes: r.runAxes || (state.resultCase && state.resultCase.axes) || r.axes,
+      source: '(the axes run: keep them; the face measured is within the probe noise)' };
+  }
   if (c && c.roundedAxes) return { axes: c.roundedAxes, source: '(the corrected proposal, rounded to the machine\'s resolution)' };
   if (state.resultCase && state.resultCase.axes) return { axes: state.resultCase.axes, source: '(the axes run; no correction)' };
   return { axes: r.axes, source: '(nominal; no correction)' };

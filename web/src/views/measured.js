@@ -1,7 +1,8 @@
 // Measured data and correction: the CSV box (paste, upload, use, clear) with its message, the
 // grid's shape, and the correction's verdict. A grid given here is measured: the correction assumes
 // the probe's noise (web/src/probe-noise.js).
-import { verdictText } from '../words.js';
+import { predictionText, verdictText } from '../words.js';
+import { fieldMeaning, fieldUnit } from '../result-fields.js';
 import { MAX_MEASURED_BYTES, measuredText, tooLargeMessage } from '../io/csv.js';
 import { ORIENT_OPTIONS, checkShape, orient, readMeasured } from '../io/measured-import.js';
 import { looksLikePoints, readPoints } from '../io/points-import.js';
@@ -15,13 +16,26 @@ const $ = (selector) => document.querySelector(selector);
 // The grid's and the locks' refusals; the correction's options show theirs at their inputs.
 const isMeasuredField = (field) => /^(measured|correction)/.test(field || '') && !OPTION_FIELD.test(field);
 
+// The verdict; under it what the pass will leave and its bound (µm rms at the probe points, units
+// from the module's description of its fields). A stop (the measured face within the probe noise)
+// is set apart, led by "Stop:", and predicts nothing: there is no pass to run.
 function renderVerdict(r) {
-  const v = $('#verdict');
-  if (!r.correction) { v.textContent = ''; delete v.dataset.sseBefore; delete v.dataset.sseAfter; return; }
+  const v = $('#verdict'), p = $('#prediction');
   const c = r.correction;
+  const stop = Boolean(c) && c.stop === true;
+  v.classList.toggle('stop', stop);
+  if (stop) v.dataset.stop = 'true';
+  else delete v.dataset.stop;
+  const line = c ? predictionText(c, fieldUnit) : null;
+  p.hidden = !line;
+  p.textContent = line || '';
+  p.title = line ? `${fieldMeaning('correction.predictedRms')}. At most: ${fieldMeaning('correction.predictedRmsHigh')}.` : '';
+  if (!c) { v.textContent = ''; delete v.dataset.sseBefore; delete v.dataset.sseAfter; return; }
   v.dataset.sseBefore = c.sseBefore;
   v.dataset.sseAfter = c.sseAfter;
-  v.textContent = verdictText(c);
+  const text = verdictText(c);
+  if (stop && text.startsWith('Stop:')) v.innerHTML = `<strong>Stop:</strong>${escapeHtml(text.slice(5))}`;
+  else v.textContent = text;
 }
 
 // The preview's warnings (grid or points): what looks wrong in what was read, then the problem

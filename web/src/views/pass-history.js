@@ -4,21 +4,37 @@
 // axes and grid) is evaluated once and the figures kept; a pass the calculator refuses (the grid
 // changed since) shows why in its row.
 import { fixed, fmt, signed, escapeHtml } from '../format.js';
-import { historyRows, historySeries, nextRunInputs, passCase, resultFigures } from '../pass-history.js';
+import { STOP_WHY, historyRows, historySeries, nextRunInputs, passCase, resultFigures } from '../pass-history.js';
 import { drawPassHistory } from '../plots/pass-history.js';
 import { loadPlotly } from '../plots/passes.js';
+import { fieldMeaning, fieldUnit } from '../result-fields.js';
 
 const $ = (selector) => document.querySelector(selector);
 
-const cells = (f, set) => (f
-  ? `<td class="num" data-${set}="sse">${fmt(f.sse, 6)}</td><td class="num" data-${set}="max">${fixed(f.max, 3)}</td>` +
-    `<td class="num" data-${set}="thickness">${signed(f.thickness, 3)}</td>`
-  : '<td class="num">—</td><td class="num">—</td><td class="num">—</td>');
+// The figures' units as the module gives them (the measured ones; the predicted have the same).
+const units = () => {
+  const of = (path, fallback) => fieldUnit(path) || fallback;
+  return { rms: of('correction.rmsBefore', 'µm'), sse: of('correction.sseBefore', 'µm²'), max: of('correction.maxBefore', 'µm'),
+    thickness: of('correction.thicknessBefore', 'µm') };
+};
 
+// The rms predicted with its bound: "0.012 (at most 0.446)".
+const rmsCell = (f) => (f.rms !== null && typeof f.rmsHigh === 'number' ? `${fmt(f.rms, 3)} (at most ${fmt(f.rmsHigh, 3)})` : fmt(f.rms, 4));
+
+const cells = (f, set) => (f
+  ? `<td class="num" data-${set}="rms">${rmsCell(f)}</td><td class="num" data-${set}="sse">${fmt(f.sse, 6)}</td>` +
+    `<td class="num" data-${set}="max">${fixed(f.max, 3)}</td><td class="num" data-${set}="thickness">${signed(f.thickness, 3)}</td>`
+  : '<td class="num">—</td><td class="num">—</td><td class="num">—</td><td class="num">—</td>');
+
+// The predicted rms is correction.predictedRms, the face without the probe's noise (the other
+// predicted figures keep the measurement's residual, noise and all), with its bound.
 function renderTable(rows) {
-  const unitRow = '<th>sum of squares (µm²)</th><th>largest |deviation| (µm)</th><th>thickness error (µm)</th>';
-  $('#pass-table thead').innerHTML = '<tr><th rowspan="2">pass</th><th colspan="3">measured</th>' +
-    `<th colspan="3">predicted</th><th rowspan="2">note</th></tr><tr>${unitRow}${unitRow}</tr>`;
+  const u = units();
+  const rest = `<th>sum of squares (${escapeHtml(u.sse)})</th>` +
+    `<th>largest |deviation| (${escapeHtml(u.max)})</th><th>thickness error (${escapeHtml(u.thickness)})</th>`;
+  const predictedRms = `<th title="${escapeHtml(fieldMeaning('correction.predictedRms'))}">rms, probe noise taken out (${escapeHtml(fieldUnit('correction.predictedRms') || u.rms)})</th>`;
+  $('#pass-table thead').innerHTML = '<tr><th rowspan="2">pass</th><th colspan="4">measured</th>' +
+    `<th colspan="4">predicted</th><th rowspan="2">note</th></tr><tr><th>rms (${escapeHtml(u.rms)})</th>${rest}${predictedRms}${rest}</tr>`;
   $('#pass-table tbody').innerHTML = rows.map((r) => `<tr data-pass="${r.pass}">
     <th>${escapeHtml(r.label)}</th>${cells(r.measured, 'measured')}${cells(r.predicted, 'predicted')}
     <td class="pass-note">${escapeHtml(r.note)}</td></tr>`).join('');
@@ -36,6 +52,7 @@ export function mountPassHistory(store, calculator, measuredView) {
     const next = nextRunInputs(state);
     $('#next-run').disabled = !next.inputs;
     $('#next-run-why').textContent = next.why || '';
+    $('#next-run-why').classList.toggle('stop', next.why === STOP_WHY);
     $('#clear-passes').hidden = !state.passes.length;
     const shown = Boolean(state.result) && (state.passes.length > 0 || Boolean(state.result.correction));
     $('#pass-history').hidden = !shown;
@@ -44,7 +61,7 @@ export function mountPassHistory(store, calculator, measuredView) {
     const rows = historyRows(kept, resultFigures(state.result));
     renderTable(rows);
     const count = rows.length ? rows[rows.length - 1].pass : 1;
-    loadPlotly().then((Plotly) => drawPassHistory(Plotly, $('#plot-passes'), historySeries(rows), count))
+    loadPlotly().then((Plotly) => drawPassHistory(Plotly, $('#plot-passes'), historySeries(rows), count, units()))
       .then(() => { section.dataset.drawn = String(rows.length); }, () => {});
   }
 
