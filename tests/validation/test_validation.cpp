@@ -41,10 +41,12 @@ TEST(Validation, CampaignTargets) {
   for (const Target& t : classOf(ScenarioClass::Noisy).targets) EXPECT_GE(t.share(), t.required) << t.what;
   EXPECT_GE(campaign().bounds[1].share(), 0.80) << campaign().bounds[1].what;
 
-  // Not yet met (docs/validation.md): held at the share measured with g++ -O2, 25/33, 16/34, 31/34,
-  // 30/34, 160/197 and 222/265 of the 95, 90, 95, 90, 90 and 90 %, less one scenario (the
-  // sanitizer build's clang rounds differently, and a scenario at a threshold may fall either way).
+  // Not yet met (docs/validation.md): held at the share measured with g++ -O2, 25/33, 27/33, 16/34,
+  // 31/34, 30/34, 160/197 and 222/265 of the 95, 90, 90, 95, 90, 90 and 90 %, less one
+  // scenario (the sanitizer build's clang rounds differently, and a scenario at a threshold may
+  // fall either way). The rounded axes' 27/33 is with the coefficients as the program carries them.
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[0].share(), 24.0 / 33 - 1e-9);
+  EXPECT_GE(classOf(ScenarioClass::Medium).targets[1].share(), 26.0 / 33 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::Large).targets[0].share(), 15.0 / 34 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::NoiseOnly).targets[0].share(), 30.0 / 34 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::Wheel).targets[0].share(), 29.0 / 34 - 1e-9);
