@@ -63,6 +63,12 @@ test('the worker keeps its module after a refusal and takes a fresh one after a 
   const w = worker();
   const answer = await w.ask({ id: 1, limits: true });
   assert.deepEqual(answer.result, hobsharp.limits());
+  // The result fields, whose units the page shows (limits.js RESULT_UNIT).
+  const fields = await w.ask({ id: 1, fields: true });
+  assert.deepEqual(fields.result, hobsharp.resultFields());
+  limits.setResultFields(fields.result);
+  assert.equal(limits.RESULT_UNIT['correction.resolutionFloor'], 'µm');
+  assert.equal(limits.RESULT_UNIT['correction.sseRounded'], 'µm²');
   const c = paper();
   c.setup.tilt = 'steep';
   const refusal = await w.ask({ id: 2, caseObject: c });

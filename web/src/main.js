@@ -35,7 +35,7 @@ import { mountAccess } from './views/access.js';
 import { mountCaseFiles } from './io/case-files.js';
 import { caseFromHash, mountLink } from './io/url.js';
 import { createLoader } from './load.js';
-import { setModuleLimits } from './limits.js';
+import { setModuleLimits, setResultFields } from './limits.js';
 
 const store = createStore();
 const calculator = createCalculator();
@@ -75,7 +75,8 @@ mountCaseFiles(store, loader);
 mountLink(store);
 startRecompute(store, calculator);
 
-// The module's limits first (the form's bounds, the axes, the case format), then the case.
+// The module's limits first (the form's bounds, the axes, the case format) and its result fields
+// (their units), then the case.
 function openCase() {
   const fromLink = caseFromHash(location.hash);
   if (fromLink && fromLink.case !== undefined) loader.link(fromLink.case);
@@ -83,8 +84,9 @@ function openCase() {
   else loader.paper();
 }
 (function ready() {
-  calculator.limits().then((limits) => {
+  Promise.all([calculator.limits(), calculator.fields()]).then(([limits, fields]) => {
     setModuleLimits(limits);
+    setResultFields(fields);
     store.emit('limits');
     openCase();
   }).catch((e) => {
