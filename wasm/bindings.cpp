@@ -238,6 +238,8 @@ val limits() {
     resolution.set(axisName(a), r);
   }
   correction.set("resolution", resolution);
+  // The significant digits the NC program carries each coefficient with (correction.roundedAxes).
+  correction.set("coefficientDigits", defaults.resolution.coefficientDigits);
   o.set("correction", correction);
   o.set("inspection", inspectionLimits());
   return o;

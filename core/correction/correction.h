@@ -42,8 +42,11 @@ struct Correction {
   CorrectionMethod method = CorrectionMethod::Linear;
   LeastSquaresSummary summary;           // status, reason, iterations
   AxisPolynomials identifiedError;       // E: the machine's actual axes minus the commanded ones
-  AxisPolynomials roundedAxes;           // `axes` rounded to the machine resolution
+  AxisPolynomials roundedAxes;           // `axes` as the NC program carries them (roundAsProgrammed)
   Topography afterRounded;               // the face predicted with roundedAxes, re-simulated
+  // The pass's floor, µm rms on the probe grid: the face rms that quantising each axis position
+  // to its resolution causes (resolutionFloor, machine_resolution.h).
+  double resolutionFloor = 0;
   // Per axis, X Y Z A B, signed value of largest magnitude over the motion range: µm (X, Y, Z)
   // or µrad (A, B).
   std::array<double, kAxisCount> identifiedErrorSize{};

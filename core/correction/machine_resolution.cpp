@@ -1,6 +1,9 @@
 #include "machine_resolution.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "units.h"
 
@@ -20,15 +23,37 @@ double coefficientStep(const MachineResolution& resolution, const Coefficient& c
   return resolution.inAxisUnit(c.axis) / std::pow(motionRange, c.degree);
 }
 
-AxisPolynomials roundToResolution(const AxisPolynomials& axes, const MachineResolution& resolution,
-                                  double motionRange) {
+double programFactor(const Coefficient& c, bool helical) {
+  const double value = isRotary(c.axis) ? kDegPerRad : 1.0;
+  return helical ? value * std::pow(kRadPerDeg, c.degree) : value;
+}
+
+double roundToSignificant(double x, int digits) {
+  if (x == 0 || !std::isfinite(x)) return x;
+  // Decimal, correctly rounded: the number as a program line writes it.
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*e", std::clamp(digits, 1, 17) - 1, x);
+  return std::strtod(text, nullptr);
+}
+
+AxisPolynomials roundAsProgrammed(const AxisPolynomials& axes, const MachineResolution& resolution, bool helical) {
   AxisPolynomials r = axes;
   for (Axis a : kAxes)
     for (int k = 0; k <= r[a].degree(); ++k) {
-      const double step = coefficientStep(resolution, Coefficient{a, k}, motionRange);
-      r[a].a[k] = std::round(r[a].a[k] / step) * step;
+      const double f = programFactor(Coefficient{a, k}, helical);
+      r[a].a[k] = roundToSignificant(r[a].a[k] * f, resolution.coefficientDigits) / f;
     }
   return r;
+}
+
+double resolutionFloor(const Eigen::MatrixXd& perPosition, const MachineResolution& resolution) {
+  if (perPosition.rows() == 0) return 0;
+  double meanSquare = 0;
+  for (Axis a : kAxes) {
+    const double variance = std::pow(resolution.inAxisUnit(a), 2) / 12;  // uniform in +-step/2
+    meanSquare += variance * perPosition.col(static_cast<int>(a)).squaredNorm() / static_cast<double>(perPosition.rows());
+  }
+  return std::sqrt(meanSquare);
 }
 
 double largestOverRange(const Polynomial& p, Axis a, double min, double max) {

@@ -193,8 +193,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.after = c.before;
   }
   const MotionRange range = motionRange(runFace);
-  const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
-  c.roundedAxes = roundToResolution(c.axes, o.resolution, reach);
+  c.roundedAxes = roundAsProgrammed(c.axes, o.resolution, setup.face.helical());
   const bool dressing = dressed && !c.runKept;  // a run kept keeps its wheel as well as its axes
   auto rounded = predictedFace(dressing ? *dressed : setup, runFace, c.roundedAxes, c.identifiedError, unexplained, at,
                                !dressing);
@@ -214,6 +213,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     // The degree-0 column of the axis: µm of face per mm or rad, to per µm or per µrad.
     c.facePerAxisError[i] = S.normal.col(i).cwiseAbs().maxCoeff() / displayFactor(a);
   }
+  c.resolutionFloor = resolutionFloor(S.normal, o.resolution);
   const std::array<double, kAxisCount> perNoise = curveDeviation(c.coefficients, coefficientCov, range);
   for (int i = 0; i < kAxisCount; ++i) {
     c.changePerNoise[i] = perNoise[i];

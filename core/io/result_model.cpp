@@ -524,8 +524,11 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     v.number({"correction.probeNoise", "µm", "the probe noise sigma the correction assumed", kWithMeasured}, probeNoise);
     v.axes({"correction.axes", kCoefficientUnit, "the exact proposal, the axes to run next: nominal minus the identified error (Tab. 2 right)",
             kWithMeasured}, c.axes);
-    v.axes({"correction.roundedAxes", kCoefficientUnit, "correction.axes rounded to the machine resolution at the end of the motion range",
-            kWithMeasured}, c.roundedAxes);
+    // The digits are the option's (machine_resolution.h), written once.
+    static const std::string kRounded = "correction.axes as the NC program carries them: each coefficient to " +
+                                        std::to_string(MachineResolution{}.coefficientDigits) +
+                                        " significant digits in mm or deg per (deg or mm)^k (docs/conventions.md, Machine resolution)";
+    v.axes({"correction.roundedAxes", kCoefficientUnit, kRounded.c_str(), kWithMeasured}, c.roundedAxes);
     v.texts({"correction.coefficients", "", "the coefficients left free (not locked)", kWithMeasured}, names(c.coefficients));
     eigenNumbers(v, {"correction.change", "coefficient units", "the changes of correction.coefficients, in order: correction.axes minus the axes run", kWithMeasured}, c.change);
     // One figure per axis: µm-type units for X, Y, Z and µrad-type ones for A, B (README, "Correction").
@@ -581,6 +584,10 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
              c.afterRounded.max);
     v.number({"correction.thicknessRounded", "µm", "thickness error predicted with correction.roundedAxes", kWithMeasured},
              c.afterRounded.thickness);
+    v.number({"correction.rmsRounded", "µm", "root mean square predicted with correction.roundedAxes (re-simulated)", kWithMeasured},
+             c.afterRounded.rms);
+    v.number({"correction.resolutionFloor", "µm", "the pass's floor, rms on the probe grid: the face rms that quantising each axis position to correction.resolution causes; each position's error uniform in +-step/2 (sd step/sqrt 12), independent between axes, through the face's sensitivity to a constant change of the axis", kWithMeasured},
+             c.resolutionFloor);
     eigenNumbers(v, {"correction.singularValues", "", "nonlinear: of the identifiable directions in µm of face per machine step; linear: of the column-scaled matrix; largest first", kWithMeasured},
                  c.singularValues);
     std::vector<double> used;

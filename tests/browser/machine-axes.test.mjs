@@ -1,6 +1,8 @@
-// The axes to run in the control's units (issue 11, item 4): the rounded proposal's coefficients
-// in mm and degrees per degree of hob rotation, copied to the clipboard, and the axis positions
-// over the motion range as CSV at a chosen step.
+// The axes to run in the control's units (issue 11, item 4): the proposal's coefficients as the NC
+// program carries them (issue 20, item 6: 10 significant digits) in mm and degrees per degree of
+// hob rotation, the face predicted with them and the floor the position resolution sets (units
+// from the module's result fields), copied to the clipboard, and the axis positions over the
+// motion range as CSV at a chosen step.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -13,15 +15,18 @@ test('the axes to run: degrees, the rounded proposal, copied and sampled', async
   const page = await openPage(base, { viewport: { width: 1366, height: 900 }, permissions: ['clipboard-read', 'clipboard-write'] });
   await page.waitForFunction(() => window.hobsharpTimings.results > 0);
   assert.equal(await page.textContent('#machine-axes-source'), '(nominal; no correction)');
+  assert.equal(await page.textContent('#machine-axes-figures'), '');
   const a1 = await page.textContent('#machine-coefficients tr[data-axis="A"] td:nth-child(3)');
   assert.match(a1, /^1 deg\/deg$/, 'A turns with the hob, 1 deg per deg');
   // A correction: its rounded proposal is shown.
   await page.fill('[data-offset="B 0"]', '0.0005');
   await page.dispatchEvent('[data-offset="B 0"]', 'change');
   await afterResult(page, () => page.click('#generate-error'));
-  assert.equal(await page.textContent('#machine-axes-source'), '(the corrected proposal, rounded to the machine\'s resolution)');
+  assert.equal(await page.textContent('#machine-axes-source'), '(the corrected proposal, as the NC program carries it)');
   const b0 = Number((await page.textContent('#machine-coefficients tr[data-axis="B"] td:nth-child(2)')).split(' ')[0]);
-  assert.ok(Math.abs(b0 / 1e-4 - Math.round(b0 / 1e-4)) < 1e-6, `B a0 = ${b0} deg is a whole number of 0.0001 deg steps`);
+  assert.equal(b0, Number(b0.toPrecision(10)), `B a0 = ${b0} deg has at most 10 significant digits`);
+  const figures = await page.textContent('#machine-axes-figures');
+  assert.match(figures, /^With these axes the face is predicted at [\d.e-]+ µm rms \(re-simulated\)\. The floor the position resolution sets \(each axis position quantised to its step\): 0\.0\d+ µm rms\.$/);
   await page.click('#copy-axes');
   const copied = await page.evaluate(() => navigator.clipboard.readText());
   assert.match(copied, /^X \(mm\) = /);

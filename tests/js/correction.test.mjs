@@ -38,6 +38,31 @@ const perAxis = (o, what) => {
   for (const k of AXES) assert.ok(Number.isFinite(o[k]), `${what}.${k} = ${o[k]}`);
 };
 
+test('the module describes the rounded axes\' figures and the floor, and rounds as the program carries', () => {
+  const fields = Object.fromEntries(hobsharp.resultFields().map((f) => [f.path, f]));
+  for (const path of ['correction.rmsRounded', 'correction.resolutionFloor']) {
+    assert.equal(fields[path].kind, 'number', path);
+    assert.equal(fields[path].unit, 'µm', path);
+    assert.equal(fields[path].when, 'only with `measured`', path);
+  }
+  assert.match(fields['correction.resolutionFloor'].meaning, /uniform in \+-step\/2/);
+  const digits = hobsharp.limits().correction.coefficientDigits;
+  assert.equal(digits, 10);
+  assert.match(fields['correction.roundedAxes'].meaning, new RegExp(`${digits} significant digits`));
+  // In the program's units (mm or deg per deg^k, helical gash) each coefficient has at most that
+  // many significant digits, and is the exact one's to half the last.
+  const k = hobsharp.evaluate(measuredCase()).correction;
+  const DEG = 180 / Math.PI;
+  for (const a of AXES) {
+    const unit = (k_) => (a === 'A' || a === 'B' ? DEG : 1) * DEG ** -k_;
+    k.roundedAxes[a].forEach((c, i) => {
+      const p = c * unit(i), exact = k.axes[a][i] * unit(i);
+      assert.ok(Math.abs(p - Number(p.toPrecision(digits))) <= 1e-14 * Math.abs(p), `${a} a${i} = ${p}`);
+      assert.ok(Math.abs(p - exact) <= 5e-10 * Math.abs(exact) * (1 + 1e-6), `${a} a${i}: ${p} from ${exact}`);
+    });
+  }
+});
+
 test('the default correction identifies the machine error and proposes nominal minus it', () => {
   const c = measuredCase();
   const r = hobsharp.evaluate(c);
@@ -69,6 +94,11 @@ test('the default correction identifies the machine error and proposes nominal m
   }
   assert.ok(Number.isFinite(k.sseRounded) && k.sseRounded < 2, `sseRounded ${k.sseRounded}`);
   assert.ok(Number.isFinite(k.maxRounded) && Number.isFinite(k.thicknessRounded));
+  // The rounded axes are the exact ones to the digits a program carries: noise-free, their face
+  // is the exact proposal's; the position resolution's effect is the floor, reported apart.
+  assert.ok(k.rmsRounded < 0.01, `rmsRounded ${k.rmsRounded} µm`);
+  assert.ok(Math.abs(k.rmsRounded - k.rmsAfter) < 0.01, `rmsRounded ${k.rmsRounded}, rmsAfter ${k.rmsAfter}`);
+  assert.ok(k.resolutionFloor > 0.01 && k.resolutionFloor < 0.1, `resolutionFloor ${k.resolutionFloor} µm`);
   // The fields the page read before stay.
   assert.ok(Array.isArray(k.singularValues) && k.singularValues.length === 20);
   assert.ok(Number.isInteger(k.rank) && Number.isInteger(k.amplifyingDropped) && Number.isInteger(k.withinNoise));

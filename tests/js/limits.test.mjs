@@ -110,6 +110,7 @@ test("limits().correction gives the correction's options, each checked against t
   assert.deepEqual(Object.keys(k.resolution), ['X', 'Y', 'Z', 'A', 'B']);
   assert.deepEqual(k.resolution.X, { default: 0.1, min: 0.001, max: 1000, unit: 'µm' });
   assert.deepEqual(k.resolution.B, { default: 0.0001, min: 1e-9, max: 1, unit: 'deg' });
+  assert.equal(k.coefficientDigits, 10);
   const measured = Array.from({ length: 5 }, () => Array(9).fill(1));
   // The defaults are what a case without them gets.
   const r = hobsharp.evaluate({ ...paper(), measured });

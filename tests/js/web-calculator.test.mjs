@@ -66,6 +66,10 @@ test('the worker keeps its module after a refusal and takes a fresh one after a 
   // The description of the result's fields (the figures' units), as the page asks for it.
   const fields = await w.ask({ id: 9, fields: true });
   assert.deepEqual(fields.result, hobsharp.resultFields());
+  const rf = await import('../../web/src/result-fields.js');
+  rf.setResultFields(fields.result);
+  assert.equal(rf.fieldUnit('correction.resolutionFloor'), 'µm');
+  assert.equal(rf.fieldUnit('correction.sseRounded'), 'µm²');
   const c = paper();
   c.setup.tilt = 'steep';
   const refusal = await w.ask({ id: 2, caseObject: c });

@@ -56,7 +56,7 @@ test('the calculator takes the options the page writes and refuses a bad one nam
   const a = hobsharp.evaluate({ ...paper, measured, correction: coarse });
   const b = hobsharp.evaluate({ ...paper, measured, correction: fine });
   assert.equal(a.correction.method, 'nonlinear');
-  assert.ok(a.correction.sseRounded !== b.correction.sseRounded, 'a coarser A resolution rounds the axes differently');
+  assert.ok(a.correction.resolutionFloor > b.correction.resolutionFloor, 'a coarser A resolution raises the floor');
   for (const [key, text, field] of [['probeNoise', '-1', 'correction.probeNoise'], ['resolution.Z', '0', 'correction.resolution.Z'],
     ['probeNoise', '1e', 'correction.probeNoise']]) {
     assert.throws(() => hobsharp.evaluate({ ...paper, measured, correction: withOption({}, key, text, 'nonlinear') }),

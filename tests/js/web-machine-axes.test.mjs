@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { setModuleLimits } from '../../web/src/limits.js';
-import { axisPositions, coefficientsText, machineCoefficients, machineUnit, positionsCsv } from '../../web/src/machine-axes.js';
+import { axisPositions, coefficientsText, machineCoefficients, machineUnit, positionsCsv, programmed, roundedFiguresText } from '../../web/src/machine-axes.js';
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
 const hobsharp = await loadHobSharp();
@@ -26,7 +26,31 @@ test('the converted polynomials give the same positions as the calculator\'s in 
   }
   assert.equal(machineUnit('B', 2, true), 'deg/deg^2');
   assert.equal(machineUnit('X', 1, false), 'mm/mm');
-  assert.match(coefficientsText(m, true), /^X \(mm\) = [-\d.e]+ [+-] [\d.e-]+ \* phi \(deg\) /);
+  assert.match(coefficientsText(m, true, 10), /^X \(mm\) = [-\d.e]+ [+-] [\d.e-]+ \* phi \(deg\) /);
+});
+
+// With a correction: the rounded axes as the program carries them, copied to the same digits, and
+// the face predicted with them beside the floor, in the units the module's fields give.
+test('the rounded axes: the program\'s digits, the predicted face and the floor with the schema\'s units', () => {
+  const actual = structuredClone(hobsharp.evaluate(paper).axes);
+  actual.Z[0] -= 0.01; actual.B[2] += 0.001;
+  const measured = hobsharp.evaluate({ ...paper, axes: actual }).topography.normal;
+  const c = hobsharp.evaluate({ ...paper, measured, correction: { probeNoise: 1e-4 } }).correction;
+  const digits = hobsharp.limits().correction.coefficientDigits;
+  const m = machineCoefficients(c.roundedAxes, true);
+  for (const a of ['X', 'Y', 'Z', 'A', 'B']) {
+    for (const v of m[a]) assert.ok(Math.abs(Number(programmed(v, digits)) - v) <= 1e-14 * Math.abs(v), `${a}: ${v}`);
+  }
+  assert.equal(programmed(1.23456789012345e-11, 10), '1.23456789e-11');
+  const copied = coefficientsText(m, true, digits);
+  const numbers = copied.match(/-?\d[\d.]*(e[-+]?\d+)?/g).filter((s) => s.includes('.') || s.includes('e'));
+  assert.ok(numbers.every((s) => s.replace(/^-/, '').replace(/e.*$/, '').replace('.', '').replace(/^0+/, '').length <= digits), copied);
+  const units = Object.fromEntries(hobsharp.resultFields().map((f) => [f.path, f.unit]));
+  const text = roundedFiguresText(c, (path) => units[path]);
+  assert.match(text, /^With these axes the face is predicted at [\d.e-]+ µm rms \(re-simulated\)\. /);
+  assert.ok(text.includes(`${Number(c.resolutionFloor.toPrecision(3))} µm rms.`), text);
+  assert.equal(roundedFiguresText({ sseAfter: 1 }, () => 'µm'), '');
+  assert.equal(roundedFiguresText(undefined, () => 'µm'), '');
 });
 
 test('the table of positions: every step from the start, both ends, the values of the polynomials', () => {

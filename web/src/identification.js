@@ -1,7 +1,7 @@
 // What the engineer reads of a correction's identification of the machine error (pure, with Node
 // tests): per axis the identified error with its standard uncertainty and the change proposed
 // (µm for X, Y, Z; µrad for A, B: the largest over the motion range), the precision demand, the
-// solver's status and iterations, and the axes rounded to the machine's resolution. Each part is
+// solver's status and iterations, and the axes as the NC program carries them. Each part is
 // there only when the result has its fields; a number that is not finite is null (a dash).
 const LINEAR = ['X', 'Y', 'Z'];
 export const axisUnit = (axis) => (LINEAR.includes(axis) ? 'µm' : 'µrad');

@@ -3,6 +3,7 @@
 // the travel in mm (straight gash), and a table of axis positions over the motion range.
 // The calculator's polynomials are of phi in rad with A and B in rad (docs/conventions.md).
 import { AXES, isRotary } from './limits.js';
+import { fmt } from './format.js';
 import { polynomialAt } from './polynomial.js';
 
 const DEG = 180 / Math.PI;
@@ -47,8 +48,25 @@ export function positionsCsv(rows, helical) {
   return '\uFEFF' + [head.join(','), ...rows.map((r) => r.join(','))].join('\n') + '\n';
 }
 
-// The coefficients as text for the clipboard: one line per axis.
-export function coefficientsText(m, helical) {
+// A coefficient as the NC program carries it: `digits` significant digits (limits().correction.
+// coefficientDigits, the digits correction.roundedAxes is rounded to), no more.
+export const programmed = (c, digits) => String(Number(c.toPrecision(digits)));
+
+// The coefficients as text for the clipboard: one line per axis, each to `digits` significant digits.
+export function coefficientsText(m, helical, digits) {
   const symbol = helical ? 'phi (deg)' : 's (mm)';
-  return AXES.map((a) => `${a} (${isRotary(a) ? 'deg' : 'mm'}) = ${m[a].map((c, k) => (k === 0 ? `${c}` : `${c >= 0 ? '+ ' : '- '}${Math.abs(c)} * ${symbol}${k > 1 ? `^${k}` : ''}`)).join(' ')}`).join('\n') + '\n';
+  const p = (c) => programmed(c, digits);
+  return AXES.map((a) => `${a} (${isRotary(a) ? 'deg' : 'mm'}) = ${m[a].map((c, k) => (k === 0 ? p(c) : `${c >= 0 ? '+ ' : '- '}${p(Math.abs(c))} * ${symbol}${k > 1 ? `^${k}` : ''}`)).join(' ')}`).join('\n') + '\n';
+}
+
+// The face predicted with the rounded axes and the pass's floor the position resolution sets, in
+// words with the units `unitOf(path)` gives (the module's resultFields()); '' without them.
+export function roundedFiguresText(c, unitOf) {
+  if (!c || !c.roundedAxes) return '';
+  const v = (path) => {
+    const x = c[path.slice('correction.'.length)];
+    return `${fmt(x, 3)}${Number.isFinite(x) ? ` ${unitOf(path)}` : ''}`;
+  };
+  return `With these axes the face is predicted at ${v('correction.rmsRounded')} rms (re-simulated). ` +
+    `The floor the position resolution sets (each axis position quantised to its step): ${v('correction.resolutionFloor')} rms.`;
 }

@@ -1,7 +1,7 @@
 // The correction's identification of the machine error, shown when the result has its fields
 // (web/src/identification.js): the solver's status and iterations; per axis the identified error
-// with its standard uncertainty and the proposed change; the precision demand; the axes rounded
-// to the machine's resolution with their re-simulated sum of squares beside the exact proposal's.
+// with its standard uncertainty and the proposed change; the precision demand; the axes as the NC
+// program carries them, with their re-simulated sum of squares beside the exact proposal's.
 import { AXES, AXIS_UNIT } from '../limits.js';
 import { escapeHtml, fixed, fmt, motionSymbol, polynomialText, signed } from '../format.js';
 import { errorRows, precisionTable, roundedFigures, statusText } from '../identification.js';
