@@ -1,7 +1,7 @@
 // Names, units and limits. Those the C++ core owns (the case format, the grid limit, the degree
 // range, the default grid, the axes with their kinds and units, the result fields' units) come
-// from the module's limits() and resultFields() once the calculator is ready: setModuleLimits and
-// setResultFields fill the bindings below, in place, before the page loads a case. Only the page's own words (the axes' descriptions) are written here.
+// from the module's limits() once the calculator is ready (the result's units: result-fields.js):
+// setModuleLimits fills the bindings below, in place, before the page loads a case. Only the page's own words (the axes' descriptions) are written here.
 
 export let CASE_FORMAT;                  // 'hobsharp-case/1'
 export const AXES = [];                  // 'X' .. 'B', in the module's order
@@ -15,8 +15,6 @@ export const CORRECTION = {};
 // The inspection's checks, classes and default tolerance table: {checks, classes, maxGashes,
 // maxGashDeviation, defaultTolerances} (README, "Rake-face inspection").
 export const INSPECTION = {};
-// The result's fields as the module describes them (resultFields()): path -> unit.
-export const RESULT_UNIT = {};
 let rotary = new Set();
 export const isRotary = (axis) => rotary.has(axis);
 
@@ -47,12 +45,6 @@ export function setModuleLimits(limits) {
   if (correction) Object.assign(CORRECTION, structuredClone(correction));
   for (const key of Object.keys(INSPECTION)) delete INSPECTION[key];
   if (inspection) Object.assign(INSPECTION, structuredClone(inspection));
-}
-
-// fields: what Module.resultFields() returns, [{path, unit, ...}].
-export function setResultFields(fields) {
-  for (const key of Object.keys(RESULT_UNIT)) delete RESULT_UNIT[key];
-  for (const f of fields || []) RESULT_UNIT[f.path] = f.unit;
 }
 
 const SUPERSCRIPT = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
