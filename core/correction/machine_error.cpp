@@ -233,6 +233,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     for (int j = 0; j < grid.cols(); ++j) m.explained(i, j) = kMicrometresPerMm * m.face.envelope[i * grid.cols() + j].t;
   m.unexplained = measured - m.explained;
   m.summary.finalCost = m.unexplained.squaredNorm();
+  m.jacobian = currentS;
   m.covariancePerNoise = Eigen::MatrixXd::Zero(q, q);
   if (P.cols() > 0) {
     // (J^T J)^-1 in the identified directions, which the decision kept well conditioned.
