@@ -16,13 +16,13 @@ function hobsharpWorkerMain(scope, factory, warmUpCase) {
   });
   let ready = start();
   scope.onmessage = async (event) => {
-    const { id, caseObject, limits, stall } = event.data;
+    const { id, caseObject, limits, fields, stall } = event.data;
     // The tests' stand-in for a calculation that never ends: the page's watchdog must end it.
     if (stall) for (;;) { /* spin */ }
     const started = performance.now();
     try {
       const module = await ready;
-      const result = limits ? module.limits() : module.evaluate(caseObject);
+      const result = limits ? module.limits() : fields ? module.resultFields() : module.evaluate(caseObject);
       scope.postMessage({ id, ok: true, result, ms: performance.now() - started });
     } catch (e) {
       // A refusal (a HobSharpError of code InvalidInput or Unsolvable) leaves the module as it

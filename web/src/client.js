@@ -36,7 +36,8 @@ export function workerError({ message, code, field }) {
   return failure(message, refusal ? { code, field: field || '' } : { code: 'Internal' });
 }
 
-// evaluate(case) resolves to {result, ms}; limits() to the module's limits(). Either rejects with
+// evaluate(case) resolves to {result, ms}; limits() to the module's limits(), fields() to its
+// resultFields(). Either rejects with
 // an Error whose .code is the module's ('InvalidInput' or 'Unsolvable', a refusal, with its
 // .field; 'Internal', a fault: the worker took a fresh module), or 'Timeout' when the watchdog
 // ended the worker.
@@ -89,6 +90,8 @@ export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = 
     watchdogMs,
     evaluate: (caseObject) => send({ caseObject }),
     limits: () => send({ limits: true }).then(({ result }) => result),
+    // The result's fields with their units and meanings (the module's resultFields()).
+    fields: () => send({ fields: true }).then(({ result }) => result),
     // For the tests: the worker stops answering (it spins) until the watchdog ends it.
     stall: () => send({ stall: true }),
   };

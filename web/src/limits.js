@@ -15,6 +15,16 @@ export const CORRECTION = {};
 // The inspection's checks, classes and default tolerance table: {checks, classes, maxGashes,
 // maxGashDeviation, defaultTolerances} (README, "Rake-face inspection").
 export const INSPECTION = {};
+// The result's fields, path -> {kind, unit, meaning, when}, as the module's resultFields() gives
+// them: the page takes a result's units from here, never from its own text.
+export const RESULT_FIELDS = {};
+export function setResultFields(fields) {
+  if (!Array.isArray(fields)) throw new Error('The calculator gave no result fields the page can use.');
+  for (const key of Object.keys(RESULT_FIELDS)) delete RESULT_FIELDS[key];
+  for (const f of fields) RESULT_FIELDS[f.path] = { kind: f.kind, unit: f.unit, meaning: f.meaning, when: f.when };
+}
+// The unit of a result field ('' when the field has none or is not known).
+export const fieldUnit = (path) => (RESULT_FIELDS[path] ? RESULT_FIELDS[path].unit : '');
 let rotary = new Set();
 export const isRotary = (axis) => rotary.has(axis);
 

@@ -35,7 +35,7 @@ import { mountAccess } from './views/access.js';
 import { mountCaseFiles } from './io/case-files.js';
 import { caseFromHash, mountLink } from './io/url.js';
 import { createLoader } from './load.js';
-import { setModuleLimits } from './limits.js';
+import { setModuleLimits, setResultFields } from './limits.js';
 
 const store = createStore();
 const calculator = createCalculator();
@@ -83,8 +83,9 @@ function openCase() {
   else loader.paper();
 }
 (function ready() {
-  calculator.limits().then((limits) => {
+  Promise.all([calculator.limits(), calculator.fields()]).then(([limits, fields]) => {
     setModuleLimits(limits);
+    setResultFields(fields);
     store.emit('limits');
     openCase();
   }).catch((e) => {
