@@ -23,9 +23,6 @@ constexpr double kLeak = 1e-6;
 // The other axes of a combination mimic the first's face without their weakest directions, below
 // this share of their largest singular value: no wild amounts for a last bit of likeness.
 constexpr double kAlikeCutoff = 1e-6;
-// A group is read as another member than its sharpest only when that one alone leaves a misfit
-// smaller by more than this many sigma² (3 sigma on one degree of freedom).
-constexpr double kSwitchMisfit = 9;
 // Alike to this share is the same face.
 constexpr double kSameFace = 0.999;
 
@@ -300,26 +297,21 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
   for (int i = 0; i < kAxisCount; ++i)
     if (out.axes[static_cast<size_t>(i)].reading == AxisReading::Alone)
       aloneColumns.insert(aloneColumns.end(), block[i].begin(), block[i].end());
-  // A group is read as the member the face reads most sharply (the smallest uncertainty read alone,
-  // in machine steps), unless another one alone grinds the face shown better by more than the noise
-  // can: so the noise of one measurement does not switch the axis a group is read as.
+  // A group is read as the member that alone grinds the face shown best (the least misfit, the
+  // axes read alone fitted with it). The members grind alike, so the noise may choose between them:
+  // the sentence names every member that alone grinds it as well to within the noise, each with the
+  // value it would take (a linear fit each, so each value's spread is the noise's).
   std::vector<int> representative;
   for (const std::vector<int>& g : groups) {
-    int sharpest = g[0], best = g[0];
-    double sharpness = 0, bestMisfit = 0;
-    std::vector<double> misfit;
+    int best = g[0];
+    double bestMisfit = 0;
     for (int m : g) {
-      std::vector<int> columns = aloneColumns;
-      columns.insert(columns.end(), block[m].begin(), block[m].end());
-      const Fit f = fitColumns(A, y, columns, s0);
-      const Axis ma = kAxes[static_cast<size_t>(m)];
-      const double steps = curveOf(f, ma, cs, step, min, max).perNoise / (o.resolution.inAxisUnit(ma) * displayFactor(ma));
-      if (m == g[0] || steps < sharpness) sharpest = m, sharpness = steps;
-      if (m == g[0] || f.misfit < bestMisfit) best = m, bestMisfit = f.misfit;
-      misfit.push_back(f.misfit);
+      std::vector<int> members = aloneColumns;
+      members.insert(members.end(), block[m].begin(), block[m].end());
+      const double misfit = fitColumns(A, y, members, s0).misfit;
+      if (m == g[0] || misfit < bestMisfit) best = m, bestMisfit = misfit;
     }
-    const double sharpestMisfit = misfit[static_cast<size_t>(std::find(g.begin(), g.end(), sharpest) - g.begin())];
-    representative.push_back(sharpestMisfit - bestMisfit > kSwitchMisfit * sigma * sigma ? best : sharpest);
+    representative.push_back(best);
   }
   std::vector<int> columns = aloneColumns;
   for (int r : representative) columns.insert(columns.end(), block[r].begin(), block[r].end());
@@ -344,9 +336,27 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
     const CurveFigures c = curveOf(joint, ra, cs, step, min, max);
     combination.value = c.value;
     combination.perNoise = c.perNoise;
-    // The face of +1 µm or µrad on the first axis, and the others' curves that grind it best.
+    // Each member alone: the fit with the axes read alone, the other groups as they are read and
+    // that member.
+    std::vector<double> misfit;
+    for (Axis member : combination.axes) {
+      const int m = static_cast<int>(member);
+      std::vector<int> members = aloneColumns;
+      for (size_t h = 0; h < representative.size(); ++h)
+        if (h != gi) members.insert(members.end(), block[representative[h]].begin(), block[representative[h]].end());
+      members.insert(members.end(), block[m].begin(), block[m].end());
+      const Fit f = fitColumns(A, y, members, s0);
+      const CurveFigures mc = curveOf(f, member, cs, step, min, max);
+      combination.aloneValue.push_back(mc.value);
+      combination.alonePerNoise.push_back(mc.perNoise);
+      misfit.push_back(f.misfit);
+    }
+    const double leastMisfit = *std::min_element(misfit.begin(), misfit.end());
+    for (double m : misfit)
+      combination.aloneListed.push_back(m - leastMisfit <= o.significance * o.significance * sigma * sigma);
     const auto a0 = std::find_if(block[r].begin(), block[r].end(),
                                  [&](int j) { return cs[static_cast<size_t>(j)].degree == 0; });
+    // The face of +1 µm or µrad on the first axis, and the others' curves that grind it best.
     if (!others.empty() && a0 != block[r].end()) {
       const Eigen::VectorXd face = A.col(*a0) / (step(*a0) * displayFactor(ra));
       std::vector<int> otherColumns;
@@ -372,13 +382,20 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
         if (combination.alike >= kSameFace)
           t << " grinds the same face as " << listText(parts);
         else
-          t << " grinds nearly the face of " << listText(parts) << " (alike to " << numberText(100 * combination.alike, 2)
+          t << " grinds nearly the face of " << listText(parts) << " (alike to " << static_cast<int>(std::floor(100 * combination.alike))
             << " %)";
         t << ", so the face does not tell them apart";
       } else {
         t << "the face does not tell their errors apart";
       }
-      t << ". It shows their combination: " << equivalent << ".";
+      t << ". It shows their combination: " << equivalent;
+      std::vector<std::string> alike;
+      for (size_t k = 1; k < combination.axes.size(); ++k)
+        if (combination.aloneListed[k])
+          alike.push_back(std::string(axisName(combination.axes[k])) + " alone with " +
+                          valueText(combination.aloneValue[k], combination.alonePerNoise[k] * sigma, combination.axes[k]));
+      if (!alike.empty()) t << "; " << listText(alike) << " would grind it as well, to within the probe noise";
+      t << ".";
     } else if (out.axes[static_cast<size_t>(r)].correlation >= o.reading.maxCorrelation) {
       t << axisName(ra) << ": the face does not tell its error from a mix of the other axes' errors. It shows "
         << equivalent << ".";

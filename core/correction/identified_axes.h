@@ -12,8 +12,10 @@
 //     it in a combination the face cannot see) and sharply (its standard uncertainty at most
 //     maxUncertaintySteps machine steps): its error is read on its own, with its uncertainty;
 //   - together: otherwise. The axes read together are grouped by their correlation (and the
-//     combinations the face cannot see), and each group is read as the one axis that alone grinds
-//     the face shown best ("Y-equivalent"), with the proportion in which the others grind alike.
+//     combinations the face cannot see), and each group is read as the member that alone grinds the
+//     face shown best ("Y-equivalent": the error of that axis alone that grinds what the face shows
+//     of the group), with the proportion in which the others grind alike, and the value each other
+//     member would take alone where it grinds the face as well to within the noise.
 // The values read (alone, and each group's equivalent) come from one linear least-squares fit of
 // those axes' curves to what the machine error makes, linearised at the identified error, with the
 // other axes held at zero: a fit with no decision in it, so its covariance is the spread the probe
@@ -56,6 +58,13 @@ struct AxisCombination {
   // The first axis's error that alone grinds what the face shows of the group, its mean over the
   // range, and that value's standard uncertainty per µm of noise.
   double value = 0, perNoise = 0;
+  // Per member, in the order of `axes`: the error of that axis alone that grinds what the face
+  // shows of the group (its mean over the range) with its standard uncertainty per µm of noise, and
+  // whether it grinds it as well as the first to within the noise (its misfit at most
+  // significance² sigma² above): the sentence names those, what the face shows were the error on
+  // that axis.
+  std::vector<double> aloneValue, alonePerNoise;
+  std::vector<bool> aloneListed;
   std::string sentence;
 };
 
