@@ -5,6 +5,7 @@
 #include <numeric>
 #include <sstream>
 
+#include <Eigen/QR>
 #include <Eigen/SVD>
 
 #include "machine_resolution.h"
@@ -182,6 +183,18 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
       A -= u * (u.transpose() * A);
       y -= u * u.dot(y);
     }
+  }
+  // Every fit below is a least-squares fit of some of A's columns to y or to another column: the
+  // same on the triangular factor of [A y] (Q^T [A y] = R), which has q + 1 rows, not a row per
+  // probe point (a 150 x 150 grid has 22,500).
+  {
+    Eigen::MatrixXd Ay(A.rows(), q + 1);
+    Ay << A, y;
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Ay);
+    const int rows = static_cast<int>(std::min<Eigen::Index>(Ay.rows(), q + 1));
+    const Eigen::MatrixXd R = qr.matrixQR().topRows(rows).triangularView<Eigen::Upper>();
+    A = R.leftCols(q);
+    y = R.col(q);
   }
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
   const Eigen::VectorXd& s = svd.singularValues();
