@@ -14,6 +14,7 @@
 #include "axis_polynomials.h"
 #include "correction_options.h"
 #include "ground_face.h"
+#include "identified_axes.h"
 #include "outcome.h"
 #include "sensitivity_matrix.h"
 #include "sharpening_setup.h"
@@ -51,11 +52,17 @@ struct Correction {
   // or µrad (A, B).
   std::array<double, kAxisCount> identifiedErrorSize{};
   std::array<double, kAxisCount> axisChangeSize{};      // axes - run axes
-  std::array<double, kAxisCount> uncertainty{};         // standard uncertainty of the change, from sigma
+  // The standard uncertainty of the identified error and of the change, per axis, from sigma:
+  // changePerNoise times sigma, exactly (docs/conventions.md §What the engineer reads about the machine).
+  std::array<double, kAxisCount> uncertainty{};
   // The precision demand: µm of face per µm or µrad of a constant axis error (largest over the
-  // grid), and µm or µrad of axis change per µm of probe noise.
+  // grid), and µm or µrad of axis change per µm of probe noise: the standard deviation of the
+  // axis's curve over every direction the face shows (not only those the correction takes), largest
+  // over the motion range.
   std::array<double, kAxisCount> facePerAxisError{};
   std::array<double, kAxisCount> changePerNoise{};
+  // What the face identifies of each axis, and the combinations it shows, in words (identified_axes.h).
+  IdentifiedAxes identified;
   std::vector<bool> directionsUsed;      // per singular value: identified (true) or left out
   int withinNoise = 0;                   // directions left out: within the probe noise (nonlinear)
   // The correction found would leave a worse face than the one measured (re-simulated): the run

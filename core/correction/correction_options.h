@@ -16,6 +16,27 @@ enum class CorrectionMethod {
   Linear,     // the paper's single step of Eq. 17 by truncated SVD
 };
 
+// How the identified machine error is put to the engineer per axis (identified_axes.h): which
+// axes the face tells apart, and in what proportion it mixes the others. Each threshold tests one
+// thing; all are judged over every direction the face shows (not only those the correction takes).
+struct AxisReadingOptions {
+  // Tests whether the face tells an axis from a mix of the others: its error is read on its own only
+  // while the multiple correlation of its curve with the other axes' curves stays below this over
+  // the whole motion range (0.9: knowing the others exactly would narrow it by less than 2.3 times).
+  double maxCorrelation = 0.9;
+  // Tests whether the figure is sharp enough to tell which axis is off: an axis is read on its own
+  // only when its standard uncertainty at the probe noise is at most this many machine steps
+  // (correction.resolution: 0.1 µm on X, Y, Z and 0.0001 deg on A, B by default) anywhere on the range.
+  double maxUncertaintySteps = 50;
+  // Tests which axes the face confuses with which: two axes not read on their own are one
+  // combination when their curves' correlation reaches this somewhere on the range (or when a
+  // combination of theirs has no effect on the face at all).
+  double partnerCorrelation = 0.5;
+  // Tests that "alike" is true before a proportion is given: the other axes of a combination must
+  // reproduce at least this share of the face of +1 µm (or µrad) on the axis it is read as.
+  double alikeShare = 0.7;
+};
+
 struct CorrectionOptions {
   CorrectionMethod method = CorrectionMethod::Nonlinear;
   // The probe's standard deviation sigma, µm. A direction of the face the axes can make is
@@ -51,6 +72,7 @@ struct CorrectionOptions {
   // Coefficients left as they are. A locked axis is all of its coefficients.
   std::vector<Coefficient> locked;
   std::vector<Axis> lockedAxes;
+  AxisReadingOptions reading;
   // Solve for the axes and a wheel-profile offset together (`correction.wheel`, wheel_correction.h).
   bool wheel = false;
 };

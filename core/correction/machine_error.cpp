@@ -254,6 +254,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     for (int j = 0; j < grid.cols(); ++j) m.explained(i, j) = kMicrometresPerMm * m.face.envelope[i * grid.cols() + j].t;
   m.unexplained = measured - m.explained;
   m.summary.finalCost = m.unexplained.squaredNorm();
+  m.jacobian = currentS;
   judgeMisfit(m.summary, m.summary.finalCost, static_cast<int>(d.size()), o.probeNoise);
   m.covariancePerNoise = Eigen::MatrixXd::Zero(q, q);
   if (P.cols() > 0) {

@@ -27,6 +27,10 @@ struct MachineErrorEstimate {
   // Covariance of coefficientError per unit probe variance (sigma = 1 µm): (J^T J)^-1 mapped to
   // the coefficients, at the solution. Times sigma² it is the covariance.
   Eigen::MatrixXd covariancePerNoise;
+  // The face's normal sensitivities at the solution over space.coefficients (µm per unit), p x q,
+  // and the columns of what was identified alongside (the wheel's directions taken), p x k: what
+  // the face tells of each axis is judged from them (identified_axes.h).
+  Eigen::MatrixXd jacobian, nuisance;
   GroundFace face;            // face(run + E), with its sensitivities
   Eigen::MatrixXd explained;  // its normal deviation, µm
   Eigen::MatrixXd unexplained;  // measured - explained: noise and what no axis makes, µm

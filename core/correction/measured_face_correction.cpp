@@ -1,4 +1,5 @@
 // correctMeasuredFace (correction.h): either method, then the figures the engineer reads.
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -8,7 +9,9 @@
 #include "correction.h"
 #include "face_prediction.h"
 #include "face_vectors.h"
+#include "identified_axes.h"
 #include "machine_error.h"
+#include "structural_null_space.h"
 #include "number_text.h"
 #include "units.h"
 
@@ -43,38 +46,6 @@ Outcome<Topography> predictedFace(const SharpeningSetup& setup, const GroundFace
   auto f = simulateGroundFaceLike(runFace, setup, actual, Sensitivities::Skip);
   if (!f) return f.error();
   return topographyFromNormal(runFace, normalOf(*f) + unexplained);
-}
-
-// Largest over the motion range of the standard deviation of each axis's curve, for a
-// covariance of the coefficients `cs` (coefficient units²), in µm or µrad.
-std::array<double, kAxisCount> curveDeviation(const std::vector<Coefficient>& cs, const Eigen::MatrixXd& cov,
-                                              const MotionRange& range) {
-  std::array<double, kAxisCount> out{};
-  constexpr int kSamples = 101;
-  const int q = static_cast<int>(cs.size());
-  if (q == 0) return out;
-  // Each axis's block of the covariance, and the curve's basis phi^k at each sample.
-  for (Axis a : kAxes) {
-    std::vector<int> index;
-    for (int j = 0; j < q; ++j)
-      if (cs[j].axis == a) index.push_back(j);
-    if (index.empty()) continue;
-    const int n = static_cast<int>(index.size());
-    Eigen::MatrixXd block(n, n);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) block(i, j) = cov(index[i], index[j]);
-    Eigen::VectorXd g(n);
-    for (int s = 0; s < kSamples; ++s) {
-      const double w = range.min + (range.max - range.min) * s / (kSamples - 1);
-      for (int i = 0; i < n; ++i) {
-        g(i) = 1;
-        for (int k = 0; k < cs[index[i]].degree; ++k) g(i) *= w;
-      }
-      const double sd = std::sqrt(std::max(0.0, g.dot(block * g))) * displayFactor(a);
-      out[static_cast<int>(a)] = std::max(out[static_cast<int>(a)], sd);
-    }
-  }
-  return out;
 }
 
 // A sum of squares for a sentence: 3 digits, or "below 1e-6" where only rounding is left (which
@@ -125,7 +96,12 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   const AxisPolynomials& at = linearisedAt ? *linearisedAt : run;
   c.linearisedAtNominal = linearisedAt != nullptr;
   Eigen::MatrixXd unexplained;
-  Eigen::MatrixXd coefficientCov;  // of the change of c.coefficients per unit noise variance
+  const MotionRange range = motionRange(runFace);
+  const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
+  // What the face tells of the axes (identified_axes.h): the sensitivities at the identified error,
+  // the free coefficients' machine steps, what was identified alongside, and the identified error.
+  Eigen::MatrixXd sensitivities, alongside, basis;
+  Eigen::VectorXd steps, errorCoefficients;
   if (o.method == CorrectionMethod::Linear && linearisedAt)
     return refuse("axes", "the face these axes grind without the machine's error cannot be simulated, and the linear "
                           "step needs it: use correction.method \"nonlinear\".", ErrorCode::Unsolvable);
@@ -145,7 +121,13 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     auto explained = simulateGroundFaceLike(runFace, setup, plusError(run, c.identifiedError), Sensitivities::Skip);
     if (!explained) return explained.error();
     unexplained = measured - normalOf(*explained);
-    coefficientCov = c.changeCovariancePerNoise;
+    sensitivities = sensitivityMatrix(runFace, c.coefficients).normal;
+    steps.resize(static_cast<int>(c.coefficients.size()));
+    for (size_t j = 0; j < c.coefficients.size(); ++j)
+      steps(static_cast<int>(j)) = coefficientStep(o.resolution, c.coefficients[j], reach);
+    errorCoefficients = -c.change;
+    const IdentifiableSpace space = identifiableSpace(setup.face, run.degree(), o, reach);
+    if (space.coefficients == c.coefficients) basis = space.basis;
   } else {
     auto m = identified ? Outcome<MachineErrorEstimate>(*identified)
                         : identifyMachineError(setup, at, runFace, measured, o);
@@ -176,7 +158,11 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     for (size_t j = 0; j < c.coefficients.size(); ++j)
       c.change(static_cast<int>(j)) = c.axes[c.coefficients[j].axis].a[c.coefficients[j].degree] -
                                       run[c.coefficients[j].axis].a[c.coefficients[j].degree];
-    coefficientCov = est.covariancePerNoise;
+    sensitivities = est.jacobian;
+    alongside = est.nuisance;
+    steps = est.space.step;
+    basis = est.space.basis;
+    errorCoefficients = est.coefficientError;
   }
   const SharpeningSetup& grinding = dressed ? *dressed : setup;  // the wheel the predicted faces are ground with
   auto after = predictedFace(grinding, runFace, c.axes, c.identifiedError, unexplained, at, !dressed);
@@ -192,7 +178,6 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.change.setZero();
     c.after = c.before;
   }
-  const MotionRange range = motionRange(runFace);
   c.roundedAxes = roundAsProgrammed(c.axes, o.resolution, setup.face.helical());
   const bool dressing = dressed && !c.runKept;  // a run kept keeps its wheel as well as its axes
   auto rounded = predictedFace(dressing ? *dressed : setup, runFace, c.roundedAxes, c.identifiedError, unexplained, at,
@@ -214,10 +199,17 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.facePerAxisError[i] = S.normal.col(i).cwiseAbs().maxCoeff() / displayFactor(a);
   }
   c.resolutionFloor = resolutionFloor(S.normal, o.resolution);
-  const std::array<double, kAxisCount> perNoise = curveDeviation(c.coefficients, coefficientCov, range);
+  // The data the identified error explains, linearised at it: the misfit left plus what it makes.
+  const Eigen::VectorXd linearised =
+      sensitivities.cols() == errorCoefficients.size() && sensitivities.rows() == unexplained.size()
+          ? Eigen::VectorXd(flat(unexplained) + sensitivities * errorCoefficients)
+          : Eigen::VectorXd();
+  c.identified = identifiedAxes(c.coefficients, steps, sensitivities, alongside, linearised, range.min, range.max,
+                                o.probeNoise, o, basis);
+  // One quantity: the uncertainty is the change per µm of noise times sigma.
   for (int i = 0; i < kAxisCount; ++i) {
-    c.changePerNoise[i] = perNoise[i];
-    c.uncertainty[i] = perNoise[i] * o.probeNoise;
+    c.changePerNoise[i] = c.identified.spreadPerNoise[i];
+    c.uncertainty[i] = c.changePerNoise[i] * o.probeNoise;
   }
   {
     const FacePrediction p =

@@ -312,12 +312,14 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
   judgeMisfit(a.summary, a.summary.finalCost, static_cast<int>(d.size()), o.probeNoise);
 
   // E's covariance with W free: (J^T J)^-1 of the decided directions, its axes' block.
-  const Eigen::MatrixXd JE = sensitivityMatrix(current, cs).normal * PE;
+  a.jacobian = sensitivityMatrix(current, cs).normal;
+  a.nuisance = wheelOffsetSensitivity(current, wheelBasis).normal * PW;
+  const Eigen::MatrixXd JE = a.jacobian * PE;
   a.covariancePerNoise = Eigen::MatrixXd::Zero(q, q);
   if (kE + kW > 0) {
     Eigen::MatrixXd J(d.size(), kE + kW);
     J.leftCols(kE) = JE;
-    J.rightCols(kW) = wheelOffsetSensitivity(current, wheelBasis).normal * PW;
+    J.rightCols(kW) = a.nuisance;
     const Eigen::MatrixXd JtJ = J.transpose() * J;
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(JtJ);
     const Eigen::MatrixXd cov = ldlt.solve(Eigen::MatrixXd::Identity(JtJ.rows(), JtJ.cols()));

@@ -539,16 +539,43 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
         v.number({names[i], isRotary(a) ? rotary : linear, what, kWithMeasured}, values[i]);
       }
     };
-    perAxis(kIdentified, "µm", "µrad", "the identified machine error of the axis (actual minus commanded): largest over the motion range, signed",
+    perAxis(kIdentified, "µm", "µrad", "the identified machine error of the axis (actual minus commanded): largest over the motion range, signed; where correction.identifiedAxes is not \"alone\" a share of a combination the face does not split, not a finding about the axis",
             c.identifiedErrorSize);
     perAxis(kChange, "µm", "µrad", "the change proposed for the axis, correction.axes minus the axes run: largest over the motion range, signed",
             c.axisChangeSize);
-    perAxis(kUncertainty, "µm", "µrad", "standard uncertainty of that change from the probe noise, largest over the motion range",
+    perAxis(kUncertainty, "µm", "µrad", "standard uncertainty of the identified error and the change from the probe noise, over every direction the face shows, largest over the motion range: correction.precision.changePerNoise times correction.probeNoise",
             c.uncertainty);
     perAxis(kFacePerError, "µm per µm", "µm per µrad", "precision demand: face deviation per unit of a constant error of the axis, largest over the grid",
             c.facePerAxisError);
-    perAxis(kChangePerNoise, "µm per µm", "µrad per µm", "precision demand: standard uncertainty of the axis change per µm of probe noise",
+    perAxis(kChangePerNoise, "µm per µm", "µrad per µm", "precision demand: standard uncertainty of the axis change per µm of probe noise, over every direction the face shows",
             c.changePerNoise);
+    // What the face identifies of each axis (identified_axes.h): alone, together or unseen; the
+    // value read alone; the combinations in words.
+    static const char* const kReading[] = {"correction.identifiedAxes.X", "correction.identifiedAxes.Y",
+                                           "correction.identifiedAxes.Z", "correction.identifiedAxes.A",
+                                           "correction.identifiedAxes.B"};
+    static const char* const kAlone[] = {"correction.identifiedAlone.X", "correction.identifiedAlone.Y",
+                                         "correction.identifiedAlone.Z", "correction.identifiedAlone.A",
+                                         "correction.identifiedAlone.B"};
+    static const char* const kAloneUncertainty[] = {
+        "correction.identifiedAloneUncertainty.X", "correction.identifiedAloneUncertainty.Y",
+        "correction.identifiedAloneUncertainty.Z", "correction.identifiedAloneUncertainty.A",
+        "correction.identifiedAloneUncertainty.B"};
+    std::array<double, kAxisCount> alone{}, aloneUncertainty{};
+    for (Axis a : kAxes) {
+      const int i = static_cast<int>(a);
+      const AxisIdentification& x = c.identified.axes[i];
+      v.text({kReading[i], "", "what the face tells of the axis's error: \"alone\" (told from the other axes', read in correction.identifiedAlone), \"together\" (not told from some other axes': see correction.identifiedCombinations), \"unseen\" (the face does not show it) or \"locked\"", kWithMeasured},
+             readingName(x.reading));
+      alone[i] = x.value;
+      aloneUncertainty[i] = x.perNoise * probeNoise;
+    }
+    perAxis(kAlone, "µm", "µrad", "the axis's error read on its own, its mean over the motion range; 0 unless correction.identifiedAxes gives \"alone\"",
+            alone);
+    perAxis(kAloneUncertainty, "µm", "µrad", "standard uncertainty of correction.identifiedAlone from the probe noise; 0 unless \"alone\"",
+            aloneUncertainty);
+    v.texts({"correction.identifiedCombinations", "", "sentences: the axes the face does not tell apart, in what proportion they grind alike and what it shows of them (µm, µrad), then the axes it does not show", kWithMeasured},
+            c.identified.sentences);
     // With measuredPoints off the grid the grid views are the re-simulated faces (README, "Measured points").
     const Topography& gridAfter = c.atProbes() ? c.afterOnGrid : c.after;
     const Topography& gridMeasured = c.atProbes() ? c.explainedOnGrid : c.before;

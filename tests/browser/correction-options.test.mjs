@@ -38,15 +38,24 @@ test('the options are inputs with the defaults shown; a simulated grid is declar
   assert.equal(await page.inputValue('#probe-noise'), '');
   assert.match(await page.textContent('#probe-noise-note'), /standard deviation/);
 
-  // The standard uncertainty is sigma times the axis change per µm of noise (the precision
-  // demand's last column): at the default 0.5 µm, then at 2 µm as typed.
-  for (const sigma of [0.5, 2]) {
-    if (sigma !== 0.5) await setOption(page, '#probe-noise', String(sigma));
-    for (const axis of ['Y', 'B']) {
-      const perNoise = Number((await page.textContent(`#precision-demand tr[data-axis="${axis}"] td:last-child`)).split(' ')[0]);
-      const u = await uncertainty(page, axis);
-      assert.ok(Math.abs(u - sigma * perNoise) <= 2e-3 * u + 1e-9, `${axis}: ± ${u} against ${sigma} × ${perNoise}`);
-    }
+  // The axis change per µm of noise (the precision demand's last column) is one quantity over every
+  // direction the face shows, whatever sigma decides (issue 20, item 5): about the same at the
+  // default 0.5 µm and at 2 µm as typed (within 10 %: it is taken at the identified error, which
+  // sigma moves, and the directions the face nearly does not show make it large and touchy); a value
+  // read on its own has an uncertainty 4 times as large at 2 µm.
+  const perNoise = (axis) => page.textContent(`#precision-demand tr[data-axis="${axis}"] td:last-child`).then((t) => Number(t.split(' ')[0]));
+  const demandBefore = { Y: await perNoise('Y'), B: await perNoise('B') };
+  const alone = await page.$$eval('#identified-error tr[data-reading="alone"]', (rows) => rows.map((r) => r.dataset.axis));
+  const aloneBefore = await Promise.all(alone.map((a) => uncertainty(page, a)));
+  await setOption(page, '#probe-noise', '2');
+  for (const axis of ['Y', 'B']) {
+    const after = await perNoise(axis);
+    assert.ok(Math.abs(after - demandBefore[axis]) <= 0.1 * demandBefore[axis], `${axis}: ${after} per µm against ${demandBefore[axis]} at 0.5 µm`);
+  }
+  for (const [i, axis] of alone.entries()) {
+    if (await page.getAttribute(`#identified-error tr[data-axis="${axis}"]`, 'data-reading') !== 'alone') continue;
+    const u = await uncertainty(page, axis);
+    assert.ok(Math.abs(u - 4 * aloneBefore[i]) <= 2e-2 * u, `${axis}: ± ${u} against 4 × ${aloneBefore[i]}`);
   }
   // A coarser A resolution raises the floor it sets (the rounded axes are the program's digits).
   const floor = async () => Number((await page.textContent('#machine-axes-figures')).match(/([\d.e-]+) µm rms\.$/)[1]);

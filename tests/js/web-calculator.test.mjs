@@ -144,3 +144,13 @@ test('a loaded case loses its measured grid only when the module refuses the gri
     assert.equal(outcome, expected, error.message);
   }
 });
+
+test('the page takes a result\'s units from the module\'s field list, and nothing from its own text', () => {
+  assert.equal(limits.fieldUnit('correction.identifiedAlone.A'), '', 'no units until the module gives its fields');
+  limits.setResultFields(hobsharp.resultFields());
+  assert.equal(limits.fieldUnit('correction.identifiedAlone.A'), 'µrad');
+  assert.equal(limits.fieldUnit('correction.identifiedAlone.Y'), 'µm');
+  assert.equal(limits.fieldUnit('correction.precision.changePerNoise.B'), 'µrad per µm');
+  assert.equal(limits.RESULT_FIELDS['correction.identifiedCombinations'].kind, 'strings');
+  assert.throws(() => limits.setResultFields(undefined), /no result fields/);
+});

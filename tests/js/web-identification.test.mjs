@@ -1,37 +1,62 @@
 // What the engineer reads of the machine error's identification (web/src/identification.js).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { axisUnit, errorRows, precisionTable, roundedFigures, statusText } from '../../web/src/identification.js';
+import { combinationSentences, errorRows, precisionTable, roundedFigures, statusText } from '../../web/src/identification.js';
 
 const AXES = ['X', 'Y', 'Z', 'A', 'B'];
+// The units as the module's resultFields() gives them (a stand-in: the page reads its own list).
+const UNITS = {
+  'correction.identifiedAlone': { X: 'µm', Y: 'µm', Z: 'µm', A: 'µrad', B: 'µrad' },
+  'correction.axisChange': { X: 'µm', Y: 'µm', Z: 'µm', A: 'µrad', B: 'µrad' },
+  'correction.precision.facePerError': { X: 'µm per µm', A: 'µm per µrad' },
+  'correction.precision.changePerNoise': { X: 'µm per µm', A: 'µrad per µm' },
+};
+const unitOf = (path) => {
+  const dot = path.lastIndexOf('.');
+  return (UNITS[path.slice(0, dot)] || {})[path.slice(dot + 1)] || '';
+};
 
-test('per axis: identified error, its uncertainty and the change, µm for X, Y, Z and µrad for A, B', () => {
+test('per axis: the error read on its own only where the face tells it apart, units from the field list', () => {
   const c = {
-    identifiedError: { X: 1.5, Y: -2, Z: 0, A: 12, B: NaN },
-    uncertainty: { X: 0.1, Y: 0.2, Z: 0.3, A: 4 },
-    axisChange: { X: -1.5, Y: 2, Z: 0, A: -12, B: 0 },
+    identifiedAxes: { X: 'together', Y: 'together', Z: 'alone', A: 'unseen', B: 'alone' },
+    identifiedAlone: { X: 0, Y: 0, Z: -3.01, A: 0, B: NaN },
+    identifiedAloneUncertainty: { X: 0, Y: 0, Z: 0.06, A: 0, B: 4 },
+    identifiedError: { X: 1.5, Y: -2, Z: -3.2, A: 12, B: 3 },
+    axisChange: { X: -1.5, Y: 2, Z: 3.2, A: -12, B: -3 },
   };
-  const rows = errorRows(c, AXES);
-  assert.deepEqual(rows.map((r) => r.unit), ['µm', 'µm', 'µm', 'µrad', 'µrad']);
-  assert.deepEqual(rows[0], { axis: 'X', unit: 'µm', error: 1.5, uncertainty: 0.1, change: -1.5 });
+  const rows = errorRows(c, AXES, unitOf);
+  assert.deepEqual(rows[2], { axis: 'Z', reading: 'alone', error: -3.01, errorUnit: 'µm', uncertainty: 0.06, change: 3.2, changeUnit: 'µm' });
+  assert.equal(rows[0].error, null, 'X is not read on its own: its share of a combination is not shown as its error');
+  assert.equal(rows[0].uncertainty, null);
+  assert.equal(rows[0].change, -1.5, 'the change proposed is shown for every axis');
+  assert.equal(rows[3].reading, 'unseen');
   assert.equal(rows[4].error, null, 'NaN never reaches the table');
-  assert.equal(rows[4].uncertainty, null);
-  assert.deepEqual(errorRows({ sseAfter: 1 }, AXES), [], 'no rows without the fields');
-  assert.equal(axisUnit('B'), 'µrad');
+  assert.equal(rows[4].errorUnit, 'µrad');
+  assert.deepEqual(errorRows({ sseAfter: 1 }, AXES, unitOf), [], 'no rows without the fields');
+  assert.deepEqual(errorRows({ identifiedError: { X: 1 }, axisChange: { X: 1 } }, ['X'], unitOf)[0].error, null,
+    'a result without identifiedAxes reads no axis on its own');
 });
 
-test('the precision demand, given per axis or per quantity, with words and units', () => {
-  const perAxis = Object.fromEntries(AXES.map((a, i) => [a, { facePerError: i + 1, changePerNoise: 10 * (i + 1) }]));
-  const t = precisionTable(perAxis, AXES);
-  assert.deepEqual(t.columns.map((q) => q.label), ['face per unit of axis error, largest over the grid', 'axis change per µm of probe noise']);
-  assert.deepEqual(t.columns.map((q) => q.unit('X')), ['µm/µm', 'µm/µm']);
-  assert.deepEqual(t.columns.map((q) => q.unit('A')), ['µm/µrad', 'µrad/µm']);
+test('the combinations in words: the sentences as given, nothing else', () => {
+  const c = { identifiedCombinations: ['Y, Z and B together: +1 µm on Y grinds nearly the face of ...', '', 3] };
+  assert.deepEqual(combinationSentences(c), ['Y, Z and B together: +1 µm on Y grinds nearly the face of ...']);
+  assert.deepEqual(combinationSentences({}), []);
+});
+
+test('the precision demand: the two known quantities per axis, with words and the fields\' units', () => {
+  const precision = {
+    facePerError: Object.fromEntries(AXES.map((a, i) => [a, i + 1])),
+    changePerNoise: { X: 10, Y: 20, Z: 30, A: 40, B: Infinity },
+  };
+  const t = precisionTable(precision, AXES, unitOf);
+  assert.deepEqual(t.columns.map((q) => q.key), ['facePerError', 'changePerNoise']);
+  assert.deepEqual(t.columns.map((q) => q.unit('X')), ['µm per µm', 'µm per µm']);
+  assert.deepEqual(t.columns.map((q) => q.unit('A')), ['µm per µrad', 'µrad per µm']);
   assert.deepEqual(t.rows[3], { axis: 'A', values: [4, 40] });
-  const perQuantity = { facePerError: { X: 1, Y: 2, Z: 3, A: 4, B: Infinity }, changePerNoise: { X: 10, Y: 20, Z: 30, A: 40, B: 50 } };
-  const u = precisionTable(perQuantity, AXES);
-  assert.deepEqual(u.rows.map((r) => r.values), [[1, 10], [2, 20], [3, 30], [4, 40], [null, 50]]);
-  assert.equal(precisionTable(undefined, AXES), null);
-  assert.equal(precisionTable({}, AXES), null);
+  assert.deepEqual(t.rows[4].values, [5, null]);
+  assert.equal(precisionTable(undefined, AXES, unitOf), null);
+  assert.equal(precisionTable({}, AXES, unitOf), null);
+  assert.equal(precisionTable({ sensitivity: { X: 1 } }, AXES, unitOf), null, 'no guessing at unknown keys');
 });
 
 test('the status, its reason, the iterations and the method in words', () => {

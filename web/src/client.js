@@ -90,6 +90,7 @@ export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = 
     watchdogMs,
     evaluate: (caseObject) => send({ caseObject }),
     limits: () => send({ limits: true }).then(({ result }) => result),
+    // The result's fields with their units and meanings (the module's resultFields()).
     fields: () => send({ fields: true }).then(({ result }) => result),
     // For the tests: the worker stops answering (it spins) until the watchdog ends it.
     stall: () => send({ stall: true }),

@@ -1,45 +1,59 @@
 // What the engineer reads of a correction's identification of the machine error (pure, with Node
-// tests): per axis the identified error with its standard uncertainty and the change proposed
-// (µm for X, Y, Z; µrad for A, B: the largest over the motion range), the precision demand, the
-// solver's status and iterations, and the axes as the NC program carries them. Each part is
-// there only when the result has its fields; a number that is not finite is null (a dash).
-const LINEAR = ['X', 'Y', 'Z'];
-export const axisUnit = (axis) => (LINEAR.includes(axis) ? 'µm' : 'µrad');
+// tests): per axis what the face tells of its error (read on its own with its standard
+// uncertainty, or together with other axes, or not shown at all) and the change proposed; the
+// combinations in words; the precision demand; the solver's status and iterations; and the axes as
+// the NC program carries them. Units come from the result's field list (resultFields(),
+// passed in as unitOf(path)); each part is there only when the result has its fields; a number
+// that is not finite is null (a dash).
 const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+const pick = (o, a) => (isObject(o) ? num(o[a]) : null);
 
-// Rows {axis, unit, error, uncertainty, change} for the axes the result names.
-export function errorRows(c, axes) {
-  if (!isObject(c.identifiedError) && !isObject(c.axisChange)) return [];
-  const pick = (o, a) => (isObject(o) ? num(o[a]) : null);
-  return axes.map((axis) => ({
-    axis, unit: axisUnit(axis),
-    error: pick(c.identifiedError, axis), uncertainty: pick(c.uncertainty, axis), change: pick(c.axisChange, axis),
-  }));
+// What correction.identifiedAxes.<axis> says, in the page's words for the table.
+export const READING_WORDS = {
+  alone: 'read on its own',
+  together: 'not told apart from other axes (below)',
+  unseen: 'not shown by the face',
+  locked: 'locked',
+};
+
+// Rows {axis, reading, error, errorUnit, uncertainty, change, changeUnit} for the axes the result
+// names. error and uncertainty are the value read on its own (correction.identifiedAlone): null
+// unless the face tells that axis from the others. A result without identifiedAxes (an older one)
+// has no value read on its own.
+export function errorRows(c, axes, unitOf) {
+  if (!isObject(c.identifiedAxes) && !isObject(c.axisChange)) return [];
+  return axes.map((axis) => {
+    const reading = isObject(c.identifiedAxes) && typeof c.identifiedAxes[axis] === 'string' ? c.identifiedAxes[axis] : null;
+    const alone = reading === 'alone';
+    return {
+      axis, reading,
+      error: alone ? pick(c.identifiedAlone, axis) : null,
+      errorUnit: unitOf(`correction.identifiedAlone.${axis}`),
+      uncertainty: alone ? pick(c.identifiedAloneUncertainty, axis) : null,
+      change: pick(c.axisChange, axis),
+      changeUnit: unitOf(`correction.axisChange.${axis}`),
+    };
+  });
 }
 
-// The precision demand as a table {columns: [{key, label, unit(axis)}], rows: [{axis, values}]}.
-// correction.precision holds, per axis, the face's µm per µm or µrad of axis error (largest over
-// the grid) and the axis change per µm of probe noise: either axis -> {quantity: value} or
-// quantity -> {axis: value}. Known quantities get their words and units; others their name.
-const QUANTITY_WORDS = [
-  [/noise/i, 'axis change per µm of probe noise', (a) => `${axisUnit(a)}/µm`],
-  [/face|sensitiv|per.?error|demand/i, 'face per unit of axis error, largest over the grid', (a) => `µm/${axisUnit(a)}`],
+// The sentences of correction.identifiedCombinations (strings only).
+export function combinationSentences(c) {
+  return Array.isArray(c.identifiedCombinations) ? c.identifiedCombinations.filter((s) => typeof s === 'string' && s) : [];
+}
+
+// The precision demand as a table {columns: [{key, label, unit(axis)}], rows: [{axis, values}]}:
+// correction.precision.facePerError and correction.precision.changePerNoise, each {axis: value}.
+const PRECISION = [
+  ['facePerError', 'face per unit of axis error, largest over the grid'],
+  ['changePerNoise', 'axis change per µm of probe noise, over every direction the face shows'],
 ];
-function quantityOf(key) {
-  const known = QUANTITY_WORDS.find(([re]) => re.test(key));
-  return known ? { key, label: known[1], unit: known[2] } : { key, label: key, unit: () => '' };
-}
-
-export function precisionTable(precision, axes) {
+export function precisionTable(precision, axes, unitOf) {
   if (!isObject(precision)) return null;
-  const byAxis = axes.some((a) => isObject(precision[a]));
-  const perAxis = byAxis ? precision : Object.fromEntries(axes.map((a) => [a, Object.fromEntries(
-    Object.entries(precision).filter(([, v]) => isObject(v)).map(([q, v]) => [q, v[a]]))]));
-  const keys = [...new Set(axes.flatMap((a) => (isObject(perAxis[a]) ? Object.keys(perAxis[a]) : [])))];
-  if (!keys.length) return null;
-  const columns = keys.map(quantityOf);
-  const rows = axes.map((axis) => ({ axis, values: keys.map((k) => (isObject(perAxis[axis]) ? num(perAxis[axis][k]) : null)) }));
+  const known = PRECISION.filter(([key]) => isObject(precision[key]));
+  if (!known.length) return null;
+  const columns = known.map(([key, label]) => ({ key, label, unit: (a) => unitOf(`correction.precision.${key}.${a}`) }));
+  const rows = axes.map((axis) => ({ axis, values: known.map(([key]) => pick(precision[key], axis)) }));
   return { columns, rows };
 }
 

@@ -1,25 +1,37 @@
 // The correction's identification of the machine error, shown when the result has its fields
-// (web/src/identification.js): the solver's status and iterations; per axis the identified error
-// with its standard uncertainty and the proposed change; the precision demand; the axes as the NC
-// program carries them, with their re-simulated sum of squares beside the exact proposal's.
+// (web/src/identification.js): the solver's status and iterations; per axis what the face tells of
+// its error (its value read on its own with its standard uncertainty, or why not) and the proposed
+// change; the combinations the face does not split, in words; the precision demand; the axes
+// as the NC program carries them with their re-simulated sum of squares beside the exact
+// proposal's. Units are the result fields' own (fieldUnit).
 import { AXES, AXIS_UNIT } from '../limits.js';
+import { fieldUnit as describedUnit } from '../result-fields.js';
+
+const fieldUnit = (path) => describedUnit(path) || '';
 import { escapeHtml, fixed, fmt, motionSymbol, polynomialText, signed } from '../format.js';
-import { errorRows, precisionTable, roundedFigures, statusText } from '../identification.js';
+import { READING_WORDS, combinationSentences, errorRows, precisionTable, roundedFigures, statusText } from '../identification.js';
 
 const $ = (selector) => document.querySelector(selector);
-const withUnit = (v, unit) => (v === null ? '—' : `${fmt(v, 4)} ${unit}`);
+const withUnit = (v, unit) => (v === null ? '—' : `${fmt(v, 4)} ${escapeHtml(unit)}`);
 
 function renderErrors(c) {
-  const rows = errorRows(c, AXES);
+  const rows = errorRows(c, AXES, fieldUnit);
   $('#identified-error').hidden = !rows.length;
-  $('#identified-error tbody').innerHTML = rows.map((r) => `<tr data-axis="${r.axis}"><th>${r.axis}</th>
-    <td class="num" data-col="error">${withUnit(r.error, r.unit)}</td>
-    <td class="num" data-col="uncertainty">${r.uncertainty === null ? '—' : `± ${fmt(r.uncertainty, 3)} ${r.unit}`}</td>
-    <td class="num" data-col="change">${withUnit(r.change, r.unit)}</td></tr>`).join('');
+  $('#identified-error tbody').innerHTML = rows.map((r) => {
+    const read = r.error !== null
+      ? `<td class="num" data-col="error">${withUnit(r.error, r.errorUnit)}</td>
+    <td class="num" data-col="uncertainty">${r.uncertainty === null ? '—' : `± ${fmt(r.uncertainty, 3)} ${escapeHtml(r.errorUnit)}`}</td>`
+      : `<td colspan="2" class="reading" data-col="reading">${escapeHtml(READING_WORDS[r.reading] || 'not read on its own')}</td>`;
+    return `<tr data-axis="${r.axis}" data-reading="${escapeHtml(r.reading || '')}"><th>${r.axis}</th>${read}
+    <td class="num" data-col="change">${withUnit(r.change, r.changeUnit)}</td></tr>`;
+  }).join('');
+  const words = combinationSentences(c);
+  $('#identified-words').hidden = !words.length;
+  $('#identified-words ul').innerHTML = words.map((w) => `<li>${escapeHtml(w)}</li>`).join('');
 }
 
 function renderPrecision(c) {
-  const t = precisionTable(c.precision, AXES);
+  const t = precisionTable(c.precision, AXES, fieldUnit);
   $('#precision-demand').hidden = !t;
   if (!t) return;
   $('#precision-demand thead').innerHTML = `<tr><th>axis</th>${t.columns.map((q) => `<th>${escapeHtml(q.label)}</th>`).join('')}</tr>`;
@@ -42,7 +54,7 @@ function renderRounded(c, r) {
 export function mountIdentification(store) {
   store.on('result', ({ result }) => {
     const c = result.correction;
-    const shown = Boolean(c) && ['status', 'identifiedError', 'axisChange', 'precision', 'roundedAxes'].some((k) => k in c);
+    const shown = Boolean(c) && ['status', 'identifiedAxes', 'identifiedError', 'axisChange', 'precision', 'roundedAxes'].some((k) => k in c);
     $('#identification').hidden = !shown;
     if (!shown) return;
     $('#solver-status').textContent = statusText(c);

@@ -1,0 +1,438 @@
+#include "identified_axes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include <Eigen/QR>
+#include <Eigen/SVD>
+
+#include "machine_resolution.h"
+#include "number_text.h"
+
+namespace hobsharp {
+namespace {
+
+// Samples of the motion range at which the axes' curves are judged.
+constexpr int kSamples = 101;
+// Singular values (in machine steps) below this share of the largest are directions the face
+// does not show.
+constexpr double kNull = 1e-10;
+// A curve with more than this share of it in a direction the face does not show is not read alone.
+constexpr double kLeak = 1e-6;
+// The other axes of a combination mimic the first's face without their weakest directions, below
+// this share of their largest singular value: no wild amounts for a last bit of likeness.
+constexpr double kAlikeCutoff = 1e-6;
+// Alike to this share is the same face.
+constexpr double kSameFace = 0.999;
+
+const char* unitOf(Axis a) { return isRotary(a) ? "µrad" : "µm"; }
+
+// Per axis, the columns of its free coefficients.
+using Blocks = std::array<std::vector<int>, kAxisCount>;
+
+// The curves' values at w as functionals of the coefficients in machine steps (q x 5): column a
+// gives axis a's error at w in µm or µrad.
+Eigen::MatrixXd curvesAt(const std::vector<Coefficient>& cs, const Eigen::VectorXd& step, double w) {
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(static_cast<int>(cs.size()), kAxisCount);
+  for (size_t j = 0; j < cs.size(); ++j) {
+    const int J = static_cast<int>(j);
+    G(J, static_cast<int>(cs[j].axis)) = std::pow(w, cs[j].degree) * step(J) * displayFactor(cs[j].axis);
+  }
+  return G;
+}
+
+// A least-squares fit over some columns, in machine steps: its solution and covariance per unit
+// noise variance (directions below kNull of `reference` left out).
+struct Fit {
+  std::vector<int> columns;
+  Eigen::VectorXd x;    // per column
+  Eigen::MatrixXd cov;  // per unit noise variance
+  double misfit = 0;    // |data - A x|², µm²
+};
+
+Fit fitColumns(const Eigen::MatrixXd& A, const Eigen::VectorXd& y, std::vector<int> columns, double reference,
+               double cutoff = kNull) {
+  Fit f;
+  f.columns = std::move(columns);
+  const int n = static_cast<int>(f.columns.size());
+  f.x = Eigen::VectorXd::Zero(n);
+  f.cov = Eigen::MatrixXd::Zero(n, n);
+  f.misfit = y.squaredNorm();
+  if (n == 0) return f;
+  Eigen::MatrixXd B(A.rows(), n);
+  for (int k = 0; k < n; ++k) B.col(k) = A.col(f.columns[static_cast<size_t>(k)]);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(B, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  const double floor = cutoff * (reference > 0 ? reference : (s.size() ? s(0) : 0.0));
+  for (int i = 0; i < s.size(); ++i) {
+    if (!(s(i) > floor)) continue;
+    const Eigen::VectorXd v = svd.matrixV().col(i);
+    f.x += v * (svd.matrixU().col(i).dot(y) / s(i));
+    f.cov += v * v.transpose() / (s(i) * s(i));
+  }
+  f.misfit = (y - B * f.x).squaredNorm();
+  return f;
+}
+
+// An axis's curve in a fit: its mean over the motion range (linear in the data, so its spread
+// over repeated measurements is its standard deviation: a largest value over the range would fold
+// the noise of the slope into it) and that mean's standard deviation per unit noise.
+struct CurveFigures {
+  double value = 0, perNoise = 0;
+};
+CurveFigures curveOf(const Fit& f, Axis a, const std::vector<Coefficient>& cs, const Eigen::VectorXd& step,
+                     double min, double max) {
+  CurveFigures c;
+  const int n = static_cast<int>(f.columns.size());
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
+  for (int i = 0; i < kSamples; ++i) {
+    const double w = min + (max - min) * i / (kSamples - 1);
+    for (int k = 0; k < n; ++k) {
+      const int j = f.columns[static_cast<size_t>(k)];
+      if (cs[static_cast<size_t>(j)].axis == a)
+        g(k) += std::pow(w, cs[static_cast<size_t>(j)].degree) * step(j) * displayFactor(a) / kSamples;
+    }
+  }
+  c.value = g.dot(f.x);
+  c.perNoise = std::sqrt(std::max(0.0, g.dot(f.cov * g)));
+  return c;
+}
+
+// "+8.03", "−0.42": signed, with `decimals` decimals (a minus sign, not a hyphen).
+std::string signedText(double v, int decimals) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(decimals);
+  s << std::abs(v);
+  std::string t = s.str();
+  const bool zero = t.find_first_not_of("0.") == std::string::npos;
+  return (zero ? "" : v < 0 ? "\u2212" : "+") + t;
+}
+
+// Decimals that show an uncertainty u to 2 significant digits (0 to 4).
+int decimalsFor(double u) {
+  if (!(u > 0)) return 3;
+  return std::clamp(1 - static_cast<int>(std::floor(std::log10(u))), 0, 4);
+}
+
+// "+8.03 ± 0.25 µm"
+std::string valueText(double v, double u, Axis a) {
+  const int d = decimalsFor(u);
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(d);
+  s << std::abs(u);
+  return signedText(v, d) + " \u00b1 " + s.str() + " " + unitOf(a);
+}
+
+// 2 significant digits, signed: "−0.42", "+3.1", "+140".
+std::string amountText(double v) {
+  if (v == 0) return "0";
+  const int d = std::clamp(1 - static_cast<int>(std::floor(std::log10(std::abs(v)))), 0, 6);
+  return signedText(v, d);
+}
+
+std::string listText(const std::vector<std::string>& items) {
+  std::string s;
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) s += i + 1 == items.size() ? " and " : ", ";
+    s += items[i];
+  }
+  return s;
+}
+
+}  // namespace
+
+const char* readingName(AxisReading r) {
+  switch (r) {
+    case AxisReading::Alone: return "alone";
+    case AxisReading::Together: return "together";
+    case AxisReading::Unseen: return "unseen";
+    case AxisReading::Locked: return "locked";
+  }
+  return "locked";
+}
+
+IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::VectorXd& step, const Eigen::MatrixXd& S,
+                              const Eigen::MatrixXd& nuisance, const Eigen::VectorXd& data, double min, double max,
+                              double sigma, const CorrectionOptions& o, const Eigen::MatrixXd& basis) {
+  IdentifiedAxes out;
+  const int q = static_cast<int>(cs.size());
+  Blocks block;
+  for (int j = 0; j < q; ++j) block[static_cast<int>(cs[static_cast<size_t>(j)].axis)].push_back(j);
+  for (Axis a : kAxes)
+    if (!block[static_cast<int>(a)].empty()) out.axes[static_cast<int>(a)].reading = AxisReading::Unseen;
+  if (q == 0 || S.rows() == 0 || S.cols() != q || data.size() != S.rows()) return out;
+
+  // The face's Jacobian in machine steps, and the data, with the nuisance's directions taken out
+  // (the wheel identified alongside: what it can make tells nothing about the axes).
+  Eigen::MatrixXd A = S * step.asDiagonal();
+  // A coefficient outside the identifiable space (a straight gash's X, Y and B) moves nothing the
+  // first-order face shows: its column is set to 0 (its computed one is rounding and second order).
+  if (basis.rows() == q)
+    for (int j = 0; j < q; ++j)
+      if (basis.row(j).norm() < kLeak) A.col(j).setZero();
+  Eigen::VectorXd y = data;
+  if (nuisance.cols() > 0 && nuisance.rows() == S.rows()) {
+    const Eigen::JacobiSVD<Eigen::MatrixXd> ns(nuisance, Eigen::ComputeThinU);
+    for (int i = 0; i < ns.singularValues().size(); ++i) {
+      if (!(ns.singularValues()(i) > kNull * ns.singularValues()(0))) break;
+      const Eigen::VectorXd u = ns.matrixU().col(i);
+      A -= u * (u.transpose() * A);
+      y -= u * u.dot(y);
+    }
+  }
+  // Every fit below is a least-squares fit of some of A's columns to y or to another column: the
+  // same on the triangular factor of [A y] (Q^T [A y] = R), which has q + 1 rows, not a row per
+  // probe point (a 150 x 150 grid has 22,500).
+  {
+    Eigen::MatrixXd Ay(A.rows(), q + 1);
+    Ay << A, y;
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Ay);
+    const int rows = static_cast<int>(std::min<Eigen::Index>(Ay.rows(), q + 1));
+    const Eigen::MatrixXd R = qr.matrixQR().topRows(rows).triangularView<Eigen::Upper>();
+    A = R.leftCols(q);
+    y = R.col(q);
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  const double s0 = s.size() ? s(0) : 0.0;
+  if (!(s0 > 0)) {
+    for (Axis a : kAxes)
+      if (!block[static_cast<int>(a)].empty()) out.unseen.push_back(a);
+  }
+  int rank = 0;
+  while (rank < s.size() && s(rank) > kNull * s0) ++rank;
+  // Every direction the face shows: the covariance per unit noise variance is W W^T; N spans the
+  // combinations it does not show.
+  const Eigen::MatrixXd W = svd.matrixV().leftCols(rank) * s.head(rank).cwiseInverse().asDiagonal();
+  const Eigen::MatrixXd N = svd.matrixV().rightCols(q - rank);
+
+  // Each axis alone: the information its own coefficients give (the others known).
+  std::array<Eigen::MatrixXd, kAxisCount> ownW, ownN;
+  std::array<bool, kAxisCount> seen{};
+  for (Axis a : kAxes) {
+    const int i = static_cast<int>(a);
+    const int n = static_cast<int>(block[i].size());
+    if (n == 0 || !(s0 > 0)) continue;
+    Eigen::MatrixXd Aa(A.rows(), n);
+    for (int k = 0; k < n; ++k) Aa.col(k) = A.col(block[i][static_cast<size_t>(k)]);
+    const Eigen::JacobiSVD<Eigen::MatrixXd> own(Aa, Eigen::ComputeFullV);
+    int r = 0;
+    while (r < own.singularValues().size() && own.singularValues()(r) > kNull * s0) ++r;
+    seen[i] = r > 0;
+    ownW[i] = own.matrixV().leftCols(r) * own.singularValues().head(r).cwiseInverse().asDiagonal();
+    ownN[i] = own.matrixV().rightCols(n - r);
+  }
+
+  // Over the motion range: each axis's spread and multiple correlation, and each pair's correlation.
+  std::array<bool, kAxisCount> leaks{};
+  std::array<double, kAxisCount> spread{}, correlation{};
+  Eigen::MatrixXd pair = Eigen::MatrixXd::Zero(kAxisCount, kAxisCount);
+  for (int sample = 0; sample < kSamples; ++sample) {
+    const double w = min + (max - min) * sample / (kSamples - 1);
+    const Eigen::MatrixXd G = curvesAt(cs, step, w);
+    const Eigen::MatrixXd T = W.transpose() * G;
+    const Eigen::MatrixXd C = T.transpose() * T;  // the curves' covariance at w, per unit noise variance
+    const Eigen::MatrixXd L = N.transpose() * G;
+    for (int i = 0; i < kAxisCount; ++i) {
+      if (!seen[static_cast<size_t>(i)]) continue;
+      const double g = G.col(i).norm();
+      if (!(g > 0)) continue;
+      spread[i] = std::max(spread[i], std::sqrt(std::max(0.0, C(i, i))));
+      if (L.col(i).norm() > kLeak * g) leaks[i] = true;
+      Eigen::VectorXd ga(static_cast<int>(block[i].size()));
+      for (size_t k = 0; k < block[i].size(); ++k) ga(static_cast<int>(k)) = G(block[i][k], i);
+      if (ownN[i].cols() > 0 && (ownN[i].transpose() * ga).norm() > kLeak * g) leaks[i] = true;
+      const double conditional = (ownW[i].transpose() * ga).squaredNorm();
+      if (C(i, i) > 0) correlation[i] = std::max(correlation[i], std::sqrt(std::max(0.0, 1 - conditional / C(i, i))));
+      for (int k = i + 1; k < kAxisCount; ++k)
+        if (C(i, i) > 0 && C(k, k) > 0)
+          pair(i, k) = pair(k, i) = std::max(pair(i, k), std::abs(C(i, k)) / std::sqrt(C(i, i) * C(k, k)));
+    }
+  }
+  // Axes that share a combination the face does not show belong together.
+  Eigen::MatrixXi unseenTogether = Eigen::MatrixXi::Zero(kAxisCount, kAxisCount);
+  for (int c = 0; c < N.cols(); ++c) {
+    std::vector<int> in;
+    for (int i = 0; i < kAxisCount; ++i) {
+      double part = 0;
+      for (int j : block[i]) part += N(j, c) * N(j, c);
+      if (seen[static_cast<size_t>(i)] && std::sqrt(part) > kLeak) in.push_back(i);
+    }
+    for (int i : in)
+      for (int k : in) unseenTogether(i, k) = 1;
+  }
+
+  for (Axis a : kAxes) {
+    const int i = static_cast<int>(a);
+    AxisIdentification& x = out.axes[i];
+    out.spreadPerNoise[i] = spread[i];
+    if (block[i].empty()) continue;
+    x.spreadPerNoise = spread[i];
+    x.correlation = leaks[i] ? 1.0 : correlation[i];
+    if (!seen[i]) {
+      x.reading = AxisReading::Unseen;
+      if (std::find(out.unseen.begin(), out.unseen.end(), a) == out.unseen.end()) out.unseen.push_back(a);
+      continue;
+    }
+    const double machineStep = o.resolution.inAxisUnit(a) * displayFactor(a);
+    const bool sharp = spread[i] * sigma <= o.reading.maxUncertaintySteps * machineStep;
+    x.reading = !leaks[i] && x.correlation < o.reading.maxCorrelation && sharp ? AxisReading::Alone
+                                                                                : AxisReading::Together;
+  }
+
+  // The axes read together, grouped: connected by correlation or by a combination the face does
+  // not show.
+  std::array<int, kAxisCount> group{};
+  std::iota(group.begin(), group.end(), 0);
+  const auto root = [&](int i) {
+    while (group[static_cast<size_t>(i)] != i) i = group[static_cast<size_t>(i)];
+    return i;
+  };
+  const auto together = [&](int i) { return out.axes[static_cast<size_t>(i)].reading == AxisReading::Together; };
+  for (int i = 0; i < kAxisCount; ++i)
+    for (int k = i + 1; k < kAxisCount; ++k)
+      if (together(i) && together(k) && (pair(i, k) >= o.reading.partnerCorrelation || unseenTogether(i, k)))
+        group[static_cast<size_t>(root(k))] = root(i);
+  std::vector<std::vector<int>> groups;
+  for (int i = 0; i < kAxisCount; ++i) {
+    if (!together(i)) continue;
+    auto it = std::find_if(groups.begin(), groups.end(), [&](const std::vector<int>& g) { return root(g[0]) == root(i); });
+    if (it == groups.end()) groups.push_back({i});
+    else it->push_back(i);
+  }
+
+  // The axes read alone, and each group read as the member that alone grinds the face shown best.
+  std::vector<int> aloneColumns;
+  for (int i = 0; i < kAxisCount; ++i)
+    if (out.axes[static_cast<size_t>(i)].reading == AxisReading::Alone)
+      aloneColumns.insert(aloneColumns.end(), block[i].begin(), block[i].end());
+  // A group is read as the member that alone grinds the face shown best (the least misfit, the
+  // axes read alone fitted with it). The members grind alike, so the noise may choose between them:
+  // the sentence names every member that alone grinds it as well to within the noise, each with the
+  // value it would take (a linear fit each, so each value's spread is the noise's).
+  std::vector<int> representative;
+  for (const std::vector<int>& g : groups) {
+    int best = g[0];
+    double bestMisfit = 0;
+    for (int m : g) {
+      std::vector<int> members = aloneColumns;
+      members.insert(members.end(), block[m].begin(), block[m].end());
+      const double misfit = fitColumns(A, y, members, s0).misfit;
+      if (m == g[0] || misfit < bestMisfit) best = m, bestMisfit = misfit;
+    }
+    representative.push_back(best);
+  }
+  std::vector<int> columns = aloneColumns;
+  for (int r : representative) columns.insert(columns.end(), block[r].begin(), block[r].end());
+  const Fit joint = fitColumns(A, y, columns, s0);
+  for (Axis a : kAxes) {
+    AxisIdentification& x = out.axes[static_cast<int>(a)];
+    if (x.reading != AxisReading::Alone) continue;
+    const CurveFigures c = curveOf(joint, a, cs, step, min, max);
+    x.value = c.value;
+    x.perNoise = c.perNoise;
+  }
+
+  // Each group in words.
+  for (size_t gi = 0; gi < groups.size(); ++gi) {
+    const int r = representative[gi];
+    const Axis ra = kAxes[static_cast<size_t>(r)];
+    AxisCombination combination;
+    combination.axes.push_back(ra);
+    std::vector<int> others;
+    for (int m : groups[gi])
+      if (m != r) combination.axes.push_back(kAxes[static_cast<size_t>(m)]), others.push_back(m);
+    const CurveFigures c = curveOf(joint, ra, cs, step, min, max);
+    combination.value = c.value;
+    combination.perNoise = c.perNoise;
+    // Each member alone: the fit with the axes read alone, the other groups as they are read and
+    // that member.
+    std::vector<double> misfit;
+    for (Axis member : combination.axes) {
+      const int m = static_cast<int>(member);
+      std::vector<int> members = aloneColumns;
+      for (size_t h = 0; h < representative.size(); ++h)
+        if (h != gi) members.insert(members.end(), block[representative[h]].begin(), block[representative[h]].end());
+      members.insert(members.end(), block[m].begin(), block[m].end());
+      const Fit f = fitColumns(A, y, members, s0);
+      const CurveFigures mc = curveOf(f, member, cs, step, min, max);
+      combination.aloneValue.push_back(mc.value);
+      combination.alonePerNoise.push_back(mc.perNoise);
+      misfit.push_back(f.misfit);
+    }
+    const double leastMisfit = *std::min_element(misfit.begin(), misfit.end());
+    for (double m : misfit)
+      combination.aloneListed.push_back(m - leastMisfit <= o.significance * o.significance * sigma * sigma);
+    const auto a0 = std::find_if(block[r].begin(), block[r].end(),
+                                 [&](int j) { return cs[static_cast<size_t>(j)].degree == 0; });
+    // The face of +1 µm or µrad on the first axis, and the others' curves that grind it best.
+    if (!others.empty() && a0 != block[r].end()) {
+      const Eigen::VectorXd face = A.col(*a0) / (step(*a0) * displayFactor(ra));
+      std::vector<int> otherColumns;
+      for (int m : others) otherColumns.insert(otherColumns.end(), block[m].begin(), block[m].end());
+      const Fit mimic = fitColumns(A, face, otherColumns, 0, kAlikeCutoff);
+      combination.alike = face.norm() > 0 ? std::max(0.0, 1 - std::sqrt(mimic.misfit) / face.norm()) : 0;
+      for (int m : others) combination.amounts.push_back(curveOf(mimic, kAxes[static_cast<size_t>(m)], cs, step, min, max).value);
+    }
+    std::vector<std::string> names, otherNames;
+    for (Axis a : combination.axes) names.push_back(axisName(a));
+    for (size_t k = 1; k < names.size(); ++k) otherNames.push_back(names[k]);
+    const std::string equivalent = valueText(combination.value, combination.perNoise * sigma, ra) + " of " +
+                                   axisName(ra) + "-equivalent, the " + axisName(ra) + " error that alone grinds it";
+    std::ostringstream t;
+    if (!others.empty()) {
+      t << listText(names) << " together: ";
+      if (combination.alike >= o.reading.alikeShare && !combination.amounts.empty()) {
+        std::vector<std::string> parts;
+        for (size_t k = 0; k < others.size(); ++k)
+          parts.push_back(amountText(combination.amounts[k]) + " " + unitOf(kAxes[static_cast<size_t>(others[k])]) +
+                          " on " + otherNames[k]);
+        t << "+1 " << unitOf(ra) << " on " << axisName(ra);
+        if (combination.alike >= kSameFace)
+          t << " grinds the same face as " << listText(parts);
+        else
+          t << " grinds nearly the face of " << listText(parts) << " (alike to " << static_cast<int>(std::floor(100 * combination.alike))
+            << " %)";
+        t << ", so the face does not tell them apart";
+      } else {
+        t << "the face does not tell their errors apart";
+      }
+      t << ". It shows their combination: " << equivalent;
+      std::vector<std::string> alike;
+      for (size_t k = 1; k < combination.axes.size(); ++k)
+        if (combination.aloneListed[k])
+          alike.push_back(std::string(axisName(combination.axes[k])) + " alone with " +
+                          valueText(combination.aloneValue[k], combination.alonePerNoise[k] * sigma, combination.axes[k]));
+      if (!alike.empty()) t << "; " << listText(alike) << " would grind it as well, to within the probe noise";
+      t << ".";
+    } else if (out.axes[static_cast<size_t>(r)].correlation >= o.reading.maxCorrelation) {
+      t << axisName(ra) << ": the face does not tell its error from a mix of the other axes' errors. It shows "
+        << equivalent << ".";
+    } else {
+      const double machineStep = o.resolution.inAxisUnit(ra) * displayFactor(ra);
+      t << axisName(ra) << ": the face shows its error only vaguely (within \u00b1"
+        << numberText(out.axes[static_cast<size_t>(r)].spreadPerNoise * sigma, 2) << " " << unitOf(ra)
+        << " over every direction it shows, more than " << numberText(o.reading.maxUncertaintySteps, 3)
+        << " machine steps of " << numberText(machineStep, 3) << " " << unitOf(ra) << "). It shows " << equivalent << ".";
+    }
+    combination.sentence = t.str();
+    out.sentences.push_back(combination.sentence);
+    out.combinations.push_back(std::move(combination));
+  }
+  if (!out.unseen.empty()) {
+    std::vector<std::string> names;
+    for (Axis a : out.unseen) names.push_back(axisName(a));
+    const bool one = names.size() == 1;
+    out.sentences.push_back(listText(names) + ": the face does not show " + (one ? "its error" : "their errors") +
+                            " at all (a move of " + (one ? "that axis" : "one of them") +
+                            " alone leaves it as it is), so " + (one ? "it is" : "they are") +
+                            " not identified: the identified error there is 0.");
+  }
+  return out;
+}
+
+}  // namespace hobsharp

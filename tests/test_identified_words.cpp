@@ -1,0 +1,205 @@
+// What the engineer reads about the machine (issue 20, item 5; identified_axes.h): the identified
+// error by what the face can tell apart, and an uncertainty that is the spread the probe noise gives.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "identification_cases.h"
+#include "result_model.h"
+
+namespace hobsharp::test {
+namespace {
+
+// The correction of the face ground with nominal + error, measured with probe noise (seed).
+Correction corrected(const SharpeningJob& job, const AxisPolynomials& error, const CorrectionOptions& o, unsigned seed) {
+  const Eigen::MatrixXd measured = topographyFor(job, withMachineError(job.nominalAxes, error)).normal +
+                                   probeNoise(job.grid.rows(), job.grid.cols(), o.probeNoise, seed);
+  auto c = correctMeasuredFace(job.setup, job.nominalAxes, job.nominalAxes, groundFaceOf(job, job.nominalAxes), measured, o);
+  EXPECT_TRUE(c.ok()) << (c.ok() ? "" : c.error().message);
+  return c.value();
+}
+
+AxisPolynomials yOffset(const SharpeningJob& job, double mm) {
+  AxisPolynomials e = times(job.nominalAxes, 0.0);
+  e[Axis::Y].a[0] = mm;
+  return e;
+}
+
+bool names(const std::string& sentence, Axis a) {
+  const std::string n = axisName(a);
+  return sentence.find(n + ",") != std::string::npos || sentence.find(n + " ") != std::string::npos ||
+         sentence.find(n + ":") != std::string::npos;
+}
+
+// (a) An injected Y a0 of +8 µm alone: the words name Y with what it is confounded with, Y is not
+// read on its own, and no axis is read on its own with a value that was never injected.
+void yAloneIsNamed(const char* hob, const SharpeningJob& job, double sigma) {
+  SCOPED_TRACE(std::string(hob) + ", sigma " + std::to_string(sigma));
+  CorrectionOptions o = job.correction;
+  o.probeNoise = sigma;
+  const Correction c = corrected(job, yOffset(job, 0.008), o, 1);
+  const IdentifiedAxes& id = c.identified;
+  const int Y = static_cast<int>(Axis::Y);
+  EXPECT_NE(id.axes[Y].reading, AxisReading::Alone);
+  const bool inCombination = std::any_of(id.combinations.begin(), id.combinations.end(), [](const AxisCombination& k) {
+    return std::find(k.axes.begin(), k.axes.end(), Axis::Y) != k.axes.end();
+  });
+  const bool unseen = std::find(id.unseen.begin(), id.unseen.end(), Axis::Y) != id.unseen.end();
+  EXPECT_TRUE(inCombination || unseen);
+  const bool named = std::any_of(id.sentences.begin(), id.sentences.end(), [](const std::string& s) { return names(s, Axis::Y); });
+  EXPECT_TRUE(named);
+  for (const std::string& s : id.sentences) std::printf("[ words    ] %s: %s\n", hob, s.c_str());
+  for (Axis a : kAxes) {
+    const AxisIdentification& x = id.axes[static_cast<int>(a)];
+    if (x.reading != AxisReading::Alone) continue;
+    // Never injected: within 4 standard uncertainties of 0.
+    EXPECT_LE(std::abs(x.value), 4 * x.perNoise * sigma + 1e-9) << axisName(a) << " read alone at " << x.value;
+  }
+}
+
+TEST(IdentifiedWords, InjectedYIsNamedWithWhatItIsConfoundedWith) {
+  yAloneIsNamed("paper (Tab. 1)", jobOf(paperCase()), 0.5);
+  yAloneIsNamed("paper (Tab. 1)", jobOf(paperCase()), 0.05);
+  yAloneIsNamed("straight gash", jobOf(straightGashCase()), 0.5);
+  yAloneIsNamed("straight gash, module 4", jobOf(straightModule4Case()), 0.5);
+}
+
+// On the paper's hob Y is read together with the axes it grinds alike; with little noise the face
+// shows +8 µm of Y-equivalent (what Y alone grinds), to within 4 standard uncertainties.
+TEST(IdentifiedWords, PaperHobShowsTheYEquivalent) {
+  const SharpeningJob job = jobOf(paperCase());
+  CorrectionOptions o = job.correction;
+  o.probeNoise = 0.05;
+  const Correction c = corrected(job, yOffset(job, 0.008), o, 1);
+  ASSERT_EQ(c.identified.combinations.size(), 1u);
+  const AxisCombination& k = c.identified.combinations.front();
+  const size_t y = static_cast<size_t>(std::find(k.axes.begin(), k.axes.end(), Axis::Y) - k.axes.begin());
+  ASSERT_LT(y, k.axes.size()) << k.sentence;
+  EXPECT_GE(k.axes.size(), 2u);
+  EXPECT_GE(k.alike, o.reading.alikeShare);
+  EXPECT_TRUE(k.aloneListed[y]) << "Y alone grinds the face shown as well as any: " << k.sentence;
+  EXPECT_NEAR(k.aloneValue[y], 8.0, 4 * k.alonePerNoise[y] * o.probeNoise) << k.sentence;
+  EXPECT_NE(k.sentence.find(std::string(axisName(k.axes.front())) + "-equivalent"), std::string::npos) << k.sentence;
+  if (y > 0) {
+    EXPECT_NE(k.sentence.find("Y alone with +"), std::string::npos) << k.sentence;
+  }
+  // On a helical gash X and A are never read alone (an axial shift of a helicoid is a turn of it).
+  EXPECT_NE(c.identified.axes[static_cast<int>(Axis::X)].reading, AxisReading::Alone);
+  EXPECT_NE(c.identified.axes[static_cast<int>(Axis::A)].reading, AxisReading::Alone);
+}
+
+// On a straight gash the face does not show X, Y and B at all: one sentence says so.
+TEST(IdentifiedWords, StraightGashSaysWhatItDoesNotShow) {
+  const SharpeningJob job = jobOf(straightGashCase());
+  const Correction c = corrected(job, yOffset(job, 0.008), job.correction, 1);
+  for (Axis a : {Axis::X, Axis::Y, Axis::B})
+    EXPECT_EQ(c.identified.axes[static_cast<int>(a)].reading, AxisReading::Unseen) << axisName(a);
+  ASSERT_FALSE(c.identified.sentences.empty());
+  EXPECT_EQ(c.identified.sentences.back().rfind("X, Y and B: the face does not show their errors at all", 0), 0u)
+      << c.identified.sentences.back();
+}
+
+// (b) The uncertainty is the spread: over 30 seeds of fresh probe noise (same hob, same true error)
+// the standard deviation of each value read alone is 0.7 to 1.4 times the uncertainty given with it;
+// and the uncertainty of the identified error is the change per µm of noise times sigma, exactly.
+TEST(IdentifiedWords, UncertaintyIsTheSpreadOverThirtySeeds) {
+  SharpeningJob job = jobOf(straightModule4Case());
+  job.correction.lockedAxes = {Axis::A};  // the A axis held: the face reads Z on its own
+  AxisPolynomials error = yOffset(job, 0.008);
+  error[Axis::Z].a[0] = -0.003;
+  for (int lockFrom : {2, 99}) {
+    CorrectionOptions o = job.correction;
+    for (Axis a : kAxes)
+      for (int k = lockFrom; k <= job.nominalAxes.degree(); ++k) o.locked.push_back(Coefficient{a, k});
+    SCOPED_TRACE("coefficients of degree " + std::to_string(lockFrom) + " and up locked");
+    constexpr int kSeeds = 30;
+    std::array<std::vector<double>, kAxisCount> values;
+    std::array<double, kAxisCount> reported{};
+    for (unsigned seed = 1; seed <= kSeeds; ++seed) {
+      const Correction c = corrected(job, error, o, seed);
+      for (int i = 0; i < kAxisCount; ++i) {
+        EXPECT_EQ(c.uncertainty[i], c.changePerNoise[i] * o.probeNoise);
+        const AxisIdentification& x = c.identified.axes[i];
+        if (x.reading != AxisReading::Alone) continue;
+        values[i].push_back(x.value);
+        reported[i] += x.perNoise * o.probeNoise;
+      }
+    }
+    EXPECT_EQ(values[static_cast<int>(Axis::Z)].size(), static_cast<size_t>(kSeeds)) << "Z read alone in every seed";
+    for (int i = 0; i < kAxisCount; ++i) {
+      const std::vector<double>& v = values[i];
+      if (v.empty()) continue;
+      EXPECT_EQ(v.size(), static_cast<size_t>(kSeeds)) << axisName(kAxes[i]) << " read alone in some seeds only";
+      double mean = 0, sq = 0;
+      for (double x : v) mean += x / v.size();
+      for (double x : v) sq += (x - mean) * (x - mean);
+      const double spread = std::sqrt(sq / (v.size() - 1)), given = reported[i] / v.size();
+      std::printf("[ figures  ] %s read alone over %zu seeds: mean %+.4f, spread %.4f, uncertainty given %.4f: %.2f\n",
+                  axisName(kAxes[i]), v.size(), mean, spread, given, spread / given);
+      EXPECT_GE(spread / given, 0.7) << axisName(kAxes[i]);
+      EXPECT_LE(spread / given, 1.4) << axisName(kAxes[i]);
+    }
+    double mean = 0;
+    for (double x : values[static_cast<int>(Axis::Z)]) mean += x / kSeeds;
+    EXPECT_NEAR(mean, -3.0, 0.1) << "Z's mean over the seeds";
+  }
+}
+
+// What a combination shows is calibrated too: on the paper's hob, +8 µm on Y over 30 seeds, what
+// the face shows of Y's combination as Y alone would grind it (a linear fit, so its spread is the
+// noise's; the axis the combination is read as does not follow the noise).
+TEST(IdentifiedWords, CombinationValueIsCalibratedOverThirtySeeds) {
+  const SharpeningJob job = jobOf(paperCase());
+  for (double sigma : {0.5, 0.05}) {
+    SCOPED_TRACE("sigma " + std::to_string(sigma));
+    CorrectionOptions o = job.correction;
+    o.probeNoise = sigma;
+    constexpr int kSeeds = 30;
+    std::vector<double> values;
+    double given = 0;
+    for (unsigned seed = 1; seed <= kSeeds; ++seed) {
+      const Correction c = corrected(job, yOffset(job, 0.008), o, seed);
+      ASSERT_EQ(c.identified.combinations.size(), 1u);
+      const AxisCombination& k = c.identified.combinations.front();
+      const size_t y = static_cast<size_t>(std::find(k.axes.begin(), k.axes.end(), Axis::Y) - k.axes.begin());
+      ASSERT_LT(y, k.axes.size()) << k.sentence;
+      if (seed == 1) std::printf("[ words    ] sigma %.2f: %s\n", sigma, k.sentence.c_str());
+      EXPECT_TRUE(k.aloneListed[y]) << k.sentence;
+      values.push_back(k.aloneValue[y]);
+      given += k.alonePerNoise[y] * sigma / kSeeds;
+    }
+    double mean = 0, sq = 0;
+    for (double x : values) mean += x / kSeeds;
+    for (double x : values) sq += (x - mean) * (x - mean);
+    const double spread = std::sqrt(sq / (kSeeds - 1));
+    std::printf("[ figures  ] sigma %.2f: Y alone over %d seeds: mean %+.3f, spread %.3f, uncertainty given %.3f: %.2f\n",
+                sigma, kSeeds, mean, spread, given, spread / given);
+    EXPECT_GE(spread / given, 0.7);
+    EXPECT_LE(spread / given, 1.4);
+    EXPECT_NEAR(mean, 8.0, 3 * given);
+  }
+}
+
+// The fields reach the result: per axis its reading and value, and the sentences.
+TEST(IdentifiedWords, ResultFieldsHoldTheWords) {
+  std::vector<std::string> paths;
+  for (const FieldDescription& f : resultFields()) paths.push_back(f.path);
+  for (const char* p : {"correction.identifiedAxes.Y", "correction.identifiedAlone.B",
+                        "correction.identifiedAloneUncertainty.Z", "correction.identifiedCombinations",
+                        "correction.identifiedError.Y", "correction.uncertainty.Y", "correction.precision.changePerNoise.Y"})
+    EXPECT_NE(std::find(paths.begin(), paths.end(), p), paths.end()) << p;
+  CaseInput in = paperCase();
+  const SharpeningJob job = jobOf(in);
+  in.measured = topographyFor(job, withMachineError(job.nominalAxes, yOffset(job, 0.008))).normal +
+                probeNoise(job.grid.rows(), job.grid.cols(), 0.5, 1);
+  auto e = evaluate(jobOf(in));
+  ASSERT_TRUE(e.ok());
+  const std::string json = resultJson(*e);
+  EXPECT_NE(json.find("\"identifiedAxes\":{\"X\":\"together\""), std::string::npos) << json.substr(0, 200);
+  EXPECT_NE(json.find("-equivalent"), std::string::npos);
+  EXPECT_NE(json.find("Y-equivalent"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace hobsharp::test
