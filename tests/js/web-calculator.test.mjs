@@ -145,12 +145,14 @@ test('a loaded case loses its measured grid only when the module refuses the gri
   }
 });
 
-test('the page takes a result\'s units from the module\'s field list, and nothing from its own text', () => {
-  assert.equal(limits.fieldUnit('correction.identifiedAlone.A'), '', 'no units until the module gives its fields');
-  limits.setResultFields(hobsharp.resultFields());
-  assert.equal(limits.fieldUnit('correction.identifiedAlone.A'), 'µrad');
-  assert.equal(limits.fieldUnit('correction.identifiedAlone.Y'), 'µm');
-  assert.equal(limits.fieldUnit('correction.precision.changePerNoise.B'), 'µrad per µm');
-  assert.equal(limits.RESULT_FIELDS['correction.identifiedCombinations'].kind, 'strings');
-  assert.throws(() => limits.setResultFields(undefined), /no result fields/);
+test('the page takes a result\'s units from the module\'s field list, and nothing from its own text', async () => {
+  const rf = await import('../../web/src/result-fields.js');
+  rf.setResultFields([]);
+  assert.equal(rf.fieldUnit('correction.identifiedAlone.A'), null, 'no units until the module gives its fields');
+  rf.setResultFields(hobsharp.resultFields());
+  assert.equal(rf.fieldUnit('correction.identifiedAlone.A'), 'µrad');
+  assert.equal(rf.fieldUnit('correction.identifiedAlone.Y'), 'µm');
+  assert.equal(rf.fieldUnit('correction.precision.changePerNoise.B'), 'µrad per µm');
+  assert.ok(rf.fieldMeaning('correction.identifiedCombinations').length > 0);
+  assert.throws(() => rf.setResultFields(undefined), /no description of its results/);
 });
