@@ -8,11 +8,11 @@
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
 #include <Eigen/SVD>
-#include <unsupported/Eigen/LevenbergMarquardt>
 
 #include "direction_decision.h"
 #include "face_cache.h"
 #include "face_vectors.h"
+#include "levenberg_marquardt.h"
 #include "sensitivity_matrix.h"
 #include "solve_report.h"
 #include "units.h"
@@ -173,16 +173,11 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
       residual.sensitiveEvaluation = residual.cache.evaluations;
       residual.S = std::move(currentS);  // back at the solution below, or formed again on failure
     }
-    Eigen::LevenbergMarquardt<FaceResidual> lm(residual);
-    lm.setFtol(o.solver.functionTolerance);
-    lm.setXtol(o.solver.parameterTolerance);
-    lm.setGtol(o.solver.gradientTolerance);
-    lm.setFactor(o.solver.initialTrustRegion);
-    lm.setMaxfev(1000000);  // the iterations are counted below
-    auto status = lm.minimizeInit(theta);
-    if (status != Eigen::LevenbergMarquardtSpace::NotStarted && round > 0) {
+    bool refused = false;
+    const bool started = solveLeastSquares(residual, theta, o.solver, m.summary, "no identified axis direction", &refused);
+    if (!started && round > 0) {
       evaluations += residual.cache.evaluations;
-    m.summary.unsolvableFaces += residual.cache.unsolvable;
+      m.summary.unsolvableFaces += residual.cache.unsolvable;
       P = keptP;
       theta = keptTheta;
       m.summary.status = SolveStatus::Stalled;
@@ -190,26 +185,17 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
                          "the estimate before is kept.";
       break;
     }
-    if (status != Eigen::LevenbergMarquardtSpace::NotStarted) {
+    if (!started) {
       m.summary.status = SolveStatus::Failed;
-      m.summary.reason = status == Eigen::LevenbergMarquardtSpace::ImproperInputParameters
-                             ? "failed: the solver refused its inputs."
-                             : "failed: the face of the estimate cannot be simulated.";
+      m.summary.reason = refused ? "failed: the solver refused its inputs."
+                                 : "failed: the face of the estimate cannot be simulated.";
       evaluations += residual.cache.evaluations;
-    m.summary.unsolvableFaces += residual.cache.unsolvable;
+      m.summary.unsolvableFaces += residual.cache.unsolvable;
       theta.setZero();
       solved.reset();
       currentS = sensitivityMatrix(runFace, cs).normal;
       break;
     }
-    int iterations = 0;
-    const int left = o.solver.maxIterations - m.summary.iterations;
-    do {
-      status = lm.minimizeOneStep(theta);
-      ++iterations;
-    } while (status == Eigen::LevenbergMarquardtSpace::Running && iterations < left);
-    m.summary.iterations += iterations;
-    describeSolve(m.summary, status, residual.cache.unsolvable, o.solver, "no identified axis direction");
     // theta is the best iterate: the solver only ever accepts steps that reduce the sum of squares.
     const GroundFace* f = residual.sensitiveFaceAt(theta);
     evaluations += residual.cache.evaluations;

@@ -8,11 +8,11 @@
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
 #include <Eigen/SVD>
-#include <unsupported/Eigen/LevenbergMarquardt>
 
 #include "direction_decision.h"
 #include "face_cache.h"
 #include "face_vectors.h"
+#include "levenberg_marquardt.h"
 #include "number_text.h"
 #include "sensitivity_matrix.h"
 #include "solve_report.h"
@@ -239,16 +239,11 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     }
     JointResidual residual(setup, run, grid, cs, knots, wheelBasis, PE, PW, d);
     if (round == 0) residual.seed(theta, start);
-    Eigen::LevenbergMarquardt<JointResidual> lm(residual);
-    lm.setFtol(o.solver.functionTolerance);
-    lm.setXtol(o.solver.parameterTolerance);
-    lm.setGtol(o.solver.gradientTolerance);
-    lm.setFactor(o.solver.initialTrustRegion);
-    lm.setMaxfev(1000000);  // the iterations are counted below
-    auto status = lm.minimizeInit(theta);
-    if (status != Eigen::LevenbergMarquardtSpace::NotStarted) {
+    bool refused = false;
+    if (!solveLeastSquares(residual, theta, o.solver, a.summary,
+                           "neither an identified axis direction nor the wheel's profile", &refused)) {
       evaluations += residual.cache.evaluations;
-    a.summary.unsolvableFaces += residual.cache.unsolvable;
+      a.summary.unsolvableFaces += residual.cache.unsolvable;
       if (round > 0) {
         PE = keptPE, PW = keptPW, theta = keptTheta;
         a.summary.status = SolveStatus::Stalled;
@@ -257,21 +252,12 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
         break;
       }
       a.summary.status = SolveStatus::Failed;
-      a.summary.reason = status == Eigen::LevenbergMarquardtSpace::ImproperInputParameters
-                             ? "failed: the solver refused its inputs."
-                             : "failed: the face of the estimate cannot be simulated.";
+      a.summary.reason = refused ? "failed: the solver refused its inputs."
+                                 : "failed: the face of the estimate cannot be simulated.";
       theta.setZero();
       current = start;
       break;
     }
-    int iterations = 0;
-    const int left = o.solver.maxIterations - a.summary.iterations;
-    do {
-      status = lm.minimizeOneStep(theta);
-      ++iterations;
-    } while (status == Eigen::LevenbergMarquardtSpace::Running && iterations < left);
-    a.summary.iterations += iterations;
-    describeSolve(a.summary, status, residual.cache.unsolvable, o.solver, "neither an identified axis direction nor the wheel's profile");
     // theta is the best iterate: the solver only ever accepts steps that reduce the sum of squares.
     const GroundFace* f = residual.sensitiveFaceAt(theta);
     evaluations += residual.cache.evaluations;
