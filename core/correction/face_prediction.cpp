@@ -34,7 +34,8 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
   const double afterSquares = c.after.normal.squaredNorm();
   const double noiseSquares = sigma * sigma * std::max(0.0, n - k);
   p.rms = std::sqrt(std::max(0.0, afterSquares - noiseSquares) / n);
-  p.noisePart = std::sqrt(sigma * sigma * (k + 3 * std::sqrt(2.0 * k)) / n);
+  // A stop changes nothing: no noise is carried into the axes.
+  p.noisePart = c.stop ? 0.0 : std::sqrt(sigma * sigma * (k + 3 * std::sqrt(2.0 * k)) / n);
 
   // The error the face cannot show: in units of the tip's displacement, per term at the range's end.
   const std::vector<Coefficient>& cs = c.coefficients;
@@ -88,7 +89,10 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
   // The misfit's shape: at most what it holds beyond the noise's expectation less three of the
   // noise's standard deviations (chi-square, n - k degrees of freedom).
   const double dof = std::max(0.0, n - k);
-  const double shapeSquares = std::min(afterSquares, std::max(0.0, afterSquares - noiseSquares + 3 * sigma * sigma * std::sqrt(2 * dof)));
+  // A stop keeps the face measured: all of its misfit may be shape.
+  const double shapeSquares =
+      c.stop ? afterSquares
+             : std::min(afterSquares, std::max(0.0, afterSquares - noiseSquares + 3 * sigma * sigma * std::sqrt(2 * dof)));
   p.rmsHigh = std::sqrt(shapeSquares / n + p.noisePart * p.noisePart + p.unseenPart * p.unseenPart);
   return p;
 }

@@ -171,7 +171,17 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   // Never a proposal worse than the run: the same axes again grind the face measured. (A run that
   // holds moves the identification leaves out as amplifying, such as an earlier linear step's,
   // is where this happens.)
-  if (c.after.sse > c.before.sse) {
+  // Within the noise: the measured sum of squares is what the probe's noise alone gives, to 3
+  // standard deviations of its chi-square (points * sigma² (1 + 3 sqrt(2 / points))). Then the
+  // verdict says to stop, and the axes run are kept: a change would only move noise.
+  const double points = std::max(1, runFace.size());
+  c.stop = c.before.sse <= points * o.probeNoise * o.probeNoise * (1 + 3 * std::sqrt(2 / points));
+  if (c.stop) {
+    c.axes = run;
+    c.change.setZero();
+    c.after = c.before;
+  }
+  if (!c.stop && c.after.sse > c.before.sse) {
     c.runKept = true;
     c.discardedSse = c.after.sse;
     c.axes = run;
@@ -219,10 +229,6 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.predictedNoisePart = p.noisePart;
     c.predictedUnseenPart = p.unseenPart;
   }
-  // Within the noise: the measured sum of squares is what the probe's noise alone gives, to 3
-  // standard deviations of its chi-square (points * sigma² (1 + 3 sqrt(2 / points))).
-  const double points = std::max(1, runFace.size());
-  c.stop = c.before.sse <= points * o.probeNoise * o.probeNoise * (1 + 3 * std::sqrt(2 / points));
   c.verdict = verdictOf(c, o, runFace.size());
   if (c.linearisedAtNominal)
     c.verdict += " The face the axes run grind without the machine's error cannot be simulated (the wheel would not "

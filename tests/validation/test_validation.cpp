@@ -43,18 +43,18 @@ TEST(Validation, CampaignTargets) {
   EXPECT_GE(campaign().bounds[1].share(), campaign().bounds[1].required) << campaign().bounds[1].what;
 
   for (const Target& t : classOf(ScenarioClass::Wheel).targets) EXPECT_GE(t.share(), t.required) << t.what;
+  for (const Target& t : classOf(ScenarioClass::NoiseOnly).targets) EXPECT_GE(t.share(), t.required) << t.what;
 
   // Held at the share measured with g++ -O2 less one scenario (the sanitizer build's clang rounds
   // differently, and a scenario at a threshold may fall either way): the bound informs in 191/214,
-  // just under the 90 %; not yet met (docs/validation.md): 25/33, 16/34 and 31/34 of the
-  // issue's 95, 90 and 95 %.
+  // just under the 90 %; not yet met (docs/validation.md): 25/33 and 16/34 of the issue's
+  // 95 and 90 %.
   EXPECT_GE(campaign().bounds[2].share(), 190.0 / 214 - 1e-9) << campaign().bounds[2].what;
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[0].share(), 24.0 / 33 - 1e-9);
   // With the rounded axes (coefficients as the NC program carries them): 27/33 of the 90 %.
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[1].share(), 26.0 / 33 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[1].share(), 26.0 / 33 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::Large).targets[0].share(), 15.0 / 34 - 1e-9);
-  EXPECT_GE(classOf(ScenarioClass::NoiseOnly).targets[0].share(), 30.0 / 34 - 1e-9);
   std::printf("%s", tableText(campaign()).c_str());
 }
 
