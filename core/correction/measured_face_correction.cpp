@@ -55,9 +55,11 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
   v.precision(3);
   // What the pass leaves, as the prediction and its bound state it (face_prediction.h).
   std::ostringstream leaves;
-  leaves.precision(2);
-  leaves << "the face measured " << c.before.rms << " µm rms will be left at about " << c.predictedRms
-         << " µm rms, at most " << c.predictedRmsHigh << " µm rms";
+  leaves.precision(3);
+  leaves << "the face measured " << c.before.rms << " µm rms will be left ";
+  if (c.predictedRms > 0) leaves << "at about " << c.predictedRms << " µm rms, ";
+  else leaves << "within the probe noise, ";
+  leaves << "at most " << c.predictedRmsHigh << " µm rms";
   if (c.predictedUnseenPart > 0) leaves << " if the error the face cannot show is no larger than the one it shows";
   // Within the noise: the rms left is at most twice the probe's sigma.
   const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);

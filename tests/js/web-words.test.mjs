@@ -88,10 +88,13 @@ test('the prediction: what the pass will leave and its bound, µm rms at the pro
   const c = hobsharp.evaluate({ ...paper(), measured: shaped() }).correction;
   assert.equal(c.stop, false);
   const text = predictionText(c, fieldUnit);
-  assert.match(text, /^Predicted after the pass: [\d.e+-]+ µm rms \(at most [\d.e+-]+ µm rms\) at the probe points\.$/);
+  assert.match(text, /^Predicted after the pass: ([\d.e+-]+ µm rms \(at most [\d.e+-]+ µm rms\)|within the probe noise, at most [\d.e+-]+ µm rms) at the probe points\.$/);
+  // A prediction of no shape beyond the noise is said in words, not as a certain-looking 0.
+  assert.match(predictionText({ ...c, predictedRms: 0 }, fieldUnit), /within the probe noise, at most/);
+  assert.match(predictionText({ ...c, predictedRms: 0.2 }, fieldUnit), /0\.2 µm rms \(at most/);
   assert.ok(text.includes(`at most ${Number(c.predictedRmsHigh.toPrecision(3))} µm rms`), text);
   // Units are the module's: another unit is shown as given; none given, no line.
-  assert.match(predictionText(c, (p) => (p.endsWith('High') ? 'mm' : 'µm')), /µm rms \(at most [\d.e+-]+ mm rms\)/);
+  assert.match(predictionText({ ...c, predictedRms: 0.2 }, (p) => (p.endsWith('High') ? 'mm' : 'µm')), /µm rms \(at most [\d.e+-]+ mm rms\)/);
   assert.equal(predictionText(c, () => null), null);
   // Nothing that is not a number, nothing for a proposal that is not to be run.
   assert.equal(predictionText({ ...c, predictedRmsHigh: NaN }, fieldUnit), null);

@@ -56,5 +56,7 @@ export function predictionText(c, unitOf) {
   if (!Number.isFinite(rms) || !Number.isFinite(high)) return null;
   const unit = unitOf('correction.predictedRms'), highUnit = unitOf('correction.predictedRmsHigh');
   if (!unit || !highUnit) return null;
+  // No shape left beyond the probe's noise: say so rather than print a certain-looking 0.
+  if (rms === 0) return `Predicted after the pass: within the probe noise, at most ${rmsFigure(high)} ${highUnit} rms at the probe points.`;
   return `Predicted after the pass: ${rmsFigure(rms)} ${unit} rms (at most ${rmsFigure(high)} ${highUnit} rms) at the probe points.`;
 }
