@@ -166,6 +166,11 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
       break;
     }
     FaceResidual residual(setup, run, runFace, cs, P, d);
+    // The faces this round simulated, and those the wheel could not grind, into the summary.
+    const auto countFaces = [&] {
+      evaluations += residual.cache.evaluations;
+      m.summary.unsolvableFaces += residual.cache.unsolvable;
+    };
     if (round == 0) {
       residual.cache.lastX = theta;
       residual.cache.lastFace = runFace;  // with its sensitivities, and their matrix
@@ -176,8 +181,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     bool refused = false;
     const bool started = solveLeastSquares(residual, theta, o.solver, m.summary, "no identified axis direction", &refused);
     if (!started && round > 0) {
-      evaluations += residual.cache.evaluations;
-      m.summary.unsolvableFaces += residual.cache.unsolvable;
+      countFaces();
       P = keptP;
       theta = keptTheta;
       m.summary.status = SolveStatus::Stalled;
@@ -189,8 +193,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
       m.summary.status = SolveStatus::Failed;
       m.summary.reason = refused ? "failed: the solver refused its inputs."
                                  : "failed: the face of the estimate cannot be simulated.";
-      evaluations += residual.cache.evaluations;
-      m.summary.unsolvableFaces += residual.cache.unsolvable;
+      countFaces();
       theta.setZero();
       solved.reset();
       currentS = sensitivityMatrix(runFace, cs).normal;
@@ -198,8 +201,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     }
     // theta is the best iterate: the solver only ever accepts steps that reduce the sum of squares.
     const GroundFace* f = residual.sensitiveFaceAt(theta);
-    evaluations += residual.cache.evaluations;
-    m.summary.unsolvableFaces += residual.cache.unsolvable;
+    countFaces();
     if (!f) {
       // The face at the estimate was simulated (the solver accepted it), but its envelope equations
       // are singular there, so it has no sensitivities: the estimate and its face are kept, and the

@@ -238,12 +238,16 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
       break;
     }
     JointResidual residual(setup, run, grid, cs, knots, wheelBasis, PE, PW, d);
+    // The faces this round simulated, and those the wheel could not grind, into the summary.
+    const auto countFaces = [&] {
+      evaluations += residual.cache.evaluations;
+      a.summary.unsolvableFaces += residual.cache.unsolvable;
+    };
     if (round == 0) residual.seed(theta, start);
     bool refused = false;
     if (!solveLeastSquares(residual, theta, o.solver, a.summary,
                            "neither an identified axis direction nor the wheel's profile", &refused)) {
-      evaluations += residual.cache.evaluations;
-      a.summary.unsolvableFaces += residual.cache.unsolvable;
+      countFaces();
       if (round > 0) {
         PE = keptPE, PW = keptPW, theta = keptTheta;
         a.summary.status = SolveStatus::Stalled;
@@ -260,8 +264,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     }
     // theta is the best iterate: the solver only ever accepts steps that reduce the sum of squares.
     const GroundFace* f = residual.sensitiveFaceAt(theta);
-    evaluations += residual.cache.evaluations;
-    a.summary.unsolvableFaces += residual.cache.unsolvable;
+    countFaces();
     if (!f) {
       // No sensitivities at the estimate (its envelope equations are singular there): the estimate
       // before this round is kept (none in the first).
