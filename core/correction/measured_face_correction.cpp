@@ -13,6 +13,7 @@
 #include "machine_error.h"
 #include "structural_null_space.h"
 #include "number_text.h"
+#include "solve_report.h"
 #include "units.h"
 
 namespace hobsharp {
@@ -170,19 +171,18 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   auto after = predictedFace(grinding, runFace, c.axes, c.identifiedError, unexplained, at, !dressed);
   if (!after) return after.error();
   c.after = *after;
-  // Never a proposal worse than the run: the same axes again grind the face measured. (A run that
-  // holds moves the identification leaves out as amplifying, such as an earlier linear step's,
-  // is where this happens.)
-  // Within the noise: the measured sum of squares is what the probe's noise alone gives, to 3
-  // standard deviations of its chi-square (points * sigma² (1 + 3 sqrt(2 / points))). Then the
-  // verdict says to stop, and the axes run are kept: a change would only move noise.
-  const double points = std::max(1, runFace.size());
-  c.stop = c.before.sse <= points * o.probeNoise * o.probeNoise * (1 + 3 * std::sqrt(2 / points));
+  // Within the noise: the measured sum of squares is what the probe's noise alone gives
+  // (noiseCeiling). Then the verdict says to stop, and the axes run are kept: a change would only
+  // move noise.
+  c.stop = c.before.sse <= noiseCeiling(runFace.size(), o.probeNoise);
   if (c.stop) {
     c.axes = run;
     c.change.setZero();
     c.after = c.before;
   }
+  // Never a proposal worse than the run: the same axes again grind the face measured. (A run that
+  // holds moves the identification leaves out as amplifying, such as an earlier linear step's,
+  // is where this happens.)
   if (!c.stop && c.after.sse > c.before.sse) {
     c.runKept = true;
     c.discardedSse = c.after.sse;

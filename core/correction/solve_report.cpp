@@ -1,5 +1,6 @@
 #include "solve_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -59,10 +60,15 @@ void describeSolve(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Statu
   }
 }
 
+double noiseCeiling(int points, double sigma) {
+  const double n = std::max(1, points);
+  return n * sigma * sigma * (1 + 3 * std::sqrt(2 / n));
+}
+
 void judgeMisfit(LeastSquaresSummary& s, double misfit, int points, double sigma) {
   if (s.status != SolveStatus::Converged || points <= 0) return;
   const double n = points;
-  if (misfit <= n * sigma * sigma * (1 + 3 * std::sqrt(2 / n))) return;
+  if (misfit <= noiseCeiling(points, sigma)) return;
   std::ostringstream r;
   r.precision(2);
   r << "ended above the probe noise: " << std::sqrt(misfit / n) << " µm rms of the measured face is left (sigma "

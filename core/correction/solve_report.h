@@ -15,9 +15,13 @@ namespace hobsharp {
 void describeSolve(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Status st, int unsolvable,
                    const LeastSquaresOptions& o, const std::string& makes);
 
-// A solve that met a tolerance is "converged" only when the misfit left (µm²) is within the noise
-// floor of `points` values of the probe noise sigma (chi-square, 3 standard deviations); otherwise
-// it ended above the noise, and the reason says how much is left.
+// The largest sum of squares (µm²) the probe noise sigma alone gives over `points` values, to 3
+// standard deviations of its chi-square: points sigma² (1 + 3 sqrt(2 / points)).
+double noiseCeiling(int points, double sigma);
+
+// A solve that met a tolerance is "converged" only when the misfit left (µm²) is within the
+// noiseCeiling of `points` values of the probe noise sigma; otherwise it ended above the noise,
+// and the reason says how much is left.
 void judgeMisfit(LeastSquaresSummary& s, double misfit, int points, double sigma);
 
 }  // namespace hobsharp

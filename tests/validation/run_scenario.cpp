@@ -81,13 +81,17 @@ ScenarioOutcome runScenario(const Scenario& s) {
     }
     out.initialDenseRms = *r;
   }
+  // A pass the calculator refuses, or whose proposal cannot be judged, ends the scenario.
+  const auto refused = [&out](PassOutcome& p, std::string why) {
+    p.refused = true;
+    p.message = std::move(why);
+    out.passes.push_back(p);
+  };
   for (int pass = 0; pass < s.spec.passes; ++pass) {
     PassOutcome p;
     auto machine = machineJob(s, recorded);
     if (!machine) {
-      p.refused = true;
-      p.message = "the machine's wheel: " + machine.error().message;
-      out.passes.push_back(p);
+      refused(p, "the machine's wheel: " + machine.error().message);
       break;
     }
     auto ground = simulateGroundFace(machine->setup, plusError(run, s.error), machine->grid, Sensitivities::Skip);
@@ -109,9 +113,7 @@ ScenarioOutcome runScenario(const Scenario& s) {
     auto job = resolveJob(c);
     auto e = job ? evaluate(*job) : Outcome<Evaluation>(job.error());
     if (!e || !e->correction) {
-      p.refused = true;
-      p.message = e ? "no correction was computed" : e.error().message;
-      out.passes.push_back(p);
+      refused(p, e ? "no correction was computed" : e.error().message);
       break;
     }
     const Correction& k = *e->correction;
@@ -133,19 +135,15 @@ ScenarioOutcome runScenario(const Scenario& s) {
     }
     auto after = machineJob(s, next);
     if (!after) {
-      p.refused = true;
-      p.message = "the dressed wheel: " + after.error().message;
-      out.passes.push_back(p);
+      refused(p, "the dressed wheel: " + after.error().message);
       break;
     }
     auto probe = rmsOf(*after, k.axes, s.error, after->grid);
     auto denseRms = rmsOf(*after, k.axes, s.error, dense);
     auto rounded = rmsOf(*after, k.roundedAxes, s.error, dense);
     if (!probe || !denseRms || !rounded) {
-      p.refused = true;
-      p.message = "the proposed axes grind a face that cannot be simulated: " +
-                  (!probe ? probe.error() : !denseRms ? denseRms.error() : rounded.error()).message;
-      out.passes.push_back(p);
+      refused(p, "the proposed axes grind a face that cannot be simulated: " +
+                     (!probe ? probe.error() : !denseRms ? denseRms.error() : rounded.error()).message);
       break;
     }
     p.probeRms = *probe;
