@@ -74,6 +74,8 @@ struct Correction {
   double predictedNoisePart = 0, predictedUnseenPart = 0;  // the bound's shares, µm rms
   // The measured face is within the probe noise: another pass would only move noise.
   bool stop = false;
+  // The axes run are proposed unchanged (run kept, or stop): so is the wheel, with no dressing.
+  bool keepsRun() const { return runKept || stop; }
   // The axes run alone grind no face the wheel envelops (a pass after a large machine error): the
   // correction was linearised at the nominal axes instead, from the face measured.
   bool linearisedAtNominal = false;

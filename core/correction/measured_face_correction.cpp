@@ -191,7 +191,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.after = c.before;
   }
   c.roundedAxes = roundAsProgrammed(c.axes, o.resolution, setup.face.helical());
-  const bool dressing = dressed && !c.runKept;  // a run kept keeps its wheel as well as its axes
+  const bool dressing = dressed && !c.keepsRun();  // a run kept keeps its wheel as well as its axes
   auto rounded = predictedFace(dressing ? *dressed : setup, runFace, c.roundedAxes, c.identifiedError, unexplained, at,
                                !dressing);
   if (!rounded) return rounded.error();
@@ -225,7 +225,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   }
   {
     const FacePrediction p =
-        predictFace(setup, c.runKept || !dressing ? setup : *dressed, run, runFace, c, unexplained, o.probeNoise);
+        predictFace(setup, dressing ? *dressed : setup, run, runFace, c, unexplained, o.probeNoise);
     c.predictedRms = p.rms;
     c.predictedRmsHigh = p.rmsHigh;
     c.predictedNoisePart = p.noisePart;

@@ -70,7 +70,7 @@ Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup
   w.used = estimate->wheelUsed;
   w.withinNoise = estimate->wheelWithinNoise;
   w.amplifying = estimate->wheelAmplifying;
-  const Eigen::VectorXd dress = c.runKept ? Eigen::VectorXd::Zero(K) : Eigen::VectorXd(-estimate->deviation - current);
+  const Eigen::VectorXd dress = c.keepsRun() ? Eigen::VectorXd::Zero(K) : Eigen::VectorXd(-estimate->deviation - current);
   for (int k = 0; k < dress.size(); ++k) {
     w.deviation.push_back(estimate->deviation(k));
     w.offset.push_back(dress(k));
@@ -92,7 +92,7 @@ Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup
     w.axesShare = std::clamp((sse0 - afterAxes) / sse0, 0.0, 1.0);
     w.wheelShare = std::clamp((afterAxes - c.after.sse) / sse0, 0.0, 1.0);
   }
-  if (!c.runKept && !c.stop && !c.linearisedAtNominal &&
+  if (!c.keepsRun() && !c.linearisedAtNominal &&
       (c.summary.status == SolveStatus::Converged || c.summary.status == SolveStatus::AboveNoise))
     out.correction.verdict = verdictOf(c, w, o, runFace.grid.size());
   return out;
