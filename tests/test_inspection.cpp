@@ -14,6 +14,7 @@
 #include "face_checks.h"
 #include "gash_faces.h"
 #include "gash_spacing.h"
+#include "hand_built_face.h"
 #include "index_correction.h"
 #include "inspection.h"
 #include "result_model.h"
@@ -108,69 +109,6 @@ TEST(Inspection, ARakeErrorFaceIsReadBackAsItsRakeError) {
   EXPECT_NEAR(c.radialAlignment, -50 * (1 - lines.alongLine.front() / lines.alongLine.back()), 1e-9);
 }
 
-// Hand-built faces (docs/inspection.md, "Radial alignment"): the actual face is Eq. 2's face with the
-// rake offset e + u, turned by theta about the hob axis. Its normal deviations on the grid come
-// from intersecting each nominal grid point's normal with it; the standard's reading from plane
-// geometry in each transverse plane (the reference line is the nominal line turned through the
-// actual face's tip point, and the indicator reads the actual line's distance across it). Neither
-// uses FaceLines.
-Eigen::Vector3d turned(const Eigen::Vector3d& p, double angle) { return rotateX(p, std::cos(angle), std::sin(angle)); }
-
-struct HandBuiltFace {
-  ToothFace face;  // the actual face before the turn
-  double theta = 0;
-
-  Eigen::Vector3d point(double u, double w) const {
-    return turned(face.point(u, w), theta);
-  }
-};
-
-// The normal deviation (µm) of the hand-built face at a nominal grid point: p + t n on it.
-double normalDeviation(const HandBuiltFace& a, const GridPoint& g) {
-  Eigen::Vector3d z(g.u, g.w, 0);  // u, w of the actual face, t
-  for (int it = 0; it < 50; ++it) {
-    auto residual = [&](const Eigen::Vector3d& v) { return Eigen::Vector3d(a.point(v(0), v(1)) - g.p - v(2) * g.n); };
-    const Eigen::Vector3d f = residual(z);
-    if (f.norm() < 1e-12) break;
-    Eigen::Matrix3d J;
-    for (int k = 0; k < 3; ++k) {
-      Eigen::Vector3d h = Eigen::Vector3d::Zero();
-      h(k) = 1e-7 * (k == 1 && a.face.helical() ? 1e-2 : 1);
-      J.col(k) = (residual(z + h) - residual(z - h)) / (2 * h(k));
-    }
-    z -= J.colPivHouseholderQr().solve(f);
-  }
-  return z(2) * 1e3;
-}
-
-// The standard's reading (µm) at radius r in the transverse plane at axial position x.
-double standardReading(const SharpeningSetup& nominal, const HandBuiltFace& a, double rTip, double r, double x) {
-  const ToothFace& f = nominal.face;
-  auto polar = [](const Eigen::Vector3d& p) { return std::atan2(p.z(), p.y()); };
-  auto line = [](double u0, double u1, auto point) { return std::pair{point(u0), point(u1)}; };
-  // The actual line in the plane, by two of its points (Eq. 2 at fixed w is a straight line).
-  const double w = a.face.wAtAxial(x);
-  const auto [a0, a1] = line(-10, 10, [&](double u) { return a.point(u, w); });
-  // Its point at the tip radius: on the line a0 + t (a1 - a0), |.|^2 = rTip^2 in the plane.
-  const Eigen::Vector2d p0(a0.y(), a0.z()), dv(a1.y() - a0.y(), a1.z() - a0.z());
-  const double qa = dv.squaredNorm(), qb = 2 * p0.dot(dv), qc = p0.squaredNorm() - rTip * rTip;
-  const double t = (-qb + std::sqrt(qb * qb - 4 * qa * qc)) / (2 * qa);
-  const Eigen::Vector2d tip = p0 + t * dv;
-  // The reference: the nominal line turned through the actual tip point.
-  const GridPoint gTip = gridPoint(nominal, rTip, x), g = gridPoint(nominal, r, x);
-  const double phi = std::atan2(tip.y(), tip.x()) - polar(gTip.p);
-  const Eigen::Vector3d q3 = turned(g.p, phi), n3 = turned(g.n, phi);
-  const Eigen::Vector3d along3 = turned(f.point(g.u + 1.0, g.w) - g.p, phi);
-  Eigen::Vector2d across(-along3.z(), along3.y());
-  across.normalize();
-  if (across.dot(Eigen::Vector2d(n3.y(), n3.z())) < 0) across = -across;  // plus = outward, excess material
-  // From q across the reference line to the actual line: q + s across = p0 + t dv.
-  Eigen::Matrix2d m;
-  m << across, -dv;
-  const Eigen::Vector2d st = m.colPivHouseholderQr().solve(p0 - Eigen::Vector2d(q3.y(), q3.z()));
-  return st(0) * 1e3;
-}
-
 struct HandBuiltCase {
   const char* name;
   CaseInput input;
@@ -202,23 +140,9 @@ TEST(Inspection, HandBuiltFacesGiveTheStandardsReadingWithin10Percent) {
     const FaceLines lines = FaceLines::of(job.setup, job.grid);
     const double rTip = job.grid.r.back();
     for (const Fault err : {Fault{0.08, 0}, Fault{0, 4e-4}, Fault{0.08, 4e-4}, Fault{-0.1, -4e-4}}) {
-      HandBuiltFace a{job.setup.face, err.theta};
-      // Eq. 2's offset e moves the line along (-sin beta, cos beta) in (y, z) (beta = 0 on a straight
-      // gash): e grows by u or -u, whichever moves the face out of the tooth (along its outward normal).
-      const GridPoint pitch = gridPoint(job.setup, job.setup.face.pitchRadius, 0);
-      const double beta = job.setup.face.helical() ? pitch.w : 0;
-      const double towardNormal = pitch.n.z() * std::cos(beta) - pitch.n.y() * std::sin(beta) > 0 ? 1 : -1;
-      a.face.rakeOffset += towardNormal * err.u;
-      Eigen::MatrixXd normal(job.grid.rows(), job.grid.cols());
-      double expected = 0;
-      for (int i = 0; i < job.grid.rows(); ++i) {
-        for (int j = 0; j < job.grid.cols(); ++j) {
-          normal(i, j) = normalDeviation(a, gridPoint(job.setup, job.grid.r[i], job.grid.x[j]));
-          const double reading = standardReading(job.setup, a, rTip, job.grid.r[i], job.grid.x[j]);
-          if (std::abs(reading) > std::abs(expected)) expected = reading;
-        }
-      }
-      const FaceChecks got = checkFace(normal, lines, job.setup.face.helical());
+      const test::HandBuiltInspection hand = test::handBuiltInspection(job.setup, job.grid, err.u, err.theta);
+      const double expected = hand.reading;
+      const FaceChecks got = checkFace(hand.normal, lines, job.setup.face.helical());
       const std::string what = std::string(c.name) + ", u = " + std::to_string(err.u) + " mm, theta = " + std::to_string(err.theta);
       if (err.u == 0) {
         // A turn alone: the standard reads (nearly) nothing, and so does the check.
