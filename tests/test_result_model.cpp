@@ -58,9 +58,9 @@ TEST(ResultModel, FieldPathsAreUniqueAndOptionalOnesSayWhen) {
     const bool optionalInspection =
         f.path.rfind("inspection.after.", 0) == 0 || f.path.rfind("inspection.checks.gashLead.", 0) == 0 ||
         f.path.rfind("inspection.checks.adjacentSpacing.", 0) == 0 ||
-        f.path.rfind("inspection.checks.cumulativeSpacing.", 0) == 0 || f.path == "inspection.gashLead" ||
-        f.path == "inspection.adjacentSpacing" || f.path == "inspection.cumulativeSpacing" ||
-        f.path == "inspection.spacing.adjacent" || f.path == "inspection.indexCorrection" ||
+        f.path.rfind("inspection.checks.pitchJump.", 0) == 0 || f.path == "inspection.gashLead" ||
+        f.path == "inspection.adjacentSpacing" || f.path == "inspection.pitchJump" || f.path == "inspection.cumulativeSpacing" ||
+        f.path == "inspection.spacing.adjacent" || f.path == "inspection.spacing.pitchJump" || f.path == "inspection.indexCorrection" ||
         f.path == "inspection.indexCorrectionDeg" || f.path.rfind("inspection.perGash.", 0) == 0;
     const bool wheelOffset = f.path.rfind("wheelOffset.", 0) == 0 || f.path == "wheelProfile.offset" ||
                              f.path == "wheelProfile.dressedR" || f.path == "wheelProfile.dressedZ";
@@ -74,7 +74,9 @@ TEST(ResultModel, FieldPathsAreUniqueAndOptionalOnesSayWhen) {
   EXPECT_EQ(paths.count("correction.residual"), 1u);
   for (const char* p : {"inspection.radialAlignment", "inspection.cuttingFaceForm", "inspection.gashLead",
                         "inspection.class", "inspection.limitingCheck", "inspection.checks.radialAlignment.tolerances",
-                        "inspection.after.class"})
+                        "inspection.after.class", "inspection.pitchJump", "inspection.uncertainty", "inspection.provenClass",
+                        "inspection.conformity", "inspection.rakeAngle", "inspection.rakeOffset",
+                        "inspection.checks.radialAlignment.conformity", "gearEffect.rakeErrorPressureAngle"})
     EXPECT_EQ(paths.count(p), 1u) << p;
 }
 

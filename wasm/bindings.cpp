@@ -14,6 +14,7 @@
 #include "case_json.h"
 #include "default_tolerances.h"
 #include "gash_spacing.h"
+#include "inspection_input.h"
 #include "result_model.h"
 
 namespace hobsharp {
@@ -178,10 +179,31 @@ val inspectionLimits() {
     }
     if (!any) continue;
     rows.set("source", std::string(defaultToleranceSource(c)));
+    // Where the data file marks its cells "printed" or "series", and the series' source: as the
+    // file has them, so that a table edited on the page keeps the marks of the cells not edited.
+    if (*defaultSeriesSource(c)) rows.set("seriesSource", std::string(defaultSeriesSource(c)));
+    val confidence = val::object();
+    bool marked = false;
+    for (ToleranceClass k : kClasses) {
+      const auto& words = t.confidence[static_cast<int>(c)][static_cast<int>(k)];
+      if (words.empty()) continue;
+      val row = val::array();
+      for (Confidence w : words) row.call<void>("push", std::string(confidenceName(w)));
+      confidence.set(className(k), row);
+      marked = true;
+    }
+    if (marked) rows.set("confidence", confidence);
     byCheck.set(checkName(c), rows);
   }
   table.set("checks", byCheck);
   o.set("defaultTolerances", table);
+  // The measurement's uncertainty U95 (inspection.uncertainty): its default and range.
+  val uncertainty = val::object();
+  uncertainty.set("default", InspectionInput::kDefaultUncertainty);
+  uncertainty.set("min", 0);
+  uncertainty.set("max", InspectionInput::kLargestUncertainty);
+  uncertainty.set("unit", std::string("µm"));
+  o.set("uncertainty", uncertainty);
   return o;
 }
 

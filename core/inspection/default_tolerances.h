@@ -12,5 +12,7 @@ const ToleranceTable& defaultToleranceTable();
 
 // Where the default table's values of a check come from ("" when it has none).
 const char* defaultToleranceSource(Check check);
+// Where its values marked "series" come from ("" when it has none).
+const char* defaultSeriesSource(Check check);
 
 }  // namespace hobsharp

@@ -22,16 +22,18 @@ double deviationAtRadius(const Eigen::MatrixXd& normal, const std::vector<double
   return y.mean() + slope * (radius - t.mean());
 }
 
-GashFaces inspectGashFaces(const std::vector<Eigen::MatrixXd>& gashes, const std::vector<double>& r,
-                           const std::vector<double>& x, bool helical, double pitchRadius) {
+GashFaces inspectGashFaces(const std::vector<Eigen::MatrixXd>& gashes, const FaceLines& lines, bool helical,
+                           double pitchRadius) {
   GashFaces out;
   if (helical) out.worst.gashLead = 0.0;
   for (const Eigen::MatrixXd& g : gashes) {
-    out.deviations.push_back(deviationAtRadius(g, r, pitchRadius));
-    const FaceChecks f = checkFace(g, r, x, helical);
+    out.deviations.push_back(deviationAtRadius(g, lines.r, pitchRadius));
+    const FaceChecks f = checkFace(g, lines, helical);
     out.faces.push_back(f);
     out.worst.cuttingFaceForm = std::max(out.worst.cuttingFaceForm, f.cuttingFaceForm);
     keepLargest(out.worst.radialAlignment, f.radialAlignment);
+    keepLargest(out.worst.rakeOffset, f.rakeOffset);
+    keepLargest(out.worst.rakeAngle, f.rakeAngle);
     if (f.gashLead) keepLargest(*out.worst.gashLead, *f.gashLead);
   }
   return out;

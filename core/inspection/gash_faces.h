@@ -16,13 +16,13 @@ namespace hobsharp {
 struct GashFaces {
   std::vector<double> deviations;  // µm at the pitch radius, gash 1 .. z
   std::vector<FaceChecks> faces;   // gash 1 .. z
-  FaceChecks worst;                // the largest form; alignment and lead of largest magnitude, signed
+  FaceChecks worst;                // the largest form; alignment, rake error and lead of largest magnitude, signed
 };
 
 // `normal` in µm, rows at radii r (mm, root to tip).
 double deviationAtRadius(const Eigen::MatrixXd& normal, const std::vector<double>& r, double radius);
 
-GashFaces inspectGashFaces(const std::vector<Eigen::MatrixXd>& gashes, const std::vector<double>& r,
-                           const std::vector<double>& x, bool helical, double pitchRadius);
+GashFaces inspectGashFaces(const std::vector<Eigen::MatrixXd>& gashes, const FaceLines& lines, bool helical,
+                           double pitchRadius);
 
 }  // namespace hobsharp

@@ -15,6 +15,11 @@ GashSpacing gashSpacing(const std::vector<double>& d) {
     s.adjacent.push_back(step);
     if (std::abs(step) > std::abs(s.adjacentLargest)) s.adjacentLargest = step;
   }
+  for (std::size_t k = 0; k < z; ++k) {
+    const double jump = s.adjacent[k] - s.adjacent[(k + z - 1) % z];
+    s.pitchJump.push_back(jump);
+    if (std::abs(jump) > std::abs(s.pitchJumpLargest)) s.pitchJumpLargest = jump;
+  }
   const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
   s.cumulative = *hi - *lo;
   return s;

@@ -8,7 +8,18 @@ const char* checkName(Check check) {
     case Check::RadialAlignment: return "radialAlignment";
     case Check::GashLead: return "gashLead";
     case Check::AdjacentSpacing: return "adjacentSpacing";
-    case Check::CumulativeSpacing: return "cumulativeSpacing";
+    case Check::PitchJump: return "pitchJump";
+  }
+  return "";
+}
+
+const char* checkWords(Check check) {
+  switch (check) {
+    case Check::CuttingFaceForm: return "cutting-face form";
+    case Check::RadialAlignment: return "radial alignment";
+    case Check::GashLead: return "gash lead";
+    case Check::AdjacentSpacing: return "single pitch (adjacent spacing)";
+    case Check::PitchJump: return "pitch jump";
   }
   return "";
 }
@@ -30,6 +41,25 @@ const char* gradeName(Grade g) {
     case Grade::NotGraded: return "not graded";
     default: return className(static_cast<ToleranceClass>(static_cast<int>(g)));
   }
+}
+
+const char* confidenceName(Confidence c) {
+  switch (c) {
+    case Confidence::Printed: return "printed";
+    case Confidence::Series: return "series";
+    case Confidence::Entered: return "entered";
+  }
+  return "";
+}
+
+const char* conformityName(Conformity c) {
+  switch (c) {
+    case Conformity::Conforms: return "conforms";
+    case Conformity::DoesNotConform: return "does not conform";
+    case Conformity::Undecided: return "undecided";
+    case Conformity::NotGraded: return "not graded";
+  }
+  return "";
 }
 
 }  // namespace hobsharp

@@ -1,9 +1,11 @@
 #include "inspection_input.h"
 
+#include <cmath>
 #include <string>
 
 #include "default_tolerances.h"
 #include "gash_spacing.h"
+#include "number_text.h"
 
 namespace hobsharp {
 
@@ -20,6 +22,9 @@ Outcome<void> checkInspectionInput(const InspectionInput& in) {
                                                       " of them; got " + std::to_string(in.gashTopographies.size()) + ".");
   if (!in.gashDeviations.empty())
     if (auto r = checkGashDeviations(in.gashDeviations, "inspection.gashDeviations"); !r) return r;
+  if (!std::isfinite(in.uncertainty) || in.uncertainty < 0 || in.uncertainty > InspectionInput::kLargestUncertainty)
+    return refuse("inspection.uncertainty", "must be the measurement's uncertainty U95 in µm, 0 to 100; got " +
+                                                numberText(in.uncertainty) + " µm.");
   if (in.tolerances)
     if (auto r = checkToleranceTable(*in.tolerances, "inspection.tolerances"); !r) return r;
   return success();

@@ -18,6 +18,10 @@ struct InspectionInput {
   // One measured topography per gash, gash 1 .. z (µm, the grid's shape), instead of gashDeviations
   // (gash_faces.h); their shape is checked against the grid by resolveJob().
   std::vector<Eigen::MatrixXd> gashTopographies;
+  // The measurement's expanded uncertainty U95 of a reading, µm (ISO 14253-1; docs/inspection.md).
+  double uncertainty = kDefaultUncertainty;
+  static constexpr double kDefaultUncertainty = 2;  // µm: a shop-floor gear measuring machine
+  static constexpr double kLargestUncertainty = 100;  // µm
 };
 
 // The table the inspection grades by: the case's, or the default one.

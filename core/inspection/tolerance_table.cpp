@@ -17,6 +17,19 @@ std::optional<double> ToleranceTable::at(Check check, ToleranceClass c, int band
   return row[band];
 }
 
+Confidence ToleranceTable::confidenceAt(Check check, ToleranceClass c, int band) const {
+  const auto& row = confidence[static_cast<int>(check)][static_cast<int>(c)];
+  if (band < 0 || band >= static_cast<int>(row.size())) return fallback;
+  return row[band];
+}
+
+std::optional<ToleranceClass> ToleranceTable::loosest(Check check, int band) const {
+  std::optional<ToleranceClass> out;
+  for (ToleranceClass c : kClasses)
+    if (at(check, c, band)) out = c;
+  return out;
+}
+
 std::optional<int> moduleBand(const ToleranceTable& table, double normalModule) {
   for (int b = 0; b < table.bands(); ++b)
     if (normalModule > table.moduleEdges[b] && normalModule <= table.moduleEdges[b + 1]) return b;

@@ -19,9 +19,15 @@ struct ToleranceTable {
   // Per check and class, one tolerance per band in µm (a ± value is its magnitude); an empty list
   // where the table has no row for that class, an empty cell where it has no value.
   std::array<std::array<std::vector<std::optional<double>>, kClassCount>, kCheckCount> cells;
+  // Per cell, where its value comes from; empty rows (or cells past a row's end) are `fallback`'s.
+  std::array<std::array<std::vector<Confidence>, kClassCount>, kCheckCount> confidence;
+  Confidence fallback = Confidence::Entered;
 
   int bands() const { return moduleEdges.size() < 2 ? 0 : static_cast<int>(moduleEdges.size()) - 1; }
   std::optional<double> at(Check check, ToleranceClass c, int band) const;
+  Confidence confidenceAt(Check check, ToleranceClass c, int band) const;
+  // The loosest class with a value in the band (the one "outside" refers to), if any.
+  std::optional<ToleranceClass> loosest(Check check, int band) const;
 };
 
 // The band of a normal module, or empty when the table's bands do not reach it.

@@ -455,6 +455,31 @@ Outcome<CorrectionInput> readCorrection(const Node& c) {
   return out;
 }
 
+// A check's `confidence` (docs/inspection.md): per class, per band "printed" or "series" as the
+// default table marks them, or "entered"; cells it leaves out are the engineer's ("entered").
+Outcome<void> readConfidence(const Node& check, std::array<std::vector<Confidence>, kClassCount>& out) {
+  auto c = check.object("confidence", false);
+  if (!c) return c.error();
+  const Json* given = check.find("confidence");
+  if (!given) return success();
+  HOBSHARP_TRY(c->onlyKnown({"AA", "A", "B", "C", "D"}));
+  for (ToleranceClass k : kClasses) {
+    const Json* row = c->find(className(k));
+    if (!row) continue;
+    const std::string field = c->field(className(k));
+    if (!row->is_array()) return refuse(field, std::string("must be a list of \"printed\", \"series\" or \"entered\", one per module band; got ") + typeName(*row) + ".");
+    for (std::size_t b = 0; b < row->size(); ++b) {
+      const Json& w = (*row)[b];
+      const std::string word = w.is_string() ? w.get<std::string>() : "";
+      if (word == "printed") out[static_cast<int>(k)].push_back(Confidence::Printed);
+      else if (word == "series") out[static_cast<int>(k)].push_back(Confidence::Series);
+      else if (word == "entered") out[static_cast<int>(k)].push_back(Confidence::Entered);
+      else return refuse(field + "[" + std::to_string(b) + "]", "must be \"printed\", \"series\" or \"entered\".");
+    }
+  }
+  return success();
+}
+
 // The tolerance table (`inspection.tolerances`), in the shape of data/din3968-cutting-face.json:
 // {"moduleBands": [edges], "checks": {"<check>": {"source": "...", "AA": [per band, a number or
 // null], ..}}}, with the data file's "format", "title" and "missing" allowed as notes. The values'
@@ -482,14 +507,20 @@ Outcome<ToleranceTable> readToleranceTable(const Node& t) {
   }
   auto checks = t.object("checks", true);
   if (!checks) return checks.error();
-  HOBSHARP_TRY(checks->onlyKnown({"cuttingFaceForm", "radialAlignment", "gashLead", "adjacentSpacing", "cumulativeSpacing"}));
+  if (checks->find("cumulativeSpacing"))
+    return refuse(checks->field("cumulativeSpacing"),
+                  "is no longer graded: DIN 3968 item 9 (f_uN) is the pitch jump, the difference between two consecutive "
+                  "single pitch deviations; give its tolerances as pitchJump.");
+  HOBSHARP_TRY(checks->onlyKnown({"cuttingFaceForm", "radialAlignment", "gashLead", "adjacentSpacing", "pitchJump"}));
   for (Check check : kChecks) {
     if (!checks->find(checkName(check))) continue;
     auto c = checks->object(checkName(check), true);
     if (!c) return c.error();
-    HOBSHARP_TRY(c->onlyKnown({"source", "AA", "A", "B", "C", "D"}));
-    if (const Json* source = c->find("source"))
-      if (!source->is_string()) return refuse(c->field("source"), std::string("must be a string; got ") + typeName(*source) + ".");
+    HOBSHARP_TRY(c->onlyKnown({"source", "seriesSource", "confidence", "AA", "A", "B", "C", "D"}));
+    for (const char* note : {"source", "seriesSource"})
+      if (const Json* source = c->find(note))
+        if (!source->is_string()) return refuse(c->field(note), std::string("must be a string; got ") + typeName(*source) + ".");
+    HOBSHARP_TRY(readConfidence(*c, table.confidence[static_cast<int>(check)]));
     for (ToleranceClass k : kClasses) {
       const Json* row = c->find(className(k));
       if (!row) continue;
@@ -530,8 +561,9 @@ Outcome<std::vector<MeasuredPoint>> readMeasuredPoints(const Json& p, const std:
 
 // `inspection`: per-gash deviations and an edited tolerance table (docs/case-format.md).
 Outcome<InspectionInput> readInspection(const Node& n) {
-  HOBSHARP_TRY(n.onlyKnown({"gashDeviations", "gashTopographies", "tolerances"}));
+  HOBSHARP_TRY(n.onlyKnown({"gashDeviations", "gashTopographies", "tolerances", "uncertainty"}));
   InspectionInput out;
+  if (const Json* u = n.find("uncertainty")) HOBSHARP_ASSIGN(out.uncertainty, Node::toNumber(*u, n.field("uncertainty")));
   if (const Json* d = n.find("gashDeviations")) {
     if (!d->is_array() || d->empty())
       return refuse(n.field("gashDeviations"), "must be a list of deviations in µm, one per gash, such as [0, 2.5, -1].");

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "case_json.h"
+#include "default_tolerances.h"
 #include "inspection_input.h"
 #include "units.h"
 
@@ -169,17 +170,27 @@ const char* checkUnit(Check c) { return c == Check::GashLead ? "µm per 100 mm" 
 // What a check applies to: every face, a helical gash, or per-gash deviations.
 const char* checkWhen(Check c) {
   if (c == Check::GashLead) return kHelicalOnly;
-  if (c == Check::AdjacentSpacing || c == Check::CumulativeSpacing) return kWithGashes;
+  if (c == Check::AdjacentSpacing || c == Check::PitchJump) return kWithGashes;
   return "";
 }
 
-// The class verdict of an inspection: its class, the check that limits it.
-void verdict(ResultVisitor& v, const Inspection& in, const std::string& prefix, const char* when) {
+// The class verdict of an inspection: its class, the check that limits it, and (measured, not
+// predicted) the class the measurement proves with its uncertainty taken off (ISO 14253-1).
+void verdict(ResultVisitor& v, const Inspection& in, const std::string& prefix, const char* when, bool proven) {
   const std::string klass = prefix + "class", limiting = prefix + "limitingCheck";
-  v.text({klass.c_str(), "", "\"AA\" .. \"D\", \"outside D\", or \"not graded\" (no check has a tolerance for the module): the worst graded check's class", when},
-         gradeName(in.grade));
+  v.text({klass.c_str(), "", "\"AA\" .. \"D\", \"outside D\" (\"outside B\" where the table stops at B), or \"not graded\" (no check has a tolerance for the module): the worst graded check's class, without the measurement's uncertainty", when},
+         classText(in));
   v.text({limiting.c_str(), "", "the check that sets the class (\"\" when not graded)", when},
          in.limiting ? checkName(*in.limiting) : "");
+  if (!proven) return;
+  v.text({"inspection.provenClass", "", "the class the measurement proves (ISO 14253-1): every graded check within its tolerance less inspection.uncertainty; \"none\" when no class is proven, \"not graded\" when nothing is graded"},
+         in.grade == Grade::NotGraded ? std::string("not graded") : provenText(in.proven));
+  v.text({"inspection.conformity", "", "of every graded check to inspection.class (ISO 14253-1): \"conforms\" (within the tolerance less U), \"does not conform\" (beyond it plus U), \"undecided\" (within U of it), \"not graded\""},
+         conformityName(in.conformity));
+  std::string warning;
+  for (Check c : in.uncertaintyAboveTenth) warning += (warning.empty() ? "" : ", ") + std::string(checkName(c));
+  v.text({"inspection.uncertaintyWarning", "", "the graded checks whose uncertainty U exceeds a tenth of the tolerance they are graded by (\"\" when none): their class rests on a measurement too coarse for it"},
+         warning);
 }
 
 // A correction at measuredPoints off the grid (README, "Measured points"): per point [r, x, µm],
@@ -216,10 +227,16 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
   v.text({"inspection.moduleBand", "", "the normal-module band of the tolerance table the checks are graded in"}, band);
   v.number({"inspection.moduleBandIndex", "", "that band's place in the tolerance table: band b holds the normal modules over moduleBands[b] up to and including moduleBands[b + 1]; -1 outside the table"},
            in.band ? *in.band : -1);
-  v.number({"inspection.cuttingFaceForm", "µm", "cutting-face form deviation: spread about the straight line fitted root to tip, largest over the axial lines"},
+  v.number({"inspection.uncertainty", "µm", "the measurement's expanded uncertainty U95 of a reading (the case's inspection.uncertainty, 2 µm when not given)"},
+           in.uncertainty.deviation);
+  v.number({"inspection.cuttingFaceForm", "µm", "cutting-face form deviation: spread of the normal deviation about its straight line fitted root to tip, largest over the axial lines"},
            in.face.cuttingFaceForm);
-  v.number({"inspection.radialAlignment", "µm", "radial alignment deviation: rise of that line from root to tip (plus = more material at the tip), largest magnitude over the axial lines, signed"},
+  v.number({"inspection.radialAlignment", "µm", "radial alignment (form and position of the cutting face) as DIN 3968 measures it: in the plane square to the hob axis, an indicator run along the nominal face line (the radial line on a zero-rake hob, else the line at the rake offset e) turned about the hob axis through the face's tip point, zeroed at the tip (the grid's outermost row) and run down to the root; its reading of largest magnitude, signed (plus = the face stands out of the line, excess material), largest over the axial lines"},
            in.face.radialAlignment);
+  v.number({"inspection.rakeAngle", "arc-min", "the rake error as an angle at the tip (the grid's outermost row): how far the face's rake angle differs from the nominal, inspection.rakeOffset over sqrt(r_tip^2 - e^2) (plus = hook, a positive rake error; minus = drag)"},
+           in.face.rakeAngle * kDegPerRad * 60);
+  v.number({"inspection.rakeOffset", "mm", "the same as a rake offset: how far the face line lies moved into the tooth, parallel to itself (plus = hook, material taken off; minus = drag), mean over the axial lines"},
+           in.face.rakeOffset);
   if (in.face.gashLead || every)
     v.number({"inspection.gashLead", "µm per 100 mm", "gash lead deviation: slope of the deviation along the hob axis, largest magnitude over the radial lines, signed", kHelicalOnly},
              in.face.gashLead.value_or(0));
@@ -228,12 +245,16 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
     static const IndexCorrection kNoIndex;
     const GashSpacing& sp = in.spacing ? *in.spacing : kNoSpacing;
     const IndexCorrection& ic = e.indexCorrection ? *e.indexCorrection : kNoIndex;
-    v.number({"inspection.adjacentSpacing", "µm", "adjacent spacing deviation of the cutting faces at the pitch radius: largest magnitude, signed", kWithGashes},
+    v.number({"inspection.adjacentSpacing", "µm", "single pitch deviation of the cutting faces f_tN (DIN 3968 item 8) at the pitch radius: largest magnitude, signed", kWithGashes},
              sp.adjacentLargest);
-    v.number({"inspection.cumulativeSpacing", "µm", "cumulative spacing deviation: largest minus smallest gash deviation", kWithGashes},
+    v.number({"inspection.pitchJump", "µm", "pitch jump f_uN (DIN 3968 item 9): the difference between two consecutive single pitch deviations, largest magnitude, signed", kWithGashes},
+             sp.pitchJumpLargest);
+    v.number({"inspection.cumulativeSpacing", "µm", "cumulative spread of the cutting faces: largest minus smallest gash deviation (information; no table row grades it)", kWithGashes},
              sp.cumulative);
     numbers(v, {"inspection.spacing.adjacent", "µm", "per gash k: gash k+1's deviation minus gash k's (the last: gash 1's minus gash z's)", kWithGashes},
             sp.adjacent);
+    numbers(v, {"inspection.spacing.pitchJump", "µm", "per pitch k: its single pitch deviation minus pitch k-1's (pitch 1's minus pitch z's)", kWithGashes},
+            sp.pitchJump);
     std::vector<double> micro, degrees;
     for (double a : ic.angle) micro.push_back(a * 1e6);
     for (double a : ic.rounded) degrees.push_back(a * kDegPerRad);
@@ -258,7 +279,17 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
     if (helical || every)
       numbers(v, {"inspection.perGash.gashLead", "µm per 100 mm", "per gash: its gash lead deviation (helical gash only)", kWithGashTopographies}, lead);
   }
-  verdict(v, in, "inspection.", "");
+  verdict(v, in, "inspection.", "", true);
+  std::string notGraded;
+  for (const CheckResult& c : in.checks)
+    if (c.grade == Grade::NotGraded) notGraded += (notGraded.empty() ? "" : ", ") + std::string(checkWords(c.check));
+  if (!notGraded.empty())
+    notGraded = "Not graded: " + notGraded + " (the tolerance table has no value for " +
+                (in.band ? "the module band " + band : std::string("this module: it is outside the table's module bands")) +
+                "). Enter the hob maker's tolerances in the tolerance table; the case keeps them.";
+  v.text({"inspection.notGraded", "", "the checks without a tolerance in the module band and what to enter (\"\" when every check is graded)"},
+         notGraded);
+  const bool ownTable = e.job.input.inspection.tolerances.has_value();
   for (Check c : kChecks) {
     const CheckResult* r = in.find(c);
     if (!r && !every) continue;
@@ -267,8 +298,22 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
     const std::string base = std::string("inspection.checks.") + checkName(c) + ".";
     const std::string value = base + "value", grade = base + "grade", classes = base + "classes", tolerances = base + "tolerances";
     v.number({value.c_str(), checkUnit(c), "the check's value, as the field inspection.<check> gives it", checkWhen(c)}, cr.value);
-    v.text({grade.c_str(), "", "its grade: \"AA\" .. \"D\", \"outside D\" or \"not graded\" (the table has no tolerance for the module)", checkWhen(c)},
-           gradeName(cr.grade));
+    v.text({grade.c_str(), "", "its grade: \"AA\" .. \"D\", \"outside D\" (\"outside B\" where the table stops at B) or \"not graded\" (the table has no tolerance for the module)", checkWhen(c)},
+           gradeText(cr.grade, cr.loosest));
+    const std::string conformity = base + "conformity", proven = base + "provenGrade", confidence = base + "confidence",
+                      source = base + "source", uncertainty = base + "uncertainty";
+    v.text({conformity.c_str(), "", "ISO 14253-1, to the class graded (to the loosest class when outside it): \"conforms\", \"does not conform\", \"undecided\" (within U of the limit) or \"not graded\"", checkWhen(c)},
+           conformityName(cr.conformity));
+    v.text({proven.c_str(), "", "the tightest class whose tolerance less U holds the value: the class the measurement proves (\"none\", \"not graded\")", checkWhen(c)},
+           cr.grade == Grade::NotGraded ? std::string("not graded") : provenText(cr.proven));
+    v.text({confidence.c_str(), "", "where the tolerance the grade rests on comes from: \"printed\" (in the source named), \"series\" (filled from the series the source prints for other rows; not confirmed) or \"entered\" (the case's own table); \"\" when not graded", checkWhen(c)},
+           cr.grade == Grade::NotGraded ? "" : confidenceName(cr.confidence));
+    const std::string printed = ownTable ? "the case's own table (inspection.tolerances)" : defaultToleranceSource(c);
+    const std::string series = ownTable ? "" : defaultSeriesSource(c);
+    v.text({source.c_str(), "", "the source of the table's values for the check (and of its series values, after \"; \"); \"\" when the table has none", checkWhen(c)},
+           series.empty() ? printed : printed + "; " + series);
+    v.number({uncertainty.c_str(), checkUnit(c), "U in the check's unit: inspection.uncertainty, for the gash lead scaled from the axial length measured to 100 mm", checkWhen(c)},
+             cr.uncertainty);
     std::vector<std::string> names;
     for (ToleranceClass k : cr.classes) names.push_back(className(k));
     v.texts({classes.c_str(), "", "the classes with a tolerance in the module band, tightest first", checkWhen(c)}, names);
@@ -288,16 +333,17 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
   if (gashes || every) {
     static const GashSpacing kNoSpacing;
     const GashSpacing& sp = after.spacing ? *after.spacing : kNoSpacing;
-    v.number({"inspection.after.adjacentSpacing", "µm", "adjacent spacing predicted after running inspection.indexCorrectionDeg", kWithGashes}, sp.adjacentLargest);
-    v.number({"inspection.after.cumulativeSpacing", "µm", "cumulative spacing predicted after running inspection.indexCorrectionDeg", kWithGashes}, sp.cumulative);
+    v.number({"inspection.after.adjacentSpacing", "µm", "single pitch deviation predicted after running inspection.indexCorrectionDeg", kWithGashes}, sp.adjacentLargest);
+    v.number({"inspection.after.pitchJump", "µm", "pitch jump predicted after running inspection.indexCorrectionDeg", kWithGashes}, sp.pitchJumpLargest);
+    v.number({"inspection.after.cumulativeSpacing", "µm", "cumulative spread predicted after running inspection.indexCorrectionDeg", kWithGashes}, sp.cumulative);
   }
-  verdict(v, after, "inspection.after.", kWithEitherCorrection);
+  verdict(v, after, "inspection.after.", kWithEitherCorrection, false);
   for (Check c : kChecks) {
     const CheckResult* r = after.find(c);
     if (!r && !every) continue;
     const std::string grade = std::string("inspection.after.checks.") + checkName(c) + ".grade";
     v.text({grade.c_str(), "", "the check's grade predicted after the correction", kWithEitherCorrection},
-           r ? gradeName(r->grade) : gradeName(Grade::NotGraded));
+           r ? gradeText(r->grade, r->loosest) : gradeName(Grade::NotGraded));
   }
 }
 
@@ -340,6 +386,15 @@ void visitGearEffect(const Evaluation& e, ResultVisitor& v, bool every) {
     v.number({f.form, "µm", "profile form deviation ff_alpha: width of the band about the least-squares profile line, largest over the teeth", kWithRelief}, p.form);
     v.number({f.scatter, "µm", "scatter of fH_alpha along the hob: largest minus smallest over the teeth", kWithRelief},
              left ? g.leftScatter : g.rightScatter);
+  }
+  // The rake error in the gear's terms (docs/inspection.md, "Rake error"): the model on a face that
+  // carries a rake error alone, per degree of hook, and for the rake error inspection.rakeAngle reads.
+  if (e.pressureAnglePerRake || every) {
+    const double perRake = e.pressureAnglePerRake.value_or(0);
+    v.number({"gearEffect.pressureAnglePerDegreeOfRake", "arc-min per deg", "the gear's pressure-angle change per degree of hook at the tip (drag: the opposite sign), mean of the two flanks, from this model on a face that carries a rake error alone (plus = larger pressure angle)", kWithRelief},
+             perRake * 60);
+    v.number({"gearEffect.rakeErrorPressureAngle", "arc-min", "the pressure-angle change the rake error alone gives the gear: gearEffect.pressureAnglePerDegreeOfRake times inspection.rakeAngle (first order)", kWithRelief},
+             perRake * e.inspection.face.rakeAngle * kArcMinPerRad);
   }
   std::vector<double> x;
   for (const ToothEdges& t : g.teeth) x.push_back(t.x);

@@ -32,11 +32,13 @@ void inspectEvaluation(Evaluation& e) {
   const double module = job.input.hob.normalModule;
   const bool points = e.correction && e.correction->atProbes();
   const Eigen::MatrixXd& face = inspectedFace(e).normal;
+  const FaceLines lines = FaceLines::of(job.setup, job.grid);
+  const MeasurementUncertainty u = MeasurementUncertainty::of(in.uncertainty, job.grid.x.back() - job.grid.x.front());
   // One topography per gash: their deviations at the pitch radius, and the worst gash's face checks.
-  FaceChecks faceChecks = checkFace(face, job.grid.r, job.grid.x, helical);
+  FaceChecks faceChecks = checkFace(face, lines, helical);
   std::vector<double> deviations = in.gashDeviations;
   if (!in.gashTopographies.empty()) {
-    e.gashFaces = inspectGashFaces(in.gashTopographies, job.grid.r, job.grid.x, helical, job.setup.face.pitchRadius);
+    e.gashFaces = inspectGashFaces(in.gashTopographies, lines, helical, job.setup.face.pitchRadius);
     deviations = e.gashFaces->deviations;
     faceChecks = e.gashFaces->worst;
   }
@@ -46,16 +48,16 @@ void inspectEvaluation(Evaluation& e) {
     const double perRadian = deviationPerIndexAngle(job.setup, job.setup.face.pitchRadius, 0.0);
     e.indexCorrection = indexCorrection(deviations, perRadian, job.correction.resolution.inAxisUnit(Axis::A));
   }
-  e.inspection = inspect(faceChecks, spacing, table, module);
+  e.inspection = inspect(faceChecks, spacing, table, module, u);
   if (!e.correction && !e.indexCorrection) return;
   // After: the corrected face's checks (on the grid, for points off it), or (only the gashes
   // re-indexed) the faces as they are.
-  const FaceChecks after = points ? checkFace(e.correction->afterOnGrid.normal, job.grid.r, job.grid.x, helical)
-                           : e.correction ? checkFace(e.correction->after.normal, job.grid.r, job.grid.x, helical)
+  const FaceChecks after = points ? checkFace(e.correction->afterOnGrid.normal, lines, helical)
+                           : e.correction ? checkFace(e.correction->after.normal, lines, helical)
                                           : faceChecks;
   std::optional<GashSpacing> spacingAfter;
   if (e.indexCorrection) spacingAfter = gashSpacing(e.indexCorrection->after);
-  e.inspectionAfter = inspect(after, spacingAfter, table, module);
+  e.inspectionAfter = inspect(after, spacingAfter, table, module, u);
 }
 
 Outcome<Evaluation> evaluate(const SharpeningJob& job) {

@@ -47,6 +47,10 @@ struct Evaluation {
   // relief; else, or when it cannot be computed, the sentence that says why.
   std::optional<GearEffect> gearEffect;
   std::string gearEffectReason;
+  // With the gear effect: the change of the gear's pressure angle per degree of hook at the tip
+  // (rad per rad, the mean of the two flanks), from the gear-effect model on a face that carries a
+  // rake error alone (rakeErrorFace, docs/inspection.md "Rake error").
+  std::optional<double> pressureAnglePerRake;
   // With `correction.wheel` (README §Wheel-profile correction): the wheel's part of the correction;
   // `correction` then holds the axes' part, its predicted face with both applied.
   std::optional<WheelCorrection> wheelCorrection;

@@ -1,10 +1,18 @@
 #include <cmath>
 
 #include "evaluation.h"
+#include "face_checks.h"
 #include "hob_relief.h"
 #include "units.h"
 
 namespace hobsharp {
+namespace {
+
+// The hook the rake sensitivity is computed at: small enough for the first order, large enough
+// (some 60 µm on a module-7 face) to stand well clear of the edge solver's tolerance.
+constexpr double kReferenceHook = 0.1 * kRadPerDeg;
+
+}  // namespace
 
 void gearEvaluation(Evaluation& e) {
   const SharpeningJob& job = e.job;
@@ -12,6 +20,7 @@ void gearEvaluation(Evaluation& e) {
   const double alpha = hob.normalPressureAngle * kRadPerDeg;
   const ReliefPerRadian k = reliefPerRadian(hob.relief, job.setup.face.pitchRadius, alpha);
   e.gearEffect.reset();
+  e.pressureAnglePerRake.reset();
   e.gearEffectReason = k.missing;
   if (!k.value) return;
   // The face inspected (inspectEvaluation): the measured grid, else the simulated topography.
@@ -23,6 +32,12 @@ void gearEvaluation(Evaluation& e) {
     return;
   }
   e.gearEffect = std::move(g).value();
+  // A rake error alone: the face moved across its lines by the offset that turns the rake angle at
+  // the tip by kReferenceHook (d gamma = d e / sqrt(r_a^2 - e^2), face_checks.h).
+  const FaceLines lines = FaceLines::of(job.setup, job.grid);
+  const double offset = kReferenceHook * lines.alongLine.back();
+  auto rake = gearEffect(job.setup.face, job.setup.normalSign, job.grid.r, job.grid.x, rakeErrorFace(lines, offset), rack, *k.value);
+  if (rake) e.pressureAnglePerRake = 0.5 * (rake->left.pressureAngle + rake->right.pressureAngle) / kReferenceHook;
 }
 
 }  // namespace hobsharp

@@ -1,5 +1,8 @@
-// The rake-face class on the page (issue 11, item 2): the verdict at the top of the topography,
-// above its maps, and the checks with their class tolerances, measured and after the correction.
+// The rake-face class on the page (issue 11, item 2; issue 21): the class with its ISO 14253-1
+// conformity and the proven class lead the inspection, at the top of the topography above its
+// maps; a grade that rests on a series value is marked; "not graded" says what to enter; the rake
+// error with its effect on the gear; the checks with their class tolerances, measured and after
+// the correction; the measurement's uncertainty U95 typed, kept in the link and undone.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -8,26 +11,119 @@ import { afterError, afterResult, base, openPage, root, shots, useBrowser } from
 
 useBrowser();
 
-test('the class verdict sits above the topography maps, with its checks', async () => {
-  const paper = JSON.parse(readFileSync(path.join(root, 'tests', 'data', 'tab1.json'), 'utf8'));
-  const measured = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (_, j) => 3 * i - 0.2 * j));
-  const c = { ...paper, measured, inspection: { gashDeviations: [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1] } };
-  const page = await openPage(`${base}#case=${encodeURIComponent(JSON.stringify(c))}`, { viewport: { width: 1366, height: 900 } });
+const paper = JSON.parse(readFileSync(path.join(root, 'tests', 'data', 'tab1.json'), 'utf8'));
+const gashDeviations = [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1];
+// The paper's face moved 75 µm out of the tooth: the indicator zeroed at the tip reads about
+// 38.6 µm at the root, class A over 6.3 to 10 mm, whose 40 µm is a series value (not confirmed);
+// with U95 = 2 µm undecided, proven class B. With the hob's relief, the gear effect.
+const measured = Array.from({ length: 5 }, () => Array.from({ length: 9 }, () => 75));
+const theCase = { ...paper, hob: { ...paper.hob, gashes: 12, relief: 4.5 }, measured, inspection: { gashDeviations } };
+const link = (c) => `${base}#case=${encodeURIComponent(JSON.stringify(c))}`;
+// A part of the page as it lies on the page, scrolled to the top: the sticky status bar stays at
+// the top and does not cover the part.
+async function shot(page, selector, file) {
+  await page.evaluate(() => window.scrollTo(0, 0));
+  const clip = await page.evaluate((s) => {
+    const r = document.querySelector(s).getBoundingClientRect();
+    return { x: r.x + window.scrollX, y: r.y + window.scrollY, width: r.width, height: r.height };
+  }, selector);
+  await page.screenshot({ path: path.join(shots, file), fullPage: true, clip });
+}
+const rowsOf = (page) => page.$$eval('#inspection-table tbody tr', (trs) => trs.map((r) => [...r.children].map((x) => x.textContent.trim())));
+
+test('the class with its conformity and the proven class lead, above the maps; series, not graded and the rake error said', async () => {
+  const page = await openPage(link(theCase), { viewport: { width: 1366, height: 900 } });
   await page.waitForFunction(() => window.hobsharpTimings.results > 0 && !document.querySelector('#inspection').hidden);
+  // The lead: the class without the uncertainty and the proven class, side by side.
+  const klass = await page.textContent('#inspection-lead [data-part="class"]');
+  assert.equal(klass, 'Class A — undecided (ISO 14253-1, U95 = 2 µm)the class without the uncertainty');
+  assert.equal(await page.textContent('#inspection-lead [data-part="proven"]'), 'Proven class Bevery graded check within its tolerance less U95');
+  const [a, b] = await page.$$eval('#inspection-lead .lead-box', (els) => els.map((e) => e.getBoundingClientRect().toJSON()));
+  assert.ok(Math.abs(a.top - b.top) < 1 && b.left > a.right, 'side by side at 1366 px');
   const verdict = await page.textContent('#inspection-verdict');
-  assert.match(verdict, /^Rake face \(DIN 3968, module band over 6\.3 to 10 mm, measured face\): class (AA|A|B|C|D|outside D) \(limited by the cumulative spacing\); predicted after the correction: class /);
-  const [v, maps] = await page.evaluate(() => [document.querySelector('#inspection-verdict'), document.querySelector('#plot-before-2d')]
-    .map((e) => e.getBoundingClientRect().top + window.scrollY));
-  assert.ok(v < maps, 'the verdict comes before the maps');
-  const rows = await page.$$eval('#inspection-table tbody tr', (trs) => trs.map((r) => [...r.children].map((x) => x.textContent.trim())));
-  assert.deepEqual(rows.map((r) => r[0]), ['cutting-face form', 'radial alignment', 'gash lead', 'adjacent spacing', 'cumulative spacing']);
-  assert.deepEqual(rows[4].slice(0, 2), ['cumulative spacing', '5.000 µm']);
-  assert.match(rows[4][3], /^AA [\d.]+ · A [\d.]+ · B [\d.]+ · C [\d.]+ · D [\d.]+$/);
-  assert.equal(rows[1][1], '12.000 µm');
-  assert.equal(rows[1][3], 'none in the table');
-  assert.equal(rows[0].length, 6, 'with the columns after the correction');
+  assert.match(verdict, /^Rake face \(DIN 3968, module band over 6\.3 to 10 mm, measured face\): class A \(limited by the radial alignment\); predicted after the correction: class /);
+  const [lead, v, maps] = await page.evaluate(() => ['#inspection-lead', '#inspection-verdict', '#plot-before-2d']
+    .map((s) => document.querySelector(s).getBoundingClientRect().top + window.scrollY));
+  assert.ok(lead < v && v < maps, 'the class leads, the verdict follows, the maps come after');
+  assert.ok(await page.isHidden('#inspection-warning'), 'U95 = 2 µm is within a tenth of every tolerance here');
+
+  // The rake error and, with the relief, what it does to the gear.
+  assert.match(await page.textContent('#inspection-rake'),
+    /^Rake error: drag \d+\.\d′ \(0\.0\d\d mm out of the tooth\); the gear's pressure angle changes by \+\d+\.\d\d′ \(−\d+\.\d′ per degree of hook\)\.$/);
+
+  // The checks: grade (A* on a series value), conformity, proven, where the tolerance comes from.
+  const rows = await rowsOf(page);
+  assert.deepEqual(rows.map((r) => r[0]), ['cutting-face form', 'radial alignment', 'gash lead', 'single pitch (adjacent spacing)', 'pitch jump']);
+  assert.equal(rows[0].length, 9, 'with the columns after the correction');
+  assert.match(rows[1][1], /^38\.\d{3} µm$/);
+  assert.deepEqual(rows[1].slice(2, 7), ['A*', 'undecided', 'B', 'series*', 'AA 25 · A 40* · B 80* · C 160* · D 315*']);
+  assert.match(await page.getAttribute('#inspection-table tr[data-check="radialAlignment"] td:nth-child(6)', 'title'), /^Luren Precision/);
+  assert.match(await page.getAttribute('#inspection-table tr[data-check="radialAlignment"] td:nth-child(3)', 'title'),
+    /^series value, not confirmed: enter the hob maker's table\. Luren/);
+  assert.deepEqual(rows[4].slice(0, 7), ['pitch jump', '6.000 µm', 'AA', 'conforms', 'AA', 'printed', 'AA 25 · A 40 · B 80 · C 160 · D 315']);
+  assert.deepEqual(rows[0].slice(0, 7), ['cutting-face form', rows[0][1], 'not graded', '—', '—', '—', 'none in the table']);
+  assert.match(rows[2][1], /µm per 100 mm$/);
+  assert.equal(await page.textContent('#inspection-series-note'),
+    "* series value, not confirmed: enter the hob maker's table (the tolerance table below). The grade of the radial alignment rests on one.");
+  assert.match(await page.textContent('#inspection-cumulative'),
+    /^Cumulative spread of the cutting faces \(largest minus smallest gash deviation; information, not graded\): 5\.000 µm; predicted after the correction \d+\.\d{3} µm\.$/);
+  // Not graded: what, and what to enter; the button opens the table at that check.
+  assert.equal(await page.textContent('#inspection-not-graded span'),
+    "Not graded: cutting-face form (the tolerance table has no value for the module band over 6.3 to 10 mm). Enter the hob maker's tolerances in the tolerance table; the case keeps them.");
+  assert.ok(!(await page.evaluate(() => document.querySelector('#tolerance-editor').open)));
+  await shot(page, '#inspection', 'inspection-1366.png');
+  await page.click('#inspection-enter-tolerances');
+  assert.ok(await page.evaluate(() => document.querySelector('#tolerance-editor').open));
+  assert.equal(await page.evaluate(() => document.activeElement.dataset.check), 'cuttingFaceForm');
   assert.doesNotMatch(JSON.stringify(rows), /NaN|undefined|Infinity/);
-  await page.locator('#topography-section').screenshot({ path: path.join(shots, 'inspection.png') });
+
+  // A phone: the lead and the lines wrap within the screen; the table scrolls in its own box.
+  await page.click('#tolerance-editor summary');
+  await page.setViewportSize({ width: 390, height: 844 });
+  await page.waitForFunction(() => document.querySelector('#inspection').getBoundingClientRect().width < 390);
+  const overflow = await page.evaluate(() => ['#inspection-lead', '#inspection-verdict', '#inspection-rake', '#inspection-u', '#inspection-not-graded', '#inspection-series-note']
+    .map((s) => [s, document.querySelector(s).getBoundingClientRect().right]).filter(([, right]) => right > 390));
+  assert.deepEqual(overflow, [], 'nothing runs past the screen');
+  await shot(page, '#inspection', 'inspection-390.png');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('the uncertainty U95 typed: the conformity and the proven class follow, the warning, a refused value named, undone', async () => {
+  const page = await openPage(link(theCase), { viewport: { width: 1366, height: 900 } });
+  await page.waitForFunction(() => !document.querySelector('#inspection').hidden);
+  assert.equal(await page.inputValue('#inspection-uncertainty'), '');
+  assert.equal(await page.getAttribute('#inspection-uncertainty', 'placeholder'), '2');
+  assert.equal(await page.textContent('#inspection-uncertainty-unit'), 'µm');
+  const set = (text) => afterResult(page, async () => { await page.fill('#inspection-uncertainty', text); await page.dispatchEvent('#inspection-uncertainty', 'change'); });
+  // A finer measurement proves the class.
+  await set('0.5');
+  assert.equal(await page.textContent('#inspection-lead'), 'Class A — conforms (ISO 14253-1, U95 = 0.5 µm); proven class A');
+  assert.equal(await page.getAttribute('#inspection-lead .lead-box', 'data-conformity'), 'conforms');
+  assert.match(decodeURIComponent(await page.evaluate(() => location.hash)), /"uncertainty":0\.5/);
+  // A coarse one: the checks whose U exceeds a tenth of their tolerance named.
+  await set('5');
+  assert.match(await page.textContent('#inspection-lead [data-part="class"]'), /^Class A — undecided \(ISO 14253-1, U95 = 5 µm\)/);
+  assert.equal(await page.textContent('#inspection-warning'), "The measurement's uncertainty U95 exceeds a tenth of the tolerance for the radial alignment (U 5 µm, tolerance A 40 µm), "
+    + 'single pitch (U 5 µm, tolerance AA 25 µm) and pitch jump (U 5 µm, tolerance AA 25 µm): their class rests on a measurement too coarse for it. Measure with a smaller uncertainty.');
+  await shot(page, '#inspection', 'inspection-warning.png');
+  // Out of range: named at the input, the rest of the page as it was.
+  await afterError(page, async () => { await page.fill('#inspection-uncertainty', '150'); await page.dispatchEvent('#inspection-uncertainty', 'change'); });
+  assert.match(await page.textContent('#inspection-uncertainty-error'), /^inspection\.uncertainty: must be the measurement's uncertainty U95 in µm, 0 to 100; got 150 µm\.$/);
+  assert.equal(await page.getAttribute('#inspection-uncertainty', 'aria-invalid'), 'true');
+  assert.ok(await page.isHidden('#form-error'));
+  assert.ok(await page.isHidden('#tolerance-error'));
+  // Undone: back to 5 µm, the message gone.
+  await afterResult(page, () => page.click('#undo'));
+  assert.equal(await page.inputValue('#inspection-uncertainty'), '5');
+  assert.ok(await page.isHidden('#inspection-uncertainty-error'));
+  await afterResult(page, () => page.click('#undo'));
+  assert.equal(await page.inputValue('#inspection-uncertainty'), '0.5');
+  assert.match(await page.textContent('#inspection-lead'), /U95 = 0\.5 µm/);
+  // Blank: the default again, and the case carries none.
+  await set('');
+  assert.match(await page.textContent('#inspection-lead'), /U95 = 2 µm/);
+  assert.doesNotMatch(decodeURIComponent(await page.evaluate(() => location.hash)), /"uncertainty"/);
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
@@ -37,23 +133,33 @@ test('the tolerance table and the gash deviations are edited on the page, refuse
   await page.click('#tolerance-editor summary');
   assert.match(await page.textContent('#tolerance-band'), /band over 6\.3 to 10 mm of normal module, from the default table/);
   const cell = (check, k) => `#tolerance-table input[data-check="${check}"][data-class="${k}"]`;
-  assert.equal(await page.inputValue(cell('radialAlignment', 'A')), '', 'no public value: blank');
+  assert.equal(await page.inputValue(cell('cuttingFaceForm', 'A')), '', 'no public value: blank');
   assert.equal(await page.inputValue(cell('adjacentSpacing', 'AA')), '25');
+  assert.equal(await page.inputValue(cell('pitchJump', 'AA')), '25');
+  assert.equal(await page.inputValue(cell('radialAlignment', 'A')), '40');
+  // The radial alignment's A to D over 6.3 to 10 mm are series values, marked.
+  assert.deepEqual(await page.$$eval('#tolerance-table tr[data-check="radialAlignment"] td[data-confidence="series"] input', (els) => els.map((e) => e.dataset.class)),
+    ['A', 'B', 'C', 'D']);
   assert.ok(await page.isDisabled('#tolerance-default'));
   const grade = (check) => page.textContent(`#inspection-table tr[data-check="${check}"] td:nth-child(3)`);
-  assert.equal(await grade('radialAlignment'), 'not graded');
+  assert.equal(await grade('cuttingFaceForm'), 'not graded');
 
   await afterResult(page, async () => { await page.fill('#gash-deviations', '0; 3; −2; 1,5'); await page.dispatchEvent('#gash-deviations', 'change'); });
-  assert.equal(await page.textContent('#inspection-table tr[data-check="cumulativeSpacing"] td:nth-child(2)'), '5.000 µm');
-  assert.match(await page.textContent('#inspection-verdict'), /class AA \(limited by the (cumulative|adjacent) spacing\)/);
-  await afterResult(page, async () => { await page.fill(cell('radialAlignment', 'A'), '25'); await page.dispatchEvent(cell('radialAlignment', 'A'), 'change'); });
-  assert.equal(await grade('radialAlignment'), 'A');
-  assert.match(await page.textContent('#inspection-table tr[data-check="radialAlignment"]'), /A 25\.0/);
+  assert.match(await page.textContent('#inspection-cumulative'), /: 5\.000 µm;/);
+  assert.equal(await page.textContent('#inspection-table tr[data-check="pitchJump"] td:nth-child(2)'), '8.500 µm');
+  assert.match(await page.textContent('#inspection-verdict'), /class AA \(limited by the pitch jump\)/);
+  await afterResult(page, async () => { await page.fill(cell('cuttingFaceForm', 'A'), '25'); await page.dispatchEvent(cell('cuttingFaceForm', 'A'), 'change'); });
+  assert.equal(await grade('cuttingFaceForm'), 'A');
+  assert.equal(await page.textContent('#inspection-table tr[data-check="cuttingFaceForm"] td.tolerances'), 'A 25');
+  assert.match(await page.textContent('#inspection-table tr[data-check="cuttingFaceForm"]'), /entered/);
   assert.match(await page.textContent('#tolerance-band'), /the table this case carries \(edited\)/);
+  assert.ok(await page.isHidden('#inspection-not-graded'), 'every check graded');
   const linked = decodeURIComponent(await page.evaluate(() => location.hash));
   assert.match(linked, /"gashDeviations":\[0,3,-2,1\.5\]/);
-  assert.match(linked, /"radialAlignment":\{"A":\[null,null,null,null,null,25,null,null,null\],"source":"edited on the page"\}/);
-  await page.locator('#inspection').screenshot({ path: path.join(shots, 'tolerance-editor.png') });
+  assert.match(linked, /"cuttingFaceForm":\{"A":\[null,null,null,null,null,25,null,null,null\],"source":"edited on the page"\}/);
+  // The default table's other cells travel with their marks.
+  assert.match(linked, /"radialAlignment":\{[^}]*"confidence":\{"AA":\["printed",/);
+  await shot(page, '#inspection', 'tolerance-editor.png');
 
   // A cell that is not a number: named at the table, the rest of the page as it was.
   await afterError(page, async () => { await page.fill(cell('gashLead', 'B'), '1e'); await page.dispatchEvent(cell('gashLead', 'B'), 'change'); });
@@ -67,8 +173,8 @@ test('the tolerance table and the gash deviations are edited on the page, refuse
   assert.match(await page.textContent('#tolerance-error'), /Gash deviation 3: "x" is not a number \(µm\)\. The gash deviations in use are unchanged\./);
 
   await afterResult(page, () => page.click('#tolerance-default'));
-  assert.equal(await grade('radialAlignment'), 'not graded');
-  assert.equal(await page.textContent('#inspection-table tr[data-check="cumulativeSpacing"] td:nth-child(2)'), '5.000 µm', 'the gashes stay');
+  assert.equal(await grade('cuttingFaceForm'), 'not graded');
+  assert.match(await page.textContent('#inspection-cumulative'), /: 5\.000 µm;/, 'the gashes stay');
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
@@ -92,9 +198,15 @@ test('one topography per gash from CSV files: the per-gash table, the spacing, a
   assert.equal(rows.length, 4);
   const deviations = rows.map((r) => Number(r[1]));
   assert.ok(Math.abs(deviations[2] - deviations[0] - 10) < 1e-9 && deviations[0] === deviations[1] && deviations[1] === deviations[3], JSON.stringify(rows));
-  assert.equal(await page.textContent('#inspection-table tr[data-check="cumulativeSpacing"] td:nth-child(2)'), '10.000 µm');
+  // Per pitch: the single pitch to the next gash and the pitch jump, as the module gives them.
+  const heads = await page.$$eval('#per-gash thead th', (ths) => ths.map((t) => t.textContent));
+  assert.deepEqual(heads.slice(0, 4), ['gash', 'deviation at r_p (µm)', 'single pitch to the next gash (µm)', 'pitch jump from the pitch before (µm)']);
+  assert.deepEqual(rows.map((r) => Number(r[2])), [0, 10, -10, 0]);
+  assert.deepEqual(rows.map((r) => Number(r[3])), [0, 10, -20, 10]);
+  assert.match(await page.textContent('#inspection-cumulative'), /: 10\.000 µm;/);
+  assert.equal(await page.textContent('#inspection-table tr[data-check="pitchJump"] td:nth-child(2)'), '-20.000 µm');
   assert.equal(await page.getAttribute('#gash-deviations', 'placeholder'), 'from the 4 gash topographies');
-  await page.locator('#inspection').screenshot({ path: path.join(shots, 'per-gash.png') });
+  await shot(page, '#inspection', 'per-gash.png');
   await afterResult(page, () => page.click('#gash-files-clear'));
   assert.ok(await page.isHidden('#per-gash'));
   assert.deepEqual(page.problems, []);

@@ -73,6 +73,8 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
     assert.match(first, /Printed \d{4}-\d\d-\d\d/);
     assert.match(first, /normalModule/);
     assert.match(first, /Case link: http/);
+    // The rake face's class with its conformity and the proven class lead the record.
+    assert.match(first.replace(/\s+/g, ' '), /Rake face \(DIN 3968\): Class (AA|A|B|C|D) — (conforms|undecided|does not conform) \(ISO 14253-1, U95 = 2 µm\); proven class (AA|A|B|C|D|none)\./);
     const all = execFileSync('pdftotext', ['-layout', pdf, '-'], { encoding: 'utf8' });
     for (const words of ['Axes to run, in the control', 'Deviation topography', 'Correctable', 'Machine error identified']) assert.ok(all.includes(words), `${format}: ${words}`);
     // The effect on the gear: each figure with its value and unit for both flanks, on one page.

@@ -141,7 +141,7 @@ test('a history that does not fit its grid is refused by the calculator, naming 
 
 test('what the form has no inputs for (inspection, dressed wheel) is kept from the loaded case, sent and saved', async () => {
   const loaded = { ...paper, wheel: { ...paper.wheel, profileOffset: { R: [30, 40, 49.9], offset: [1, -1, 0.5] } },
-    inspection: { gashDeviations: [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1] } };
+    inspection: { gashDeviations: [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1], uncertainty: 1.5 } };
   const inputs = inputsFromCase(loaded);
   assert.deepEqual(inputs.extra, { wheel: { profileOffset: loaded.wheel.profileOffset }, inspection: loaded.inspection });
   // The form keeps only its own fields; the state's extra puts the rest back.
@@ -156,5 +156,6 @@ test('what the form has no inputs for (inspection, dressed wheel) is kept from t
   const hobsharp = await loadHobSharp();
   const r = hobsharp.evaluate(sent);
   assert.ok(r.inspection.cumulativeSpacing > 0, 'the calculator gets the gash deviations');
+  assert.equal(r.inspection.uncertainty, 1.5, 'and the measurement\'s uncertainty');
   assert.ok(r.wheelOffset, 'and the dressed wheel');
 });

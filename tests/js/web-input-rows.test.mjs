@@ -4,12 +4,15 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { inputRows } from '../../web/src/io/input-rows.js';
-import { reportDateLine, reportRows } from '../../web/src/views/report.js';
+import { reportDateLine, reportInspectionLine, reportRows } from '../../web/src/views/report.js';
+import { setResultFields } from '../../web/src/result-fields.js';
 import { setModuleLimits } from '../../web/src/limits.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
-setModuleLimits((await loadHobSharp()).limits());  // the axes' names, as the page has them
+const hobsharp = await loadHobSharp();
+setModuleLimits(hobsharp.limits());  // the axes' names, as the page has them
+setResultFields(hobsharp.resultFields());  // and the results' units
 
 test('every value of the case by its path, in its order; the measured data, axes, passes and page left out', () => {
   const c = { ...paper, measuredPoints: [[20, 0, 1]], measured: [[1]], axes: { X: [1] }, passes: [{}], page: { view: 'normal' },
@@ -48,4 +51,16 @@ test("the report's first line names the day and what was measured: a grid, the m
   assert.equal(reportDateLine({ ...paper, measured: [[1]] }, day), 'Printed 2026-11-23; with a measured topography.');
   assert.equal(reportDateLine({ ...paper, measuredPoints: [[20, 0, 1], [30, 5, 2]] }, day),
     'Printed 2026-11-23; with a measured topography at 2 probe points.');
+});
+
+test("the report's head: the rake face's class with its conformity and the proven class", () => {
+  const d = Array(12).fill(0);
+  d[2] = 10;
+  const c = structuredClone(paper);
+  c.hob.normalModule = 5;  // pitch jump -20 µm against AA 20 µm: undecided with U95 = 2 µm, proven A
+  const line = reportInspectionLine(hobsharp.evaluate({ ...c, inspection: { gashDeviations: d } }).inspection);
+  assert.equal(line, 'Rake face (DIN 3968): Class AA — undecided (ISO 14253-1, U95 = 2 µm); proven class A.');
+  const outside = hobsharp.evaluate({ ...paper, inspection: { tolerances: { moduleBands: [1, 2], checks: { pitchJump: { AA: [5] } } } } }).inspection;
+  assert.match(reportInspectionLine(outside), /^Rake face \(DIN 3968\): Not graded: cutting-face form, radial alignment, gash lead \(/);
+  assert.equal(reportInspectionLine(undefined), '');
 });

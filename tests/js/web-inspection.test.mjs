@@ -1,37 +1,123 @@
 // The rake-face inspection as the page shows it (web/src/inspection-table.js), from the module's
-// result: the verdict sentence and the rows of checks, measured and after the correction.
+// result: the class with its conformity and proven class, the verdict sentence, the uncertainty's
+// warning, the rake error, and the rows of checks, measured and after the correction.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
-import { inspectionRows, verdictSentence } from '../../web/src/inspection-table.js';
+import { classLead, cumulativeText, inspectionRows, rakeText, uncertaintyWarningText, verdictSentence, withUnit } from '../../web/src/inspection-table.js';
+import { setResultFields } from '../../web/src/result-fields.js';
+import { cellConfidence, tableInUse, withCell } from '../../web/src/tolerance-edit.js';
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
 const hobsharp = await loadHobSharp();
+setResultFields(hobsharp.resultFields());  // the units, as the page has them once the calculator is ready
+const grid = (f) => Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (_, j) => f(i, j)));
 
 test('the verdict names the class, the limiting check and the class after the correction', () => {
-  const measured = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, () => 3 * i));
+  const measured = grid((i) => 3 * i);
   const gashDeviations = [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1];
   const r = hobsharp.evaluate({ ...paper, measured, inspection: { gashDeviations } });
   const text = verdictSentence(r.inspection);
-  assert.match(text, new RegExp(`^Rake face \\(DIN 3968, module band over 6\\.3 to 10 mm, measured face\\): class ${r.inspection.class} \\(limited by the cumulative spacing\\); predicted after the correction: class ${r.inspection.after.class}`));
+  // The pitch jump (6 of 25 µm) limits, just before the radial alignment (5.9 of 25 µm).
+  assert.match(text, new RegExp(`^Rake face \\(DIN 3968, module band over 6\\.3 to 10 mm, measured face\\): class ${r.inspection.class} \\(limited by the pitch jump\\); predicted after the correction: class ${r.inspection.after.class}`));
   const rows = inspectionRows(r.inspection);
-  assert.deepEqual(rows.map((x) => x.check), ['cuttingFaceForm', 'radialAlignment', 'gashLead', 'adjacentSpacing', 'cumulativeSpacing']);
-  const cumulative = rows.find((x) => x.check === 'cumulativeSpacing');
-  assert.equal(cumulative.value, 5);
-  assert.equal(cumulative.grade, r.inspection.checks.cumulativeSpacing.grade);
-  assert.match(cumulative.tolerances, /^AA [\d.]+ · A [\d.]+/);
-  assert.ok(Math.abs(cumulative.after.value - r.inspection.after.cumulativeSpacing) < 1e-12);
+  assert.deepEqual(rows.map((x) => x.check), ['cuttingFaceForm', 'radialAlignment', 'gashLead', 'adjacentSpacing', 'pitchJump']);
+  assert.deepEqual(rows.map((x) => x.label), ['cutting-face form', 'radial alignment', 'gash lead', 'single pitch (adjacent spacing)', 'pitch jump']);
+  const jump = rows.find((x) => x.check === 'pitchJump');
+  assert.equal(jump.value, 6);
+  assert.equal(jump.grade, r.inspection.checks.pitchJump.grade);
+  assert.match(jump.tolerances, /^AA [\d.]+ · A [\d.]+/);
+  assert.ok(Math.abs(jump.after.value - r.inspection.after.pitchJump) < 1e-12);
+  // The cumulative spread is information under the table, not a row.
+  assert.equal(cumulativeText(r.inspection), `Cumulative spread of the cutting faces (largest minus smallest gash deviation; information, not graded): 5.000 µm; predicted after the correction ${
+    r.inspection.after.cumulativeSpacing.toFixed(3)} µm.`);
   const radial = rows.find((x) => x.check === 'radialAlignment');
-  assert.equal(radial.value, 12, 'a 3 µm rise per radial line over 4 steps');
-  assert.equal(radial.tolerances, 'none in the table');
+  assert.ok(radial.value < -5.9 && radial.value > -6, `the indicator zeroed at the tip: ${radial.value}`);
+  assert.equal(radial.tolerances, 'AA 25 · A 40 · B 80 · C 160 · D 315');
   assert.equal(radial.unit, 'µm');
+  assert.equal(rows.find((x) => x.check === 'gashLead').unit, 'µm per 100 mm', 'the unit the result states');
+  const form = rows.find((x) => x.check === 'cuttingFaceForm');
+  assert.equal(form.tolerances, 'none in the table');
+  assert.equal(form.grade, 'not graded');
+  assert.equal(form.proven, '');
 });
 
-test('without a measured face or gash deviations: the simulated face, no after column, and not graded said in words', () => {
-  const r = hobsharp.evaluate(paper);
+test('the class leads with its conformity and the proven class; side by side when they differ', () => {
+  const d = Array(12).fill(0);
+  d[2] = 10;
+  const c = structuredClone(paper);
+  c.hob.normalModule = 5;
+  const i = hobsharp.evaluate({ ...c, inspection: { gashDeviations: d } }).inspection;
+  const lead = classLead(i);
+  assert.equal(lead.graded, true);
+  assert.equal(lead.same, false);
+  assert.equal(lead.classText, 'Class AA — undecided (ISO 14253-1, U95 = 2 µm)');
+  assert.equal(lead.provenText, 'proven class A');
+  assert.equal(lead.text, 'Class AA — undecided (ISO 14253-1, U95 = 2 µm); proven class A');
+  const exact = classLead(hobsharp.evaluate({ ...c, inspection: { gashDeviations: d, uncertainty: 0 } }).inspection);
+  assert.equal(exact.same, true);
+  assert.equal(exact.text, 'Class AA — conforms (ISO 14253-1, U95 = 0 µm); proven class AA');
+  assert.equal(classLead(undefined), null);
+});
+
+test('the warning names the checks whose U95 exceeds a tenth of their tolerance', () => {
+  const d = Array(12).fill(0);
+  d[2] = 10;
+  const i = hobsharp.evaluate({ ...paper, inspection: { gashDeviations: d, uncertainty: 3 } }).inspection;
+  assert.equal(i.uncertaintyWarning, 'radialAlignment, adjacentSpacing, pitchJump');
+  assert.equal(uncertaintyWarningText(i), "The measurement's uncertainty U95 exceeds a tenth of the tolerance for the radial alignment (U 3 µm, tolerance AA 25 µm), "
+    + 'single pitch (U 3 µm, tolerance AA 25 µm) and pitch jump (U 3 µm, tolerance AA 25 µm): their class rests on a measurement too coarse for it. '
+    + 'Measure with a smaller uncertainty.');
+  assert.equal(uncertaintyWarningText({ ...i, uncertaintyWarning: '' }), '');
+});
+
+test('the rake error in a line: hook or drag, the offset, and the gear effect with the relief', () => {
+  const hook = hobsharp.evaluate({ ...paper, measured: grid(() => -30), correction: { probeNoise: 1e-4 } });
+  const text = rakeText(hook.inspection, hook.gearEffect);
+  assert.match(text, /^Rake error: hook \d+\.\d′ \(0\.0\d\d mm into the tooth\)\. Enter the hob's relief \(gashes z and relief K, or the side relief angle\) to see what it does to the gear's pressure angle\.$/);
+  const relieved = hobsharp.evaluate({ ...paper, hob: { ...paper.hob, gashes: 12, relief: 4.5 }, measured: grid(() => -30), correction: { probeNoise: 1e-4 } });
+  assert.match(rakeText(relieved.inspection, relieved.gearEffect),
+    /^Rake error: hook \d+\.\d′ \(0\.0\d\d mm into the tooth\); the gear's pressure angle changes by −\d+\.\d\d′ \(−\d+\.\d′ per degree of hook\)\.$/);
+  const drag = hobsharp.evaluate({ ...paper, measured: grid(() => 30), correction: { probeNoise: 1e-4 } });
+  assert.match(rakeText(drag.inspection, drag.gearEffect), /^Rake error: drag \d+\.\d′ \(0\.0\d\d mm out of the tooth\)\./);
+  const none = hobsharp.evaluate(paper);
+  assert.match(rakeText(none.inspection, none.gearEffect), /^Rake error: none \(0\.0′\)\./);
+  assert.equal(withUnit('2.1', 'arc-min'), '2.1′');
+  assert.equal(withUnit('−4.8', 'arc-min per deg'), '−4.8′ per degree');
+  assert.equal(withUnit('3', 'µm per 100 mm'), '3 µm per 100 mm');
+});
+
+test('a grade that rests on a series value carries a *, and so do the series cells of the class tolerances', () => {
+  // About 29 µm on the indicator: A over 6.3 to 10 mm, whose 40 µm is a series value.
+  const r = hobsharp.evaluate({ ...paper, measured: grid(() => 57), correction: { probeNoise: 1e-4 } });
+  const defaults = hobsharp.limits().inspection.defaultTolerances;
+  const band = r.inspection.moduleBandIndex;
+  const confidenceOf = (check, klass) => cellConfidence(tableInUse({}, defaults), { band, check, klass, edited: false });
+  const radial = inspectionRows(r.inspection, { confidenceOf }).find((x) => x.check === 'radialAlignment');
+  assert.equal(radial.grade, 'A');
+  assert.equal(radial.gradeText, 'A*');
+  assert.equal(radial.series, true);
+  assert.equal(radial.confidence, 'series');
+  assert.match(radial.source, /^Luren Precision.*series, not confirmed$/);
+  assert.equal(radial.tolerances, 'AA 25 · A 40* · B 80* · C 160* · D 315*');
+  // A cell typed on the page is the engineer's: no longer a series value.
+  const extra = withCell({}, defaults, { band, check: 'radialAlignment', klass: 'A', text: '38' });
+  const typed = hobsharp.evaluate({ ...paper, measured: grid(() => 57), correction: { probeNoise: 1e-4 }, ...extra }).inspection;
+  assert.equal(typed.checks.radialAlignment.confidence, 'entered');
+  assert.equal(typed.checks.radialAlignment.grade, 'A');
+  assert.equal(cellConfidence(tableInUse(extra, defaults), { band, check: 'radialAlignment', klass: 'B', edited: true }), 'series', 'the others keep their marks');
+  assert.equal(cellConfidence(tableInUse(extra, defaults), { band, check: 'pitchJump', klass: 'AA', edited: true }), 'printed');
+});
+
+test('outside the table\'s bands: no after column, and not graded said in words with what to enter', () => {
+  const tolerances = { moduleBands: [1, 2], checks: { pitchJump: { AA: [5] } } };
+  const r = hobsharp.evaluate({ ...paper, inspection: { tolerances } });
   const text = verdictSentence(r.inspection);
   assert.match(text, /simulated face\): not graded \(the tolerance table has no value for this module on any check computed\)\.$/);
   assert.ok(inspectionRows(r.inspection).every((x) => x.after === null));
   assert.equal(verdictSentence(undefined), '');
+  const lead = classLead(r.inspection);
+  assert.equal(lead.graded, false);
+  assert.match(r.inspection.notGraded, /^Not graded: cutting-face form, radial alignment, gash lead \(the tolerance table has no value for this module: it is outside the table's module bands\)\. Enter/);
 });

@@ -1,40 +1,148 @@
-// The rake-face inspection as the page shows it (pure, with Node tests): the class verdict in a
-// sentence, and per check its value with its unit, its grade and the class tolerances of the
-// module band, measured and predicted after the correction (README, "Rake-face inspection").
-import { fixed } from './format.js';
+// The rake-face inspection as the page shows it (pure, with Node tests; docs/inspection.md): the
+// class with its ISO 14253-1 conformity and the proven class, the verdict in a sentence, a warning
+// when the measurement's uncertainty is too coarse for a tolerance, the rake error, and per check
+// its value, grade, conformity, proven grade and where its tolerance comes from, measured and
+// predicted after the correction. Units are the result fields' own (unitOf: a field's path to its
+// unit, result-fields.js); nothing here types one.
+import { fixed, fmt, signed } from './format.js';
+import { fieldUnit } from './result-fields.js';
 
+// The checks DIN 3968 grades, in the order the table shows them.
 export const CHECK_WORDS = {
-  cuttingFaceForm: { label: 'cutting-face form', unit: 'µm' },
-  radialAlignment: { label: 'radial alignment', unit: 'µm' },
-  gashLead: { label: 'gash lead', unit: 'µm per 100 mm' },
-  adjacentSpacing: { label: 'adjacent spacing', unit: 'µm' },
-  cumulativeSpacing: { label: 'cumulative spacing', unit: 'µm' },
+  cuttingFaceForm: { label: 'cutting-face form' },
+  radialAlignment: { label: 'radial alignment' },
+  gashLead: { label: 'gash lead' },
+  adjacentSpacing: { label: 'single pitch (adjacent spacing)', short: 'single pitch' },
+  pitchJump: { label: 'pitch jump' },
 };
 
+export const SERIES_NOTE = 'series value, not confirmed: enter the hob maker\'s table';
+const describedUnit = (path) => fieldUnit(path) || '';
 const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
+const label = (check) => (CHECK_WORDS[check] || { label: check }).label;
+const shortLabel = (check) => (CHECK_WORDS[check] || {}).short || label(check);
+const minus = (text) => text.replace(/^-/, '\u2212');
 
-// "Rake face: class A (limited by the adjacent spacing), over 6.3 to 10 mm; predicted after the
-// correction: class AA." A class that is not graded says why.
+// A figure with its unit as the schema states it: arc-min as ′ after the number, "per deg" as
+// "per degree"; any other unit after a space.
+export function withUnit(text, unit) {
+  if (!unit) return text;
+  const m = /^arc-min(.*)$/.exec(unit);
+  if (m) return `${text}′${m[1].replace(/\bper deg$/, 'per degree')}`;
+  return `${text} ${unit}`;
+}
+
+// The tolerance the check's grade rests on (its class's; the loosest's when outside the table).
+export function gradeTolerance(c) {
+  if (!c || !c.tolerances || !c.tolerances.length) return null;
+  const k = (c.classes || []).indexOf(c.grade);
+  return k >= 0 ? c.tolerances[k] : c.tolerances[c.tolerances.length - 1];
+}
+
+// The class and its conformity, the lead of the inspection:
+// {graded, same, klass, conformity, proven, text, classText, provenText}. `text` is one line:
+// "Class A — conforms (ISO 14253-1, U95 = 2 µm); proven class A". When the proven class differs,
+// classText and provenText are the two halves the page shows side by side.
+export function classLead(inspection, unitOf = describedUnit) {
+  if (!inspection) return null;
+  const klass = inspection.class, proven = inspection.provenClass, conformity = inspection.conformity;
+  if (klass === 'not graded') {
+    return { graded: false, same: true, klass, conformity, proven, text: 'Not graded', classText: 'Not graded', provenText: '' };
+  }
+  const u = withUnit(fmt(inspection.uncertainty, 3), unitOf('inspection.uncertainty'));
+  const classText = `Class ${klass} — ${conformity} (ISO 14253-1, U95 = ${u})`;
+  const provenText = proven === 'none' ? 'proven class: none' : `proven class ${proven}`;
+  return { graded: true, same: proven === klass, klass, conformity, proven, text: `${classText}; ${provenText}`, classText, provenText };
+}
+
+// "Rake face (DIN 3968, module band over 6.3 to 10 mm, measured face): class A (limited by the
+// pitch jump); predicted after the correction: class AA." A class that is not graded says why.
 export function verdictSentence(inspection) {
   if (!inspection) return '';
   const klass = (c, limiting) => (c === 'not graded'
     ? 'not graded (the tolerance table has no value for this module on any check computed)'
-    : `class ${c}${limiting ? ` (limited by the ${(CHECK_WORDS[limiting] || { label: limiting }).label})` : ''}`);
+    : `class ${c}${limiting ? ` (limited by the ${label(limiting)})` : ''}`);
   const source = { gashTopographies: 'the worst of the gash topographies', measuredPoints: 'measured points' }[inspection.source] || `${inspection.source} face`;
   let text = `Rake face (DIN 3968, module band ${inspection.moduleBand}, ${source}): ${klass(inspection.class, inspection.limitingCheck)}`;
   if (inspection.after && inspection.after.class) text += `; predicted after the correction: ${klass(inspection.after.class, inspection.after.limitingCheck)}`;
   return `${text}.`;
 }
 
-// One row per check computed: {check, label, unit, value, grade, tolerances, after: {value, grade} | null}.
-export function inspectionRows(inspection) {
+// The checks whose U95 exceeds a tenth of the tolerance they are graded by, in words; '' when none.
+// "The measurement's uncertainty U95 exceeds a tenth of the tolerance for the radial alignment (U 3
+// µm, tolerance AA 25 µm): its class rests on a measurement too coarse for it. Measure with a
+// smaller uncertainty."
+export function uncertaintyWarningText(inspection, unitOf = describedUnit) {
+  const names = String((inspection && inspection.uncertaintyWarning) || '').split(',').map((s) => s.trim()).filter(Boolean);
+  if (!names.length) return '';
+  const parts = names.map((name) => {
+    const c = inspection.checks && inspection.checks[name];
+    const unit = unitOf(`inspection.checks.${name}.uncertainty`);
+    const t = gradeTolerance(c);
+    if (!c || t === null) return shortLabel(name);
+    const klass = (c.classes || []).includes(c.grade) ? c.grade : c.classes[c.classes.length - 1];
+    return `${shortLabel(name)} (U ${withUnit(fmt(c.uncertainty, 3), unit)}, tolerance ${klass} ${withUnit(fmt(t, 4), unitOf(`inspection.checks.${name}.tolerances`))})`;
+  });
+  const list = parts.length > 1 ? `${parts.slice(0, -1).join(', ')} and ${parts[parts.length - 1]}` : parts[0];
+  return `The measurement's uncertainty U95 exceeds a tenth of the tolerance for the ${list}: ${
+    parts.length > 1 ? 'their class rests' : 'its class rests'} on a measurement too coarse for it. Measure with a smaller uncertainty.`;
+}
+
+// The rake error in a line, with what it does to the gear when the case has the hob's relief:
+// "Rake error: hook 2.1′ (0.050 mm into the tooth); the gear's pressure angle changes by −0.19′
+// (−4.8′ per degree of hook)." Null when the result has no rake error.
+export function rakeText(inspection, gearEffect, unitOf = describedUnit) {
+  const angle = num(inspection && inspection.rakeAngle), offset = num(inspection && inspection.rakeOffset);
+  if (angle === null || offset === null) return null;
+  const angleUnit = unitOf('inspection.rakeAngle'), offsetUnit = unitOf('inspection.rakeOffset');
+  const none = Number(fixed(Math.abs(angle), 1)) === 0 && Number(fixed(Math.abs(offset), 3)) === 0;
+  const hook = angle > 0;
+  let text = none ? `Rake error: none (${withUnit(fixed(0, 1), angleUnit)})`
+    : `Rake error: ${hook ? 'hook' : 'drag'} ${withUnit(fixed(Math.abs(angle), 1), angleUnit)} (${withUnit(fixed(Math.abs(offset), 3), offsetUnit)} ${
+      offset > 0 ? 'into the tooth' : offset < 0 ? 'out of the tooth' : 'across the face line'})`;
+  const per = num(gearEffect && gearEffect.pressureAnglePerDegreeOfRake);
+  const change = num(gearEffect && gearEffect.rakeErrorPressureAngle);
+  const perText = per === null ? '' : withUnit(minus(fixed(per, 1)), unitOf('gearEffect.pressureAnglePerDegreeOfRake'));
+  if (per !== null && change !== null && !none) {
+    text += `; the gear's pressure angle changes by ${withUnit(minus(signed(change, 2)), unitOf('gearEffect.rakeErrorPressureAngle'))} (${perText} of hook).`;
+  } else if (per !== null) {
+    text += `; a hook would change the gear's pressure angle by ${perText} of hook.`;
+  } else {
+    text += '. Enter the hob\'s relief (gashes z and relief K, or the side relief angle) to see what it does to the gear\'s pressure angle.';
+  }
+  return text;
+}
+
+// "Cumulative spread of the cutting faces (largest minus smallest gash deviation; information, not
+// graded): 10.000 µm; predicted after the correction 0.006 µm." Null without gash deviations.
+export function cumulativeText(inspection, unitOf = describedUnit) {
+  const v = num(inspection && inspection.cumulativeSpacing);
+  if (v === null) return null;
+  const unit = unitOf('inspection.cumulativeSpacing');
+  const after = num(inspection.after && inspection.after.cumulativeSpacing);
+  return `Cumulative spread of the cutting faces (largest minus smallest gash deviation; information, not graded): ${withUnit(fixed(v, 3), unit)}${
+    after === null ? '' : `; predicted after the correction ${withUnit(fixed(after, 3), unitOf('inspection.after.cumulativeSpacing'))}`}.`;
+}
+
+// One row per check computed: {check, label, unit, value, grade, gradeText, conformity, proven,
+// confidence, series, source, uncertainty, tolerances, after: {value, grade} | null}. gradeText
+// is the grade with a * when its tolerance is a series value. With the table in use and the band
+// (table, band, confidenceOf(check, klass) from tolerance-edit.js's cellConfidence), the class
+// tolerances carry the * of their own cells.
+export function inspectionRows(inspection, { unitOf = describedUnit, confidenceOf = null } = {}) {
   if (!inspection || !inspection.checks) return [];
   return Object.keys(CHECK_WORDS).filter((k) => inspection.checks[k]).map((k) => {
     const c = inspection.checks[k], a = inspection.after || {};
     const afterChecks = a.checks || {};
+    const graded = c.grade !== 'not graded';
+    const series = graded && c.confidence === 'series';
+    const star = (klass) => (confidenceOf && confidenceOf(k, klass) === 'series' ? '*' : '');
     return {
-      check: k, ...CHECK_WORDS[k], value: num(c.value), grade: c.grade,
-      tolerances: (c.classes || []).map((name, i) => `${name} ${fixed(c.tolerances[i], 1)}`).join(' · ') || 'none in the table',
+      check: k, label: label(k), unit: unitOf(`inspection.${k}`), value: num(c.value), grade: c.grade,
+      gradeText: `${c.grade}${series ? '*' : ''}`,
+      conformity: c.conformity, proven: graded ? c.provenGrade : '', confidence: c.confidence || '', series,
+      source: c.source || '', uncertainty: num(c.uncertainty),
+      tolerances: (c.classes || []).map((name, i) => `${name} ${fmt(c.tolerances[i], 4)}${star(name)}`).join(' · ') || 'none in the table',
       after: k in a || afterChecks[k] ? { value: num(a[k]), grade: afterChecks[k] ? afterChecks[k].grade : '' } : null,
     };
   });

@@ -1,8 +1,10 @@
 // The inspection's inputs as the page edits them (pure, with Node tests): the tolerance table
 // (the case's inspection.tolerances, docs/case-format.md; the default table until a cell is
-// edited) in the hob's module band, and the gash deviations at the pitch radius. Both live in
-// state.extra.inspection, so the case keeps them. A cell left blank has no tolerance (null); a
-// text that is not a number is kept as text, so that the calculator names the cell.
+// edited) in the hob's module band, the gash deviations at the pitch radius, and the
+// measurement's uncertainty U95 (inspection.uncertainty). All live in state.extra.inspection, so
+// the case, the link and the undo steps keep them. A cell left blank has no tolerance (null); a
+// text that is not a number is kept as text, so that the calculator names the cell. A cell typed
+// is the engineer's: where the table marks its cells' confidence, that cell becomes "entered".
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 const EDITED = 'edited on the page';
 
@@ -35,9 +37,25 @@ const withInspection = (extra, change) => {
   return next;
 };
 
+// The default table's marks spelled out: a cell it does not mark "series" is printed in the source
+// its row names (docs/inspection.md), while a case's table leaves unmarked cells "entered". So a
+// copy of the default table keeps every cell's mark.
+function withDefaultMarks(table) {
+  for (const entry of Object.values(table.checks || {})) {
+    if (!isObject(entry)) continue;
+    for (const [klass, row] of Object.entries(entry)) {
+      if (!Array.isArray(row) || ['source', 'seriesSource', 'confidence'].includes(klass)) continue;
+      const marks = entry.confidence = isObject(entry.confidence) ? entry.confidence : {};
+      const given = Array.isArray(marks[klass]) ? marks[klass] : [];
+      marks[klass] = row.map((_, b) => (typeof given[b] === 'string' ? given[b] : 'printed'));
+    }
+  }
+  return table;
+}
+
 // extra with the band's cell of (check, class) set from the text typed.
 export function withCell(extra, defaults, { band, check, klass, text }) {
-  const table = tableInUse(extra, defaults);
+  const table = isEdited(extra) ? tableInUse(extra, defaults) : withDefaultMarks(tableInUse(extra, defaults));
   const bands = table.moduleBands.length - 1;
   table.checks = table.checks || {};
   const entry = table.checks[check] = table.checks[check] || {};
@@ -46,6 +64,8 @@ export function withCell(extra, defaults, { band, check, klass, text }) {
   const t = text.trim().replace(',', '.');
   row[band] = t === '' ? null : Number.isFinite(Number(t)) ? Number(t) : text;
   entry[klass] = row;
+  const marks = isObject(entry.confidence) && entry.confidence[klass];
+  if (Array.isArray(marks) && band < marks.length) marks[band] = 'entered';
   if (!String(entry.source || '').endsWith(EDITED)) entry.source = entry.source ? `${entry.source}; ${EDITED}` : EDITED;
   return withInspection(extra, (i) => { i.tolerances = table; });
 }
@@ -86,4 +106,26 @@ export const gashTopographyCount = (extra) => {
 export const gashText = (extra) => {
   const list = extra && isObject(extra.inspection) && extra.inspection.gashDeviations;
   return Array.isArray(list) ? list.join(', ') : '';
+};
+
+// The cell's confidence as the table marks it ("printed", "series", "entered"); a cell the table
+// does not mark is "entered" in a case's table, "printed" in the default one (docs/inspection.md).
+export function cellConfidence(table, { band, check, klass, edited }) {
+  const entry = table && table.checks && table.checks[check];
+  const marks = entry && isObject(entry.confidence) && entry.confidence[klass];
+  const word = Array.isArray(marks) ? marks[band] : undefined;
+  return typeof word === 'string' ? word : edited ? 'entered' : 'printed';
+}
+
+// The measurement's uncertainty U95 typed (µm): blank is the calculator's default, so the case
+// leaves it out; a text that is not a number is kept, for the calculator to name the field.
+export const withUncertainty = (extra, text) => withInspection(extra, (i) => {
+  const t = String(text).trim().replace(',', '.').replace(/^\u2212/, '-');
+  if (t === '') delete i.uncertainty;
+  else i.uncertainty = Number.isFinite(Number(t)) ? Number(t) : String(text).trim();
+});
+
+export const uncertaintyText = (extra) => {
+  const u = extra && isObject(extra.inspection) ? extra.inspection.uncertainty : undefined;
+  return u === undefined || u === null ? '' : String(u);
 };

@@ -1,11 +1,13 @@
 // The printed report (the browser's print, A4 or Letter; the print stylesheet in style.css): a
-// head that only print shows, with the date, the hob, wheel and setup data, and the case link; the
-// views the record needs follow (the axes to run, the topography maps, the verdict and the
-// correction's tables), each kept whole on a page. For print the plots are redrawn to the paper's
+// head that only print shows, with the date, the rake face's class with its conformity and proven
+// class, the hob, wheel and setup data, and the case link; the views the record needs follow (the
+// axes to run, the topography maps led by the inspection, the verdict and the correction's
+// tables), each kept whole on a page. For print the plots are redrawn to the paper's
 // width, and back after.
 import { AXES } from '../limits.js';
 import { escapeHtml, fmt } from '../format.js';
 import { inputRows } from '../io/input-rows.js';
+import { classLead } from '../inspection-table.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -33,9 +35,19 @@ export function reportDateLine(caseObject, date = new Date()) {
   return `Printed ${date.toISOString().slice(0, 10)}; ${measured}.`;
 }
 
+// The inspection's line in the report's head: the class with its conformity and the proven class,
+// "Rake face (DIN 3968): Class A — conforms (ISO 14253-1, U95 = 2 µm); proven class A." ('' without
+// an inspection). The verdict's sentence and the checks lead the topography's page.
+export function reportInspectionLine(inspection) {
+  const lead = classLead(inspection);
+  if (!lead) return '';
+  return `Rake face (DIN 3968): ${lead.graded ? `${lead.text}.` : inspection.notGraded || 'Not graded.'}`;
+}
+
 export function mountReport(store) {
   store.on('result', ({ result, caseObject }) => {
     $('#report-date').textContent = reportDateLine(caseObject);
+    $('#report-inspection').textContent = reportInspectionLine(result.inspection);
     const rows = reportRows(result, caseObject);
     $('#report-inputs').innerHTML = `<table class="grid-table"><thead><tr><th>group</th><th>field</th><th>value</th></tr></thead><tbody>${
       rows.map((r) => `<tr>${r.map((c) => `<td>${escapeHtml(c)}</td>`).join('')}</tr>`).join('')}</tbody></table>`;

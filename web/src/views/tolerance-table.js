@@ -1,13 +1,15 @@
-// The inspection's inputs under its table (web/src/tolerance-edit.js): the tolerance table's
-// cells for the hob's module band, AA to D per check, with a button back to the default table;
-// and the gash deviations at the pitch radius, for the spacing checks and the indexing correction.
-// The case keeps both (inspection.tolerances, inspection.gashDeviations); a refused value is named
-// here, and the details open to show it.
+// The inspection's inputs (web/src/tolerance-edit.js): under its table, the tolerance table's
+// cells for the hob's module band, AA to D per check (a * on a series value, not confirmed), with
+// a button back to the default table, and the gash deviations at the pitch radius, for the spacing
+// checks and the indexing correction; at the class, the measurement's uncertainty U95. The case
+// keeps them (inspection.tolerances, inspection.gashDeviations, inspection.uncertainty); a refused
+// value is named at its input, and the details open to show it.
 import { INSPECTION } from '../limits.js';
-import { CHECK_WORDS } from '../inspection-table.js';
-import { escapeHtml } from '../format.js';
-import { cellTexts, gashText, gashTopographyCount, isEdited, parseGashDeviations, tableInUse, withCell, withDefaultTable, withGashDeviations,
-  withGashTopographies } from '../tolerance-edit.js';
+import { CHECK_WORDS, SERIES_NOTE } from '../inspection-table.js';
+import { escapeHtml, fmt } from '../format.js';
+import { fieldUnit } from '../result-fields.js';
+import { cellConfidence, cellTexts, gashText, gashTopographyCount, isEdited, parseGashDeviations, tableInUse, uncertaintyText, withCell,
+  withDefaultTable, withGashDeviations, withGashTopographies, withUncertainty } from '../tolerance-edit.js';
 import { readGashTopographies } from '../io/gash-files.js';
 import { MAX_MEASURED_BYTES } from '../io/csv.js';
 
@@ -20,6 +22,8 @@ function setError(text) {
   if (text) $('#tolerance-editor').open = true;
 }
 
+const label = (check) => (CHECK_WORDS[check] || { label: check }).label;
+
 function render(state) {
   const r = state.result;
   if (!r || !r.inspection || !INSPECTION.defaultTolerances) return;
@@ -28,17 +32,21 @@ function render(state) {
   const edited = isEdited(state.extra);
   $('#tolerance-band').textContent = band < 0
     ? `The hob's normal module lies outside the table's bands (${table.moduleBands[0]} to ${table.moduleBands[table.moduleBands.length - 1]} mm): nothing to grade.`
-    : `Tolerances in µm (gash lead in µm per 100 mm) for the band over ${table.moduleBands[band]} to ${table.moduleBands[band + 1]} mm of normal module, from ${
-      edited ? 'the table this case carries (edited)' : 'the default table (DIN 3968 as the README cites it)'}. Blank: no tolerance, not graded.`;
+    : `Tolerances for the band over ${table.moduleBands[band]} to ${table.moduleBands[band + 1]} mm of normal module, from ${
+      edited ? 'the table this case carries (edited)' : 'the default table (DIN 3968; sources in docs/inspection.md)'}. Blank: no tolerance, not graded. *: ${SERIES_NOTE}.`;
   $('#tolerance-default').disabled = !edited;
   const texts = cellTexts(table, Math.max(band, 0), INSPECTION.checks, INSPECTION.classes);
   $('#tolerance-table thead').innerHTML = `<tr><th>check</th>${INSPECTION.classes.map((k) => `<th>${k}</th>`).join('')}</tr>`;
   const active = document.activeElement;
   if (active && active.closest && active.closest('#tolerance-table')) return;  // not under the user's typing
+  const unit = (check) => fieldUnit(`inspection.checks.${check}.tolerances`) || '';
   $('#tolerance-table tbody').innerHTML = INSPECTION.checks.map((check) => `<tr data-check="${check}"><th>${
-    escapeHtml((CHECK_WORDS[check] || { label: check }).label)}</th>${INSPECTION.classes.map((k) =>
-    `<td><input type="text" inputmode="decimal" size="5" data-check="${check}" data-class="${k}" value="${escapeHtml(texts[check][k])}"${
-      band < 0 ? ' disabled' : ''} aria-label="${escapeHtml(`${(CHECK_WORDS[check] || { label: check }).label}, class ${k}`)}"></td>`).join('')}</tr>`).join('');
+    escapeHtml(label(check))} <span class="unit">${escapeHtml(unit(check))}</span></th>${INSPECTION.classes.map((k) => {
+    const series = band >= 0 && texts[check][k] !== '' && cellConfidence(table, { band, check, klass: k, edited }) === 'series';
+    return `<td${series ? ' data-confidence="series"' : ''}><input type="text" inputmode="decimal" size="5" data-check="${check}" data-class="${k}" value="${
+      escapeHtml(texts[check][k])}"${band < 0 ? ' disabled' : ''} aria-label="${escapeHtml(`${label(check)}, class ${k}${series ? `, ${SERIES_NOTE}` : ''}`)}">${
+      series ? `<span class="series-mark" title="${escapeHtml(SERIES_NOTE)}">*</span>` : ''}</td>`;
+  }).join('')}</tr>`).join('');
   if (document.activeElement !== $('#gash-deviations')) $('#gash-deviations').value = gashText(state.extra);
   const n = gashTopographyCount(state.extra);
   $('#gash-deviations').placeholder = n ? `from the ${n} gash topographies` : '0, 1.5, -2, …';
@@ -53,6 +61,27 @@ async function chosenTexts(input) {
     if (f.size > MAX_MEASURED_BYTES) throw new Error(`${f.name} is ${(f.size / 1048576).toFixed(1)} MB; a measured grid is a few hundred kB.`);
     return { name: f.name, text: await f.text() };
   }));
+}
+
+// The uncertainty's input: its text, its unit as the result states it, its default and range.
+function renderUncertainty(state) {
+  const input = $('#inspection-uncertainty');
+  if (document.activeElement !== input) input.value = uncertaintyText(state.extra);
+  const u = INSPECTION.uncertainty;
+  const unit = fieldUnit('inspection.uncertainty') || '';
+  $('#inspection-uncertainty-unit').textContent = unit;
+  if (!u) return;
+  input.placeholder = fmt(u.default, 3);
+  $('#inspection-uncertainty-hint').textContent = `ISO 14253-1: a check conforms within its tolerance less U, fails beyond it plus U. Blank: ${
+    fmt(u.default, 3)} ${unit}; ${fmt(u.min, 3)} to ${fmt(u.max, 3)} ${unit}.`;
+}
+
+function setUncertaintyError(text) {
+  const input = $('#inspection-uncertainty');
+  $('#inspection-uncertainty-error').textContent = text || '';
+  $('#inspection-uncertainty-error').hidden = !text;
+  input.classList.toggle('invalid', Boolean(text));
+  if (text) input.setAttribute('aria-invalid', 'true'); else input.removeAttribute('aria-invalid');
 }
 
 export function mountToleranceTable(store) {
@@ -90,9 +119,17 @@ export function mountToleranceTable(store) {
     commit(withGashTopographies(store.state.extra, null), event);
     $('#gash-files-read').textContent = '';
   });
-  store.on('result', (_, state) => { setError(''); render(state); });
-  store.on('restore', () => { if (store.state.result) render(store.state); });
+  $('#inspection-uncertainty').addEventListener('change', (event) => {
+    setUncertaintyError('');
+    store.setInputs({ extra: withUncertainty(store.state.extra, event.target.value) }, { source: 'inspection', at: event.timeStamp });
+    store.emit('commit');
+  });
+  store.on('limits', () => renderUncertainty(store.state));
+  store.on('result', (_, state) => { setError(''); setUncertaintyError(''); render(state); renderUncertainty(state); });
+  store.on('restore', () => { renderUncertainty(store.state); if (store.state.result) render(store.state); });
   store.on('refusal', ({ error, caseObject }) => {
-    if (caseObject && isInspectionField(error.field)) setError(error.message);
+    if (!caseObject || !isInspectionField(error.field)) return;
+    if (error.field === 'inspection.uncertainty') setUncertaintyError(error.message);
+    else setError(error.message);
   });
 }
