@@ -1,5 +1,5 @@
-// Which directions of the linearised face an identification takes (machine_error.cpp,
-// wheel_error.cpp; README, "Correction"). Along each singular direction of the Jacobian the data's
+// Which directions of the linearised face an identification takes (identification.h; README,
+// "Correction"). Along each singular direction of the Jacobian the data's
 // component c_i is the probe noise (sigma per point) plus the signal:
 //   - a direction is left out as within the noise when |c_i| <= significance * sigma;
 //   - a direction whose step |c_i| / s_i exceeds spanAmplification times the step the strongest
@@ -27,7 +27,7 @@ struct DirectionDecision {
 // s: singular values, largest first; c: the data's components along the left singular vectors;
 // dataNorm: |data|; points: the measured values (the noise floor's count). With
 // Wild::LeftOut the wild directions are never taken: the axes' and the wheel's directions when the
-// wheel is in the model (wheel_error.cpp), where a wild direction of either chases the other's shapes.
+// wheel is in the model (wheel_error.h), where a wild direction of either chases the other's shapes.
 enum class Wild { TakenWhenNeeded, LeftOut };
 DirectionDecision decideDirections(const Eigen::VectorXd& s, const Eigen::VectorXd& c, double dataNorm, int points,
                                    const CorrectionOptions& o, Wild wild = Wild::TakenWhenNeeded);

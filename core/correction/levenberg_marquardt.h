@@ -1,7 +1,7 @@
-// The one Levenberg-Marquardt solve of the identifications (machine_error.cpp, wheel_error.cpp):
-// Eigen's LevenbergMarquardt (MINPACK's lmder) with the tolerances of LeastSquaresOptions, from
-// theta, for at most the iterations the summary has left. The residual functor caches its faces in
-// `cache` (face_cache.h), which counts the trial faces the wheel cannot grind (rejected steps).
+// The one Levenberg-Marquardt solve of the identification (identification.cpp): Eigen's
+// LevenbergMarquardt (MINPACK's lmder) with the tolerances of LeastSquaresOptions, from theta, for
+// at most the iterations the summary has left. The residual functor counts in `unsolvable` the
+// trial faces the wheel cannot grind (rejected steps).
 #pragma once
 
 #include <string>
@@ -41,7 +41,7 @@ bool solveLeastSquares(Residual& residual, Eigen::VectorXd& theta, const LeastSq
     ++iterations;
   } while (status == Running && iterations < left);
   summary.iterations += iterations;
-  describeSolve(summary, status, residual.cache.unsolvable, o, makes);
+  describeSolve(summary, status, residual.unsolvable, o, makes);
   return true;
 }
 

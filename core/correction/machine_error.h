@@ -1,9 +1,10 @@
 // Identify, then compensate: the machine error E (its actual axes minus the commanded ones) that
 // made the measured face when `run` was commanded, by nonlinear least squares on the simulated
 // face: minimise |face(run + E) - measured|² over E, with the analytic Jacobian (Eqs. 13-16) at
-// the current estimate. E is sought only in the directions of the identifiable space
-// (structural_null_space.h) that the measurement shows above the probe noise, decided once,
-// before the solve, on the linearisation at E = 0.
+// the current estimate. It is the identification (identification.h) with one parameter block:
+// E in the directions of the identifiable space (structural_null_space.h), each a machine step,
+// taken where the measurement shows them above the probe noise (direction_decision.h), decided at
+// E = 0 and again at the solution.
 #pragma once
 
 #include <vector>

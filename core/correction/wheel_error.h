@@ -1,8 +1,8 @@
 // Identify, then compensate, with the wheel (README §Wheel-profile correction, `correction.wheel`):
 // the machine error E and the wheel's deviation W from the case's wheel that together made the
 // measured face when `run` was commanded: minimise |face(run + E; wheel + W) - measured|² over E
-// and W by the solver of machine_error.h (Eigen's LevenbergMarquardt), with the analytic Jacobian
-// to both (Eqs. 13-16 for E, wheel_offset_sensitivity.h for W).
+// and W by the identification (identification.h) with two parameter blocks, the axes and then the
+// wheel, with the analytic Jacobian to both (Eqs. 13-16 for E, wheel_offset_sensitivity.h for W).
 //
 // W is a natural cubic spline through a few points over the wheel radii the grid is ground with
 // (wheelKnots), in µm, added to the case's wheel along the profile normal (wheel_surface.h).
