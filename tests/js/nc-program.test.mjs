@@ -11,7 +11,7 @@ import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { setModuleLimits } from '../../web/src/limits.js';
-import { NC_DIALECTS, ncProgram } from '../../wasm/lib/nc-program.js';
+import { NC_DIALECTS, heidenhainK, ncProgram, sinumerikReal } from '../../wasm/lib/nc-program.js';
 import { axesToRun, coefficientsText, machineCoefficients, positionsCsv, programFor, programNote } from '../../web/src/machine-axes.js';
 import { AXES, readHeidenhain, readSinumerik } from './nc-interpreter.mjs';
 
@@ -285,6 +285,19 @@ test('the header names the job from the case\'s job, in plain ASCII; the file is
   assert.match(none.text, /; Job: \(none given\)\n/);
   assert.equal(none.fileName, 'HOBSHARP_M7_20261126.mpf');
   assert.match(programNote(none), /^1 POLY block of degree 5 at most; largest deviation from the axes [\d.e-]+ µm \(X, Y, Z\), [\d.e-]+° \(A, B\)\.$/);
+});
+
+test('numbers as the controls write them: Sinumerik plain decimals or EX, HEIDENHAIN K mantissa and exponent', () => {
+  assert.equal(sinumerikReal(-2.62109120000001e-9, 10), '-2.6210912EX-9');
+  assert.equal(sinumerikReal(139.509430167272, 10), '139.5094302');
+  assert.equal(sinumerikReal(0.000123456789012, 10), '0.000123456789');
+  assert.equal(sinumerikReal(-0.00030000000000000003, 10), '-0.0003');
+  assert.equal(sinumerikReal(0, 10), '0');
+  assert.equal(heidenhainK(159.8338), '+1.598338 E+2');
+  assert.equal(heidenhainK(-0.0003), '-3.0 E-4');
+  assert.equal(heidenhainK(-7.30849938), '-7.30849938');
+  assert.equal(heidenhainK(9.999999996), '+1.0 E+1');
+  assert.equal(heidenhainK(0), '+0.0');
 });
 
 test('a program the control cannot take is refused in words', () => {

@@ -109,9 +109,10 @@ export function sinumerikReal(x, digits) {
 // A HEIDENHAIN spline parameter K: a signed mantissa of up to 8 decimals, with the exponent
 // written after it when the value is not between 1 and 10 in size (K3X-2.62109123 E-3).
 export function heidenhainK(x) {
-  if (x === 0) return '+0';
+  if (x === 0) return '+0.0';
   const [m, e] = x.toExponential(K_DECIMALS).split('e');
-  const mantissa = fixed(Number(m), K_DECIMALS);
+  // Always with a decimal point, as the manuals write every K (K3X+1.2750 E2, K2B-0.413 E+2).
+  const mantissa = fixed(Number(m), K_DECIMALS).replace(/^(-?\d+)$/, '$1.0');
   const exponent = Number(e);
   return `${mantissa.startsWith('-') ? '' : '+'}${mantissa}${exponent === 0 ? '' : ` E${exponent > 0 ? '+' : ''}${exponent}`}`;
 }
