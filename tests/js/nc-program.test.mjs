@@ -195,6 +195,9 @@ test('degree-6 axes: quintic pieces within 0.01 µm and 1e-6 deg; cubic ones too
   for (const dialect of NC_DIALECTS) {
     const p = programFor(result, caseObject, dialect, { digits });
     assert.ok(p.pieces > 1, `${dialect}: ${p.pieces} pieces`);
+    // Full blocks (five axes, degree 5) stay under 512 characters a block.
+    const longest = Math.max(...p.text.split('\n').map((l) => l.length));
+    assert.ok(longest <= 512, `${dialect}: a block of ${longest} characters`);
     let worst;
     if (dialect === 'heidenhain') {
       worst = deviation(result, axes, heidenhainPosition(readHeidenhain(p.text), lo, hi));
