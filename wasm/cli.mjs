@@ -8,15 +8,21 @@
 //   --points-out prefix  writes prefix-measured.csv and prefix-predicted.csv: the measured points
 //                        and the face predicted after the correction at them (needs --points or
 //                        the case's measuredPoints off the grid)
+//   --nc CONTROL         prints the NC program of the axes to run instead of the JSON (CONTROL:
+//                        sinumerik, sinumerik-cubic or heidenhain; docs/nc-programs.md), the
+//                        same axes and program the page offers under "Axes to run"
 // The X3P options (wasm/cli-x3p.mjs) read the measured grid from an .x3p and write the result's
 // topographies as .x3p files.
 import { readFileSync, writeFileSync } from 'node:fs';
 import { loadHobSharp } from './hobsharp.mjs';
 import { pointsToCsv, readPoints } from '../web/src/io/points-import.js';
 import { X3P_USAGE, caseWithMeasuredX3p, takeX3pOptions, writeResultX3p } from './cli-x3p.mjs';
+import { NC_DIALECTS } from './lib/nc-program.js';
+import { setModuleLimits } from '../web/src/limits.js';
+import { programFor } from '../web/src/machine-axes.js';
 
 const usage = (why = '') => {
-  process.stderr.write(`${why}usage: node wasm/cli.mjs case.json [--points points.csv] [--points-out prefix] ${X3P_USAGE}\n`);
+  process.stderr.write(`${why}usage: node wasm/cli.mjs case.json [--points points.csv] [--points-out prefix] [--nc ${NC_DIALECTS.join('|')}] ${X3P_USAGE}\n`);
   process.exit(2);
 };
 const argv = [...process.argv];
@@ -27,9 +33,13 @@ try {
   usage(`${e.message}\n`);
 }
 const args = argv.slice(2);
-let file, pointsFile, pointsOut;
+let file, pointsFile, pointsOut, nc;
 for (let i = 0; i < args.length; ++i) {
   if (args[i] === '--points' && i + 1 < args.length) pointsFile = args[++i];
+  else if (args[i] === '--nc' && i + 1 < args.length) {
+    nc = args[++i];
+    if (!NC_DIALECTS.includes(nc)) usage(`--nc: the control must be one of ${NC_DIALECTS.join(', ')}; got ${nc}.\n`);
+  }
   else if (args[i] === '--points-out' && i + 1 < args.length) pointsOut = args[++i];
   else if (!args[i].startsWith('--') && file === undefined) file = args[i];
   else usage();
@@ -81,7 +91,15 @@ try {
     writeFileSync(`${pointsOut}-predicted.csv`, pointsToCsv(c.pointResidual));
   }
   writeResultX3p(JSON.parse(json), caseText, x3p).forEach((f) => process.stderr.write(`wrote ${f}\n`));
-  process.stdout.write(json + '\n');
+  if (nc) {
+    // The program of the axes the page shows under "Axes to run" (web/src/machine-axes.js).
+    const limits = hobsharp.limits();
+    setModuleLimits(limits);
+    const program = programFor(JSON.parse(json), JSON.parse(caseText), nc, { digits: limits.correction.coefficientDigits });
+    process.stdout.write(program.text);
+  } else {
+    process.stdout.write(json + '\n');
+  }
 } catch (e) {
   process.stderr.write(x3p.measured && e.message.startsWith(`${x3p.measured}:`) ? `${e.message}\n` : `${pointsFile || file}: ${e.message}\n`);
   process.exit(1);

@@ -8,6 +8,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { afterResult, base, openPage, shots, useBrowser } from './support.mjs';
+import { readHeidenhain, readSinumerik } from '../js/nc-interpreter.mjs';
 
 useBrowser();
 
@@ -47,6 +48,32 @@ test('the axes to run: degrees, the rounded proposal, copied and sampled', async
   await page.fill('#positions-step', '0');
   await page.click('#download-positions');
   assert.match(await page.textContent('#positions-note'), /^Step: must be a positive number of degrees; got 0\.$/);
+  // The positions with decimal commas, when the page's CSV style says so.
+  await page.fill('#positions-step', '2');
+  await page.selectOption('#csv-style', 'semicolon');
+  const [semicolon] = await Promise.all([page.waitForEvent('download'), page.click('#download-positions')]);
+  const german = readFileSync(await semicolon.path(), 'utf8').split('\n');
+  assert.equal(german[0], '\uFEFFhob rotation (deg);X (mm);Y (mm);Z (mm);A (deg);B (deg)');
+  assert.match(german[1], /^-?\d+,\d{6}(;-?\d+,\d{6}){5}$/);
+  await page.selectOption('#csv-style', 'comma');
+  // The NC program of the axes shown (issue 22): its blocks and deviation beside the buttons,
+  // copied for a Sinumerik, downloaded for a HEIDENHAIN, both read back by the tests' interpreter.
+  assert.match(await page.textContent('#nc-note'), /^1 POLY block of degree 5 at most; largest deviation from the axes [\d.e-]+ µm \(X, Y, Z\), [\d.e-]+° \(A, B\)\.$/);
+  await page.click('#copy-nc');
+  const program = await page.evaluate(() => navigator.clipboard.readText());
+  assert.match(program, /^; HobSharp NC program: Siemens SINUMERIK 840D sl/);
+  assert.match(program, /\n; Axes: the corrected proposal, as the NC program carries it\n/);
+  assert.match(program, /\nN10 G90 G1 X-?[\d.]+ Y-?[\d.]+ Z-?[\d.]+ A-?[\d.]+ B-?[\d.]+\nN20 POLY X=PO\(/);
+  const sinumerik = readSinumerik(program);
+  assert.equal(sinumerik.segments.length, 1);
+  assert.match(await page.textContent('#status'), /NC program \(HOBSHARP_M7_\d{8}\.mpf\) is on the clipboard/);
+  await page.selectOption('#nc-dialect', 'heidenhain');
+  assert.match(await page.textContent('#nc-note'), /^\d+ SPL blocks? of degree 3 at most; largest deviation from the axes 0\.0\d+ µm \(X, Y, Z\), [\d.e-]+° \(A, B\)\.$/);
+  const [nc] = await Promise.all([page.waitForEvent('download'), page.click('#download-nc')]);
+  assert.match(nc.suggestedFilename(), /^HOBSHARP_M7_\d{8}\.h$/);
+  const tnc = readHeidenhain(readFileSync(await nc.path(), 'utf8'));
+  assert.ok(tnc.blocks.length >= 1);
+  assert.ok(Math.abs(tnc.start.B - b0) < 0.05, `the program starts B near its a0 (${tnc.start.B} deg, ${b0} deg)`);
   await page.locator('#machine-axes').screenshot({ path: path.join(shots, 'machine-axes.png') });
   assert.deepEqual(page.problems, []);
   await page.context().close();

@@ -26,7 +26,8 @@ test('the converted polynomials give the same positions as the calculator\'s in 
   }
   assert.equal(machineUnit('B', 2, true), 'deg/deg^2');
   assert.equal(machineUnit('X', 1, false), 'mm/mm');
-  assert.match(coefficientsText(m, true, 10), /^X \(mm\) = [-\d.e]+ [+-] [\d.e-]+ \* phi \(deg\) /);
+  // The nominal X is linear in phi: no "+ 0 * phi (deg)^2" terms (issue 22).
+  assert.match(coefficientsText(m, true, 10), /^X \(mm\) = [-\d.e]+ [+-] [\d.e-]+ \* phi \(deg\)\n/);
 });
 
 // With a correction: the rounded axes as the program carries them, copied to the same digits, and
@@ -66,7 +67,8 @@ test('the table of positions: every step from the start, both ends, the values o
   assert.ok(Math.abs(B - inRad(r.axes.B, phi * Math.PI / 180) * 180 / Math.PI) < 1e-9);
   const csv = positionsCsv(rows, true).split('\n');
   assert.equal(csv[0], '\uFEFFhob rotation (deg),X (mm),Y (mm),Z (mm),A (deg),B (deg)');
-  assert.deepEqual(csv[1].split(',').map(Number), rows[0]);
+  // Written to 6 decimals (1 nm, 1e-6 deg): no floating-point noise (issue 22).
+  assert.ok(csv[1].split(',').every((v, k) => /^-?\d+\.\d{6}$/.test(v) && Math.abs(Number(v) - rows[0][k]) <= 5e-7), csv[1]);
   assert.throws(() => axisPositions(r.axes, r.motion.min, r.motion.max, 0, true), /^Error: Step: must be a positive number of degrees; got 0\.$/);
   assert.throws(() => axisPositions(r.axes, r.motion.min, r.motion.max, 1e-6, true), /more than 10001 rows/);
   assert.throws(() => axisPositions(r.axes, r.motion.min, r.motion.max, NaN, true), /positive number/);

@@ -77,7 +77,7 @@ test('bad X3P files and options: the file and the element named on stderr, exit 
   assert.match(run(paperFile, '--measured-x3p', path.join(dir, 'none.x3p')).stderr, /none\.x3p: no such file/);
   const usage = run(paperFile, '--measured-x3p');
   assert.equal(usage.status, 2);
-  assert.match(usage.stderr, /^--measured-x3p needs a value\nusage: node wasm\/cli\.mjs case\.json \[--points points\.csv\] \[--points-out prefix\] \[--measured-x3p file\.x3p\] \[--x3p-out prefix\]\n$/);
+  assert.match(usage.stderr, /^--measured-x3p needs a value\nusage: node wasm\/cli\.mjs case\.json \[--points points\.csv\] \[--points-out prefix\] \[--nc sinumerik\|sinumerik-cubic\|heidenhain\] \[--measured-x3p file\.x3p\] \[--x3p-out prefix\]\n$/);
   // A case the calculator refuses is still named by its own file.
   const broken = paper();
   broken.hob.rakeOffset = 40;

@@ -5,6 +5,7 @@
 import { AXES, isRotary } from './limits.js';
 import { fmt } from './format.js';
 import { polynomialAt } from './polynomial.js';
+import { ncProgram } from '../../wasm/lib/nc-program.js';
 
 const DEG = 180 / Math.PI;
 
@@ -43,9 +44,21 @@ export function axisPositions(axes, min, max, step, helical) {
   return rows;
 }
 
-export function positionsCsv(rows, helical) {
+// A position as the table writes it: POSITION_DECIMALS decimals (1 nm, 1e-6 deg: ten times finer
+// than the machine's 0.1 µm and 1e-4 deg), no negative zero.
+export const POSITION_DECIMALS = 6;
+export function positionText(x, decimals = POSITION_DECIMALS) {
+  const s = x.toFixed(decimals);
+  return /^-0\.?0*$/.test(s) ? s.slice(1) : s;
+}
+
+// The positions as CSV: a comma and a decimal point, or (decimalComma, the page's "1,5; 2,5"
+// choice) a semicolon and a decimal comma as a German spreadsheet reads them.
+export function positionsCsv(rows, helical, { decimalComma = false } = {}) {
+  const sep = decimalComma ? ';' : ',';
+  const num = (x) => (decimalComma ? positionText(x).replace('.', ',') : positionText(x));
   const head = [helical ? 'hob rotation (deg)' : 'travel (mm)', ...AXES.map((a) => `${a} (${isRotary(a) ? 'deg' : 'mm'})`)];
-  return '\uFEFF' + [head.join(','), ...rows.map((r) => r.join(','))].join('\n') + '\n';
+  return '\uFEFF' + [head.join(sep), ...rows.map((r) => r.map(num).join(sep))].join('\n') + '\n';
 }
 
 // A coefficient as the NC program carries it: `digits` significant digits (limits().correction.
@@ -56,7 +69,17 @@ export const programmed = (c, digits) => String(Number(c.toPrecision(digits)));
 export function coefficientsText(m, helical, digits) {
   const symbol = helical ? 'phi (deg)' : 's (mm)';
   const p = (c) => programmed(c, digits);
-  return AXES.map((a) => `${a} (${isRotary(a) ? 'deg' : 'mm'}) = ${m[a].map((c, k) => (k === 0 ? p(c) : `${c >= 0 ? '+ ' : '- '}${p(Math.abs(c))} * ${symbol}${k > 1 ? `^${k}` : ''}`)).join(' ')}`).join('\n') + '\n';
+  // A term that rounds to 0 is left out (no "+ 0 * phi^2"); an axis with none left reads 0.
+  const line = (a) => {
+    const terms = m[a].map((c, k) => [Number(p(c)), k]).filter(([c]) => c !== 0);
+    if (!terms.length) return '0';
+    return terms.map(([c, k], i) => {
+      const sign = c < 0 ? '-' : '+';
+      const value = k === 0 ? p(Math.abs(c)) : `${p(Math.abs(c))} * ${symbol}${k > 1 ? `^${k}` : ''}`;
+      return i === 0 ? `${c < 0 ? '-' : ''}${value}` : `${sign} ${value}`;
+    }).join(' ');
+  };
+  return AXES.map((a) => `${a} (${isRotary(a) ? 'deg' : 'mm'}) = ${line(a)}`).join('\n') + '\n';
 }
 
 // The face predicted with the rounded axes and the pass's floor the position resolution sets, in
@@ -69,4 +92,61 @@ export function roundedFiguresText(c, unitOf) {
   };
   return `With these axes the face is predicted at ${v('correction.rmsRounded')} rms (re-simulated). ` +
     `The floor the position resolution sets (each axis position quantised to its step): ${v('correction.resolutionFloor')} rms.`;
+}
+
+// The axes shown under "Axes to run" and written to the NC program, chosen alike by the page and
+// the CLI: with a correction its proposal as the program carries it (correction.roundedAxes);
+// when the correction says stop (the face measured is within the probe noise) the axes run stay;
+// else the case's axes (the axes run) or the nominal ones. caseAxes: the case's `axes`, if any.
+export function axesToRun(result, caseAxes) {
+  const c = result.correction;
+  if (c && c.stop === true) {
+    return { axes: result.runAxes || caseAxes || result.axes, kind: 'run',
+      words: 'the axes run: keep them; the face measured is within the probe noise' };
+  }
+  if (c && c.roundedAxes) return { axes: c.roundedAxes, kind: 'corrected', words: 'the corrected proposal, as the NC program carries it' };
+  if (caseAxes) return { axes: caseAxes, kind: 'run', words: 'the axes run; no correction' };
+  return { axes: result.axes, kind: 'nominal', words: 'nominal; no correction' };
+}
+
+// The hob as the program's header names it, from the case: module, outer diameter, gash.
+export function hobWords(hob = {}) {
+  const parts = [];
+  if (Number.isFinite(hob.normalModule)) parts.push(`module ${hob.normalModule} mm`);
+  if (Number.isFinite(hob.outerDiameter)) parts.push(`outer diameter ${hob.outerDiameter} mm`);
+  const gash = hob.gash || 'helical';
+  parts.push(gash === 'straight' ? 'straight gash' : `helical gash, ${hob.hand || 'right'} hand${Number.isFinite(hob.gashLead) ? `, lead ${hob.gashLead} mm` : ''}`);
+  if (Number.isFinite(hob.gashes)) parts.push(`${hob.gashes} gashes`);
+  return parts.join(', ');
+}
+
+// The NC program for the axes to run (wasm/lib/nc-program.js), for a result and the case it came
+// from: the same axes, header and digits on the page and from the CLI.
+export function programFor(result, caseObject, dialect, { date = new Date(), digits } = {}) {
+  const helical = result.setup.motionUnit === 'rad';
+  const { axes, words } = axesToRun(result, caseObject && caseObject.axes);
+  const c = result.correction;
+  const toProgram = (x) => (helical ? x * DEG : x);
+  return ncProgram({
+    axes: machineCoefficients(axes, helical),
+    helical,
+    motion: { min: toProgram(result.motion.min), max: toProgram(result.motion.max) },
+    dialect,
+    digits,
+    header: {
+      job: caseObject && caseObject.job,
+      hob: hobWords(caseObject && caseObject.hob),
+      module: caseObject && caseObject.hob && caseObject.hob.normalModule,
+      axesWords: words,
+      date: date.toISOString().slice(0, 10),
+      rounding: c && c.roundedAxes && c.stop !== true ? { rmsRounded: c.rmsRounded, resolutionFloor: c.resolutionFloor } : null,
+    },
+  });
+}
+
+// The program in words beside its buttons: its blocks and its largest deviation from the axes.
+export function programNote(p) {
+  const kind = p.dialect === 'heidenhain' ? 'SPL' : 'POLY';
+  return `${p.pieces} ${kind} block${p.pieces > 1 ? 's' : ''} of degree ${p.degree} at most; largest deviation from the axes ` +
+    `${fmt(p.largestDeviation.linear, 2)} µm (X, Y, Z), ${fmt(p.largestDeviation.rotary, 2)}° (A, B).`;
 }

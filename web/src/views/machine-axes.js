@@ -6,22 +6,16 @@
 import { AXES, CORRECTION } from '../limits.js';
 import { fieldUnit } from '../result-fields.js';
 import { download } from '../io/files.js';
-import { axisPositions, coefficientsText, machineCoefficients, machineUnit, positionsCsv, programmed, roundedFiguresText } from '../machine-axes.js';
+import { axesToRun, axisPositions, coefficientsText, machineCoefficients, machineUnit, positionsCsv, programFor, programNote, programmed, roundedFiguresText } from '../machine-axes.js';
 
 const $ = (selector) => document.querySelector(selector);
 
-// The axes shown, and in words which they are. When the correction says stop (the face measured
-// is within the probe noise) the axes run stay: those are shown, not a proposal.
+// The axes shown, and in words which they are (axesToRun: the CLI's NC program takes the same).
 function axesOf(state) {
-  const r = state.result, c = r.correction;
-  if (c && c.stop === true) {
-    return { axes: r.runAxes || (state.resultCase && state.resultCase.axes) || r.axes,
-      source: '(the axes run: keep them; the face measured is within the probe noise)' };
-  }
-  if (c && c.roundedAxes) return { axes: c.roundedAxes, source: '(the corrected proposal, as the NC program carries it)' };
-  if (state.resultCase && state.resultCase.axes) return { axes: state.resultCase.axes, source: '(the axes run; no correction)' };
-  return { axes: r.axes, source: '(nominal; no correction)' };
+  const { axes, words } = axesToRun(state.result, state.resultCase && state.resultCase.axes);
+  return { axes, source: `(${words})` };
 }
+const programOf = (state) => programFor(state.result, state.resultCase, $('#nc-dialect').value, { digits: CORRECTION.coefficientDigits });
 
 export function mountMachineAxes(store) {
   const helical = () => store.state.result.setup.motionUnit === 'rad';
@@ -36,7 +30,43 @@ export function mountMachineAxes(store) {
     $('#machine-coefficients thead').innerHTML = `<tr><th>axis</th>${Array.from({ length: degree + 1 }, (_, k) => `<th>a${k}</th>`).join('')}</tr>`;
     $('#machine-coefficients tbody').innerHTML = AXES.map((a) => `<tr data-axis="${a}"><th>${a}</th>${m[a].map((c, k) =>
       `<td class="num" title="${machineUnit(a, k, h)}">${programmed(c, CORRECTION.coefficientDigits)} <span class="unit">${machineUnit(a, k, h)}</span></td>`).join('')}</tr>`).join('');
+    noteProgram(state);
   }
+  // The NC program's blocks and deviation beside its buttons, for the control chosen.
+  function noteProgram(state) {
+    const note = $('#nc-note');
+    try {
+      note.textContent = programNote(programOf(state));
+    } catch (e) {
+      note.textContent = e.message;
+    }
+  }
+  $('#nc-dialect').addEventListener('change', () => { if (store.state.result) noteProgram(store.state); });
+  $('#copy-nc').addEventListener('click', async () => {
+    if (!store.state.result) return;
+    let program;
+    try {
+      program = programOf(store.state);
+    } catch (e) {
+      $('#nc-note').textContent = e.message;
+      return;
+    }
+    try {
+      await navigator.clipboard.writeText(program.text);
+      store.setStatus(`The NC program (${program.fileName}) is on the clipboard.`, 'ok');
+    } catch (e) {
+      store.setStatus('The clipboard is not available here: download the NC program instead.', 'error');
+    }
+  });
+  $('#download-nc').addEventListener('click', () => {
+    if (!store.state.result) return;
+    try {
+      const program = programOf(store.state);
+      download(program.fileName, program.text, 'text/plain;charset=us-ascii');
+    } catch (e) {
+      $('#nc-note').textContent = e.message;
+    }
+  });
   store.on('result', (_, state) => render(state));
   $('#copy-axes').addEventListener('click', async () => {
     if (!store.state.result) return;
@@ -55,7 +85,7 @@ export function mountMachineAxes(store) {
     try {
       const rows = axisPositions(axesOf(store.state).axes, r.motion.min, r.motion.max, Number($('#positions-step').value), helical());
       note.textContent = `${rows.length} positions.`;
-      download('hobsharp-axis-positions.csv', positionsCsv(rows, helical()), 'text/csv;charset=utf-8');
+      download('hobsharp-axis-positions.csv', positionsCsv(rows, helical(), { decimalComma: $('#csv-style').value === 'semicolon' }), 'text/csv;charset=utf-8');
     } catch (e) {
       note.textContent = e.message;
     }
