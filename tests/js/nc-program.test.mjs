@@ -85,8 +85,14 @@ function deviation(result, axes, position) {
   }
   return worst;
 }
-// The program's five axes at a motion value: Sinumerik from its parameter p = x - lo.
-const sinumerikPosition = (program, lo) => (x) => program.at(Math.min(x - lo, program.length));
+// The program's five axes at a motion value: Sinumerik's n blocks share the range equally (the
+// header says so), block i's parameter running from 0 at its start to its PL at its end.
+const sinumerikPosition = (program, lo, hi) => (x) => {
+  const n = program.segments.length, h = (hi - lo) / n;
+  const i = Math.min(n - 1, Math.floor((x - lo) / h));
+  const before = program.segments.slice(0, i).reduce((s, g) => s + g.PL, 0);
+  return program.at(before + program.segments[i].PL * (x - lo - i * h) / h);
+};
 // HEIDENHAIN: its n blocks share the range equally (the program's header says so); block i runs
 // from t = 1 at its start to t = 0 at its end.
 const heidenhainPosition = (program, lo, hi, reversed = false) => (x) => {
@@ -117,8 +123,11 @@ for (const [name, { caseObject, result }] of Object.entries(evaluated)) {
       } else {
         const program = readSinumerik(p.text);
         assert.equal(program.segments.length, p.pieces);
-        assert.ok(Math.abs(program.length - (hi - lo)) <= 5e-5, `the PLs add up to ${program.length}, the range is ${hi - lo}`);
-        worst = deviation(result, axes, sinumerikPosition(program, lo));
+        // Each block's parameter runs over [0, 1]: a2 .. a5 are mm or deg over the block, of the
+        // size of the motion, not per deg^k (a control rounding them to its resolution keeps them).
+        assert.ok(program.segments.every((g) => g.PL === 1), 'PL = 1 in every block');
+        assert.match(p.text, new RegExp(`; ${p.pieces} POLY blocks? of degree \\d at most, each ${Number(((hi - lo) / p.pieces).toFixed(6))} `));
+        worst = deviation(result, axes, sinumerikPosition(program, lo, hi));
         const s = axesAt(result, axes, lo);
         for (const a of AXES) assert.ok(Math.abs(program.start[a] - s[a]) <= 5.01e-7, `${a} starts at ${program.start[a]}, not ${s[a]}`);
       }
@@ -204,7 +213,7 @@ test('degree-6 axes: quintic pieces within 0.01 µm and 1e-6 deg; cubic ones too
     } else {
       const program = readSinumerik(p.text);
       assert.ok(program.segments.every((s) => AXES.every((a) => s.poly[a].length <= (dialect === 'sinumerik' ? 6 : 4))));
-      worst = deviation(result, axes, sinumerikPosition(program, lo));
+      worst = deviation(result, axes, sinumerikPosition(program, lo, hi));
       // The pieces alone (the positions written to 6 decimals add at most 0.0005 µm, 5e-7 deg).
       assert.ok(p.largestDeviation.linear <= 0.01 + 0.0005 && p.largestDeviation.rotary <= 1e-6 + 5e-7, JSON.stringify(p.largestDeviation));
     }
@@ -223,13 +232,16 @@ test('cubic joins: continuous position and slope; HEIDENHAIN tangent within 0.1 
   const cubic = readSinumerik(programFor(result, caseObject, 'sinumerik-cubic', { digits }).text);
   assert.ok(cubic.segments.length > 1);
   const value = (c, p) => c.reduceRight((s, a) => s * p + a, 0);
-  const slope = (c, p) => c.slice(1).reduceRight((s, a, k) => s * p + a * (k + 1), 0);
+  // Per degree of hob rotation: each block's parameter runs over [0, PL] while the hob turns h.
+  const { lo, hi } = range(result);
+  const h = (hi - lo) / cubic.segments.length;
+  const slope = (c, p, PL) => c.slice(1).reduceRight((s, a, k) => s * p + a * (k + 1), 0) * PL / h;
   for (let i = 0; i + 1 < cubic.segments.length; i++) {
     const left = cubic.segments[i], right = cubic.segments[i + 1];
     for (const a of AXES) {
       assert.equal(value(right.poly[a], 0), cubic.segments[i + 1].poly[a][0]);
       assert.ok(Math.abs(value(left.poly[a], left.PL) - right.poly[a][0]) < 1e-9, `${a} position at join ${i + 1}`);
-      const jump = Math.abs(slope(left.poly[a], left.PL) - slope(right.poly[a], 0));
+      const jump = Math.abs(slope(left.poly[a], left.PL, left.PL) - slope(right.poly[a], 0, right.PL));
       assert.ok(jump < 1e-6, `${a} slope jumps by ${jump} per deg at join ${i + 1}`);
     }
   }
@@ -253,7 +265,8 @@ test('cubic joins: continuous position and slope; HEIDENHAIN tangent within 0.1 
 });
 
 // t runs from 1 at a block's start to 0 at its end: read the other way round, the program misses
-// the axes; and a Sinumerik program without its PL (PL = 1) misses them too. The comparison can fail.
+// the axes; and a Sinumerik program read with its parameter in degrees (PL the block's length)
+// misses them too. The comparison can fail.
 test('HEIDENHAIN t from 1 to 0, Sinumerik PL: read otherwise, the comparison fails', () => {
   const { caseObject, result } = evaluated['helical, corrected'];
   const axes = result.correction.roundedAxes;
@@ -268,9 +281,10 @@ test('HEIDENHAIN t from 1 to 0, Sinumerik PL: read otherwise, the comparison fai
   const reversed = deviation(result, axes, heidenhainPosition(tnc, lo, hi, true));
   assert.ok(reversed.linear > TOLERANCE.linear, `t read from 0 to 1 is off by ${reversed.linear} mm`);
   const text = programFor(result, caseObject, 'sinumerik', { digits }).text;
-  const noPL = readSinumerik(text.replace(/ PL=[\d.]+/g, ''));
-  const off = deviation(result, axes, (x) => noPL.at(Math.min((x - lo) / (hi - lo), 1)));
-  assert.ok(off.linear > TOLERANCE.linear, 'PL = 1 is not the program');
+  const inDegrees = readSinumerik(text.replace(/ PL=1\b/g, ` PL=${hi - lo}`));
+  assert.equal(inDegrees.segments.length, 1);
+  const off = deviation(result, axes, (x) => inDegrees.at(Math.min(x - lo, hi - lo)));
+  assert.ok(off.linear > TOLERANCE.linear, 'p in degrees is not the program');
 });
 
 test('the header names the job from the case\'s job, in plain ASCII; the file is named for it', () => {

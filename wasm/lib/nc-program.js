@@ -33,9 +33,10 @@ const DIALECT = {
 // the machine's resolution (0.1 µm, 1e-4 deg): mm for X, Y, Z and deg for A, B.
 export const SPLIT_TOLERANCE = { linear: 1e-5, rotary: 1e-6 };
 const MAX_PIECES = 2000;
-// Sinumerik PL: 0.0001 ... 99999.9999 (4 decimals); HEIDENHAIN positions: +-99999.9999 (4 decimals);
-// HEIDENHAIN K: mantissa +-9.99999999 (8 decimals), exponent -255 ... 255.
-const PL_DECIMALS = 4, PL_MAX = 99999.9999, POSITION_MAX = 99999.9999;
+// HEIDENHAIN positions: +-99999.9999 (4 decimals); K: mantissa +-9.99999999 (8 decimals),
+// exponent -255 ... 255. SINUMERIK's PL (0.0001 ... 99999.9999) is 1 here: each block's parameter
+// runs over [0, 1].
+const POSITION_MAX = 99999.9999;
 const K_DECIMALS = 8;
 // A coefficient whose term moves its axis by less than this over its block (mm or deg) is left out.
 const NEGLIGIBLE = 1e-8;
@@ -125,16 +126,8 @@ export function commentText(s, max = 100) {
 
 // --- the pieces and the program's own reading of them ------------------------------------------
 
-// The pieces' bounds u_0 < ... < u_n over [lo, hi]: n equal lengths; for Sinumerik each length
-// a PL of 4 decimals (the last one takes the rest, so the program ends within 0.00005 of hi).
-function bounds(lo, hi, n, roundPL) {
-  if (!roundPL) return Array.from({ length: n + 1 }, (_, i) => (i === n ? hi : lo + (hi - lo) * i / n));
-  const h = Number(((hi - lo) / n).toFixed(PL_DECIMALS));
-  const u = [lo];
-  for (let i = 1; i < n; i++) u.push(u[i - 1] + h);
-  u.push(u[n - 1] + Number((hi - u[n - 1]).toFixed(PL_DECIMALS)));
-  return u;
-}
+// The pieces' bounds u_0 < ... < u_n over [lo, hi]: n equal lengths.
+const bounds = (lo, hi, n) => Array.from({ length: n + 1 }, (_, i) => (i === n ? hi : lo + (hi - lo) * i / n));
 
 // The largest deviation of pieces (local polynomials per axis, over bounds u) from the axes,
 // sampled at 24 points per piece: {linear (mm), rotary (deg)}.
@@ -155,9 +148,9 @@ function deviationOf(axes, u, pieces) {
 }
 
 // The fewest pieces of `degree` whose deviation from the axes is within SPLIT_TOLERANCE.
-function pieceCount(axes, lo, hi, degree, roundPL) {
+function pieceCount(axes, lo, hi, degree) {
   const exact = (n) => {
-    const u = bounds(lo, hi, n, roundPL);
+    const u = bounds(lo, hi, n);
     const ps = u.slice(0, -1).map((u0, i) => {
       const local = Object.fromEntries(AXES.map((a) => [a, piece(axes[a], u0, u[i + 1] - u0, degree)]));
       return { at: (a, p) => valueAt(local[a], p) };
@@ -202,7 +195,8 @@ function headerLines(d, o, n, deviation, unit) {
   if (o.dialect === 'heidenhain') {
     lines.push(`${n} SPL block${n > 1 ? 's' : ''}, each ${fixed((o.motion.max - lo) / n, 6)} ${per}; t runs from 1 at a block's start to 0 at its end.`);
   } else {
-    lines.push(`Parameter p = ${o.helical ? 'hob rotation' : 'travel'} - (${fixed(lo, 6)}) ${unit}; PL in ${unit}. ${n} POLY block${n > 1 ? 's' : ''} of degree ${d.degree} at most.`);
+    lines.push(`${n} POLY block${n > 1 ? 's' : ''} of degree ${d.degree} at most, each ${fixed((o.motion.max - lo) / n, 6)} ${per}; p runs from 0 at a block's start to PL = 1 at its end,`);
+    lines.push('linearly with it, so a2 .. a5 are mm or deg over the block, of the size of the motion itself.');
   }
   lines.push(`Largest deviation of this program from the axes: ${fixed(deviation.linear * 1000, 4)} um (X Y Z), ${sinumerikReal(deviation.rotary, 2).replace('EX', 'e')} deg (A B).`);
   const r = h.rounding;
@@ -229,11 +223,8 @@ export function ncProgram(o) {
   }
   const unit = o.helical ? 'deg' : 'mm';
   const sinumerik = o.dialect !== 'heidenhain';
-  const n = pieceCount(axes, lo, hi, d.degree, sinumerik);
-  const u = bounds(lo, hi, n, sinumerik);
-  if (sinumerik && u.slice(1).some((x, i) => x - u[i] > PL_MAX || x - u[i] < 10 ** -PL_DECIMALS)) {
-    throw new Error(`NC program: a block's parameter length PL must be between 0.0001 and ${PL_MAX} ${unit}.`);
-  }
+  const n = pieceCount(axes, lo, hi, d.degree);
+  const u = bounds(lo, hi, n);
   const position = (x) => fixed(x, d.positionDecimals);
   const start = Object.fromEntries(AXES.map((a) => [a, Number(position(valueAt(axes[a], lo)))]));
   if (AXES.some((a) => Math.abs(start[a]) > POSITION_MAX)) throw new Error(`NC program: a position beyond +-${POSITION_MAX}.`);
@@ -244,12 +235,18 @@ export function ncProgram(o) {
   if (sinumerik) {
     const block = (i, text) => `N${(i + 1) * 10} ${text}`;
     body.push(block(0, `G90 G1 ${AXES.map((a) => `${a}${position(start[a])}`).join(' ')}`));
+    // Each block's parameter runs from 0 to PL = 1 over the block, linearly with the hob rotation
+    // (p = (rotation - u_i) / h): its coefficients are mm or deg over the block, not per deg^k. A
+    // per-degree a5 is about 1e-9 mm/deg^5, which a control that rounds a coefficient to its
+    // position resolution, as SINUMERIK does with decimals beyond an address's places
+    // (docs/nc-programs.md), would write as 0.
+    const PL = 1;
     for (let i = 0; i < n; i++) {
-      const PL = Number((u[i + 1] - u[i]).toFixed(PL_DECIMALS));
+      const h = u[i + 1] - u[i];
       const words = [];
       const polys = {};
       for (const a of AXES) {
-        const local = piece(axes[a], u[i], u[i + 1] - u[i], d.degree);
+        const local = piece(axes[a], u[i], h, d.degree).map((c, k) => c * h ** k);
         const end = Number(position(valueAt(local, PL)));
         // a2 .. a5 to the digits, each left out when its term over the block is negligible, and
         // the trailing zeros dropped (the control takes them as 0).
@@ -263,8 +260,8 @@ export function ncProgram(o) {
         words.push(d.degree === 5 ? `${a}=PO(${values})` : `PO[${a}]=(${values})`);
         at[a] = end;
       }
-      body.push(block(i + 1, `${i === 0 ? 'POLY ' : ''}${words.join(' ')} PL=${fixed(PL, PL_DECIMALS)}`));
-      read.push({ at: (a, p) => valueAt(polys[a], p) });
+      body.push(block(i + 1, `${i === 0 ? 'POLY ' : ''}${words.join(' ')} PL=${PL}`));
+      read.push({ at: (a, p) => valueAt(polys[a], p / h) });
     }
     body.push(block(n + 1, 'G1 ; polynomial interpolation off'));
     body.push(block(n + 2, 'M30'));
