@@ -110,6 +110,19 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
     const code = QRCode.create(link, { errorCorrectionLevel: 'L' });
     assert.equal(code.segments.map((g) => (typeof g.data === 'string' ? g.data : Buffer.from(g.data).toString('utf8'))).join(''), link);
     assert.ok(code.version <= 40 && qr.width >= mmToPx(30), `version ${code.version}, ${qr.width} px`);
+    // Printed as the browser's own print does: the window as it was (1366 px wide), print media
+    // emulated, the pages laid out at the paper's width. Every plot is then drawn to the printable
+    // width (less its card's insets): none as wide as the window's layout.
+    await page.emulateMedia({ media: 'screen' });
+    await page.setViewportSize({ width: 1366, height: 900 });
+    await page.waitForFunction(() => [...document.querySelectorAll('.plot')].every((e) => !e.layout || e.layout.width == null));
+    await page.emulateMedia({ media: 'print' });
+    await page.waitForFunction(() => [...document.querySelectorAll('.plot')].filter((e) => e.offsetParent && e.data)
+      .every((e) => typeof e.layout.width === 'number'));
+    const pastThePaper = await page.evaluate((w) => [...document.querySelectorAll('.plot')].filter((e) => e.offsetParent && e.data).flatMap((e) =>
+      [...e.querySelectorAll('.main-svg, .colorbar')].map((g) => [e.id, g.getAttribute('class'), g.getBoundingClientRect().right])
+        .filter(([, , right]) => right > w + 1).map(([id, cls, right]) => `${id} ${cls} to ${Math.round(right)} px`)), width);
+    assert.deepEqual(pastThePaper, [], `${format}: drawn past the printable width (${width} px) as the browser prints`);
     const pdf = path.join(out, `report-${format}.pdf`);
     writeFileSync(pdf, await page.pdf({ format, printBackground: true }));
     const pages = Number(/Pages:\s+(\d+)/.exec(execFileSync('pdfinfo', [pdf], { encoding: 'utf8' }))[1]);

@@ -105,6 +105,17 @@ export function renderLink(link = location.href) {
   });
 }
 
+// The printable width, CSS px: the narrower of A4 (210 mm) and Letter (215.9 mm) less the
+// stylesheet's 12 mm margins (@page), so that one layout fits either paper.
+export const PRINTABLE_WIDTH = Math.floor(((Math.min(210, 215.9) - 2 * 12) / 25.4) * 96);
+
+// A plot's width in print: the printable width less the insets of the card it sits in (the same
+// on its left and right), and no wider than its box.
+function printWidth(el) {
+  const inset = el.getBoundingClientRect().left - document.documentElement.getBoundingClientRect().left;
+  return Math.max(200, Math.floor(Math.min(el.clientWidth, PRINTABLE_WIDTH - 2 * inset)));
+}
+
 export function mountReport(store) {
   store.on('result', ({ result, caseObject }, state) => {
     $('#report-verdict').textContent = verdictLine(result, unitOf);
@@ -116,13 +127,16 @@ export function mountReport(store) {
     queueMicrotask(() => renderLink());
   });
   // The plots at the printable width while printing (their heights as drawn), at the screen's after.
+  // The browser lays the printed pages out at the paper's width, not the window's, and tells the
+  // page only that print media now apply: the width comes from the paper (printWidth), never from
+  // the window's layout, so that a map and its colour bar stay within the card.
   const resize = () => {
     renderLink();
     if (!self.Plotly) return;
     const printing = window.matchMedia('print').matches;
     for (const el of document.querySelectorAll('.plot')) {
       if (!el.data || el.offsetParent === null) continue;
-      self.Plotly.relayout(el, { width: printing ? el.clientWidth : null }).catch(() => {});
+      self.Plotly.relayout(el, { width: printing ? printWidth(el) : null }).catch(() => {});
     }
   };
   const media = window.matchMedia('print');
