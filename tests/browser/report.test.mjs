@@ -11,7 +11,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import QRCode from 'qrcode';
-import { afterResult, base, openPage, pngRegions, pngStats, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, openPage, pngRegions, pngStats, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 const mmToPx = (mm) => (mm / 25.4) * 96;
@@ -223,6 +223,29 @@ test('a case link too long for a QR code: page 1 says to keep the case file inst
   const first = execFileSync('pdftotext', ['-f', '1', '-l', '1', pdf, '-'], { encoding: 'utf8' }).replace(/\s+/g, ' ');
   assert.match(first, new RegExp(`The case link \\(${bytes} bytes\\) is too long for a QR code \\(at most 2953 bytes\\): save the case file \\("Save case"\\) and keep it with this report\\.`));
   assert.doesNotMatch(first, /http|#case=/);
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+// The job's fields (issue 22): a case that names a job opens them filled; a text too long is
+// refused at its field in the label's words, and the job of the last good result stays.
+test("the job's fields: filled from a case, a text too long named by its label", async () => {
+  const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
+  const page = await openPage(`${base}#case=${encodeURIComponent(JSON.stringify({ ...paper, job: JOB }))}`, { viewport: { width: 1366, height: 900 } });
+  await page.waitForFunction(() => document.querySelector('#report-verdict').textContent !== '');
+  assert.equal(await page.$eval('#job-details', (d) => d.open), true, 'open when the case names a job');
+  for (const [key, text] of Object.entries(JOB)) assert.equal(await page.inputValue(`[data-field="job.${key}"]`), text);
+  assert.deepEqual(await page.$$eval('#report-job th', (t) => t.map((x) => x.textContent)), ['Job number', 'Customer', 'Hob serial number', 'Operator', 'Notes']);
+  // The field takes at most 60 characters as typed; a script can set more.
+  await afterError(page, () => page.$eval('[data-field="job.number"]', (el) => {
+    el.value = '7'.repeat(61);
+    el.dispatchEvent(new Event('input', { bubbles: true }));
+  }));
+  const note = page.locator('label:has([data-field="job.number"]) .field-message');
+  assert.equal((await note.textContent()).trim(), 'Job number must be at most 60 characters; got 61.');
+  assert.doesNotMatch(await page.textContent('#status'), /job\./);
+  assert.equal(JSON.parse(decodeURIComponent(await page.evaluate(() => location.hash.slice('#case='.length)))).job.number, JOB.number, 'the link keeps the last good job');
+  await page.locator('#job-details').screenshot({ path: path.join(shots, 'report', 'job-fields.png') });
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
