@@ -150,6 +150,16 @@ const Rule kRules[] = {
     {"PassResolutionNegative", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["correction"] = {{"resolution", {{"B", -1e-4}}}}; }, "passes[0].correction.resolution.B", "must be"},
     {"PassMethodUnknown", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["correction"] = {{"method", "quadratic"}}; }, "passes[0].correction.method", "must be one of"},
     {"PassCorrectionUnknownField", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["correction"] = {{"sigma", 1}}; }, "passes[0].correction.sigma", "unknown field"},
+    // The job's record: text of bounded length, one line but for the notes; nothing else.
+    {"JobNotAnObject", [](Json& j) { j["job"] = "A-17"; }, "job", "must be an object"},
+    {"JobUnknownField", [](Json& j) { j["job"] = {{"order", "A-17"}}; }, "job.order", "unknown field (expected one of: number, customer, hobSerial, operator, notes)"},
+    {"JobNumberNotText", [](Json& j) { j["job"] = {{"number", 17}}; }, "job.number", "must be text; got a number"},
+    {"JobNumberTooLong", [](Json& j) { j["job"] = {{"number", std::string(61, '7')}}; }, "job.number", "must be at most 60 characters; got 61"},
+    {"JobCustomerTooLong", [](Json& j) { j["job"] = {{"customer", std::string(101, 'c')}}; }, "job.customer", "at most 100 characters; got 101"},
+    {"JobSerialTwoLines", [](Json& j) { j["job"] = {{"hobSerial", "H-1\nH-2"}}; }, "job.hobSerial", "one line of text"},
+    {"JobOperatorControl", [](Json& j) { j["job"] = {{"operator", "A\u0007B"}}; }, "job.operator", "one line of text"},
+    {"JobNotesTooLong", [](Json& j) { j["job"] = {{"notes", std::string(1001, 'n')}}; }, "job.notes", "at most 1000 characters; got 1001"},
+    {"JobNotesControl", [](Json& j) { j["job"] = {{"notes", "ok\u001b[31m"}}; }, "job.notes", "without control characters"},
 };
 
 INSTANTIATE_TEST_SUITE_P(CaseFile, BadInput, ::testing::ValuesIn(kRules),
@@ -381,6 +391,27 @@ TEST(CaseFile, OverflowingNumberIsRefusedWhereItStands) {
   const Error e = firstError(text);
   EXPECT_NE(e.message.find("not valid JSON"), std::string::npos) << e.message;
   EXPECT_NE(e.message.find("character " + std::to_string(at + 5)), std::string::npos) << e.message << " at " << at;
+}
+
+// The job's record is read as given (characters counted, not bytes: 60 umlauts are 120 bytes),
+// and the notes keep their line breaks; the calculation does not use it.
+TEST(CaseFile, TheJobIsRead) {
+  Json j = paperJson();
+  std::string umlauts;
+  for (int k = 0; k < 60; ++k) umlauts += "\u00e4";
+  j["job"] = {{"number", "A-2026-117"}, {"customer", umlauts}, {"hobSerial", "H 4711"}, {"operator", "K. Weber"},
+              {"notes", "Second pass.\nWheel dressed."}};
+  auto in = parseCase(j.dump());
+  ASSERT_TRUE(in) << in.error().message;
+  EXPECT_EQ(in->job.number.value_or(""), "A-2026-117");
+  EXPECT_EQ(in->job.customer.value_or(""), umlauts);
+  EXPECT_EQ(in->job.hobSerial.value_or(""), "H 4711");
+  EXPECT_EQ(in->job.operatorName.value_or(""), "K. Weber");
+  EXPECT_EQ(in->job.notes.value_or(""), "Second pass.\nWheel dressed.");
+  EXPECT_EQ(firstError(j).message, "");
+  auto none = parseCase(paperJson().dump());
+  ASSERT_TRUE(none);
+  EXPECT_FALSE(none->job.number || none->job.customer || none->job.hobSerial || none->job.operatorName || none->job.notes);
 }
 
 TEST(CaseFile, DefaultsFillTheOptionalFields) {

@@ -590,6 +590,40 @@ Outcome<InspectionInput> readInspection(const Node& n) {
   return out;
 }
 
+// One text of `job`: a string of at most `most` characters (UTF-8 code points), no control
+// characters (line breaks and tabs only where `lines`). The message begins with the field, as
+// every refusal does; the page puts its label in its place ("Job number must be at most ...").
+Outcome<std::optional<std::string>> readJobText(const Node& n, const char* key, int most, bool lines) {
+  const Json* v = n.find(key);
+  if (!v) return std::optional<std::string>();
+  const std::string what = "must be ";
+  if (!v->is_string()) return refuse(n.field(key), what + "text; got " + typeName(*v) + ".");
+  const std::string s = v->get<std::string>();
+  int characters = 0;
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if ((u & 0xC0) != 0x80) ++characters;
+    if ((u < 0x20 || u == 0x7f) && !(lines && (c == '\n' || c == '\r' || c == '\t')))
+      return refuse(n.field(key), what + (lines ? "text without control characters (line breaks and tabs are kept)."
+                                               : "one line of text, without line breaks or control characters."));
+  }
+  if (characters > most)
+    return refuse(n.field(key), what + "at most " + std::to_string(most) + " characters; got " + std::to_string(characters) + ".");
+  return std::optional<std::string>(s);
+}
+
+// `job`: the job's record (docs/case-format.md), each member optional.
+Outcome<JobRecord> readJob(const Node& n) {
+  HOBSHARP_TRY(n.onlyKnown({"number", "customer", "hobSerial", "operator", "notes"}));
+  JobRecord out;
+  HOBSHARP_ASSIGN(out.number, readJobText(n, "number", kMaxJobText, false));
+  HOBSHARP_ASSIGN(out.customer, readJobText(n, "customer", kMaxJobCustomer, false));
+  HOBSHARP_ASSIGN(out.hobSerial, readJobText(n, "hobSerial", kMaxJobText, false));
+  HOBSHARP_ASSIGN(out.operatorName, readJobText(n, "operator", kMaxJobText, false));
+  HOBSHARP_ASSIGN(out.notes, readJobText(n, "notes", kMaxJobNotes, true));
+  return out;
+}
+
 }  // namespace
 
 Outcome<CaseInput> parseCase(const std::string& text) {
@@ -608,7 +642,7 @@ Outcome<CaseInput> parseCase(const std::string& text) {
     return refuse("format", "unknown format " + (format->is_string() ? quoted(format->get<std::string>()) : typeName(*format)) +
                                 "; this calculator reads \"" + kCaseFormat + "\".");
   HOBSHARP_TRY(root.onlyKnown({"format", "hob", "wheel", "setup", "machine", "degree", "grid", "axes", "measured",
-                               "correction", "passes", "inspection", "measuredPoints"}));
+                               "correction", "passes", "inspection", "measuredPoints", "job"}));
   CaseInput in;
   auto hob = root.object("hob", true);
   if (!hob) return hob.error();
@@ -667,6 +701,9 @@ Outcome<CaseInput> parseCase(const std::string& text) {
   auto inspection = root.object("inspection", false);
   if (!inspection) return inspection.error();
   HOBSHARP_ASSIGN(in.inspection, readInspection(*inspection));
+  auto job = root.object("job", false);
+  if (!job) return job.error();
+  HOBSHARP_ASSIGN(in.job, readJob(*job));
   return in;
 }
 

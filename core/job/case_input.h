@@ -68,6 +68,18 @@ struct WheelPointsInput {
   std::vector<double> values;  // offset µm, or Z mm
 };
 
+// The job's record (`job`, docs/case-format.md): who and what the sharpening is for. Not used by
+// the calculation; the printed report and the NC programs' headers name it. Empty when not given.
+struct JobRecord {
+  std::optional<std::string> number;     // the job or order number
+  std::optional<std::string> customer;
+  std::optional<std::string> hobSerial;  // the hob's serial number
+  std::optional<std::string> operatorName;
+  std::optional<std::string> notes;      // may hold line breaks
+};
+// The longest each of the job's texts may be, in characters (Unicode code points).
+constexpr int kMaxJobText = 60, kMaxJobCustomer = 100, kMaxJobNotes = 1000;
+
 // What the case file's optional fields default to.
 constexpr int kDefaultDegree = 4;
 constexpr int kDefaultGridRadial = 5;
@@ -92,6 +104,7 @@ struct CaseInput {
   std::optional<std::vector<MeasuredPoint>> measuredPoints;
   std::optional<WheelPointsInput> wheelProfileOffset;    // wheel.profileOffset: R mm, offset µm
   std::optional<WheelPointsInput> wheelMeasuredProfile;  // wheel.measuredProfile: R mm, Z mm
+  JobRecord job;                                         // `job`: the record only
 };
 
 // The largest grid the calculator takes, per direction.

@@ -33,7 +33,7 @@ async function passTable(page) {
 
 // The rms panel's traces of the passes' plot: name, y values, and the bars' lengths.
 const rmsTraces = (page) => page.evaluate(() => document.querySelector('#plot-passes').data
-  .filter((t) => t.xaxis === 'x').map((t) => ({ name: t.name, y: [...t.y], bars: t.error_y ? [...t.error_y.array] : null })));
+  .filter((t) => t.xaxis === 'x').map((t) => ({ name: t.name, y: [...t.y], bars: t.error_y ? [...t.error_y.array] : null, hover: t.customdata ? [...t.customdata] : [] })));
 
 test('a measured face: the prediction and its bound under the verdict, in µm rms, and in the passes\' table and plot', async () => {
   const c = { ...paper(), measured: shaped };
@@ -65,8 +65,12 @@ test('a measured face: the prediction and its bound under the verdict, in µm rm
   assert.deepEqual(traces.map((t) => t.name), ['probe noise σ 0.5 µm', 'measured', 'predicted']);
   assert.ok(traces[0].y.every((v) => v === expected.probeNoise));
   const predicted = traces[2];
-  assert.equal(predicted.y.at(-1), expected.predictedRms);
-  assert.ok(Math.abs(predicted.y.at(-1) + predicted.bars.at(-1) - expected.predictedRmsHigh) < 1e-12, 'the bar reaches the bound');
+  // The rms axis stops at a tenth of the probe noise (issue 22): a prediction below it is drawn
+  // on the axis's floor, its own value in the hover.
+  const floor = Math.max(0.01, expected.probeNoise / 10);
+  assert.equal(predicted.y.at(-1), Math.max(expected.predictedRms, floor));
+  assert.ok(predicted.hover.at(-1).startsWith(`${Number(expected.predictedRms.toPrecision(4))} µm`), predicted.hover.at(-1));
+  assert.ok(Math.abs(predicted.y.at(-1) + predicted.bars.at(-1) - Math.max(expected.predictedRmsHigh, predicted.y.at(-1))) < 1e-12, 'the bar reaches the bound');
   assert.equal(await page.evaluate(() => document.querySelector('#plot-passes').data.length), 9, 'four panels of measured and predicted, and the floor');
   for (const text of [await page.textContent('#measured-section'), await page.textContent('#passes-section')]) {
     assert.doesNotMatch(text, /NaN|undefined|Infinity/);

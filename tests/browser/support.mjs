@@ -117,6 +117,9 @@ export async function pngStats(page, png) {
   return s;
 }
 
+// The same figures for boxes of a PNG (px from its top left): [{colours, inked, edge}].
+export const pngRegions = (page, png, boxes, border = 0) => stats(page, png, boxes, border);
+
 // How many distinct colours a rendered element shows: a plot that draws nothing has a handful.
 export async function colours(page, selector) {
   const [s] = await stats(page, await page.locator(selector).screenshot(), null, 0);

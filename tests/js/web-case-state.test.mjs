@@ -159,3 +159,25 @@ test('what the form has no inputs for (inspection, dressed wheel) is kept from t
   assert.equal(r.inspection.uncertainty, 1.5, 'and the measurement\'s uncertainty');
   assert.ok(r.wheelOffset, 'and the dressed wheel');
 });
+
+// The job's record (issue 22): kept in the form's case, saved, put in the link and loaded back,
+// and the calculator (the module's case reader) takes it and refuses a text too long, naming it.
+test('the job travels with the case: saved, in the link, loaded back; the calculator takes it and names a bad one', async () => {
+  const { caseFromHash, caseToHash } = await import('../../web/src/io/url.js');
+  const job = { number: 'A-2026-117', customer: 'Zahnradwerk Süd GmbH', hobSerial: 'H 4711', operator: 'K. Weber', notes: 'Second pass.\nWheel dressed.' };
+  const state = stateWith({ form: { ...structuredClone(paper), job } });
+  const saved = JSON.parse(JSON.stringify(savedCase(state)));
+  assert.deepEqual(saved.job, job);
+  const linked = caseFromHash(caseToHash(saved)).case;
+  const back = inputsFromCase(linked);
+  assert.deepEqual(back.formCase.job, job);
+  assert.deepEqual(JSON.parse(JSON.stringify(savedCase(stateWith({ form: back.formCase })))), saved);
+  const hobsharp = await loadHobSharp();
+  const withJob = hobsharp.evaluate(calculatorCase(saved));
+  const without = hobsharp.evaluate(paper);
+  assert.deepEqual(withJob.axes, without.axes, 'the job changes nothing computed');
+  assert.throws(() => hobsharp.evaluate({ ...paper, job: { number: '7'.repeat(61) } }),
+    (e) => e.field === 'job.number' && /^job\.number: must be at most 60 characters; got 61\.$/.test(e.message));
+  assert.throws(() => hobsharp.evaluate({ ...paper, job: { serial: 'H 4711' } }), (e) => e.field === 'job.serial' && /unknown field/.test(e.message));
+  assert.throws(() => hobsharp.evaluate({ ...paper, job: { operator: 'K.\nWeber' } }), (e) => e.field === 'job.operator' && /one line of text/.test(e.message));
+});

@@ -1,10 +1,13 @@
 // The case's inputs as the job's record lists them (web/src/io/input-rows.js), shared by the
-// results CSV and the printed report (web/src/views/report.js, its rows by group).
+// results CSV and the printed report (web/src/report-lines.js: its rows by label and unit, the
+// verdict line, the job).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { inputRows } from '../../web/src/io/input-rows.js';
-import { reportDateLine, reportInspectionLine, reportRows } from '../../web/src/views/report.js';
+import { jobRows, reportDateLine, reportInputRows, reportInspectionLine, verdictLine } from '../../web/src/report-lines.js';
+import { fieldUnit } from '../../web/src/result-fields.js';
+import { fmt } from '../../web/src/format.js';
 import { setResultFields } from '../../web/src/result-fields.js';
 import { setModuleLimits } from '../../web/src/limits.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
@@ -28,21 +31,64 @@ test('every value of the case by its path, in its order; the measured data, axes
   assert.deepEqual(inputRows(null), []);
 });
 
-test("the report's rows: the hob, wheel, setup, machine and grid values by group, the degree, what was derived", () => {
-  const result = { setup: { settingAngle: 12.6260001234 } };
-  const rows = reportRows(result, paper);
-  assert.deepEqual(rows[0], ['hob', 'normalModule', '7']);
-  assert.deepEqual(rows.find((r) => r[1] === 'gashLead'), ['hob', 'gashLead', '876.56']);
-  assert.deepEqual(rows.map((r) => r[0]).filter((g, i, a) => a.indexOf(g) === i), ['hob', 'wheel', 'setup', 'machine', 'grid', 'axes']);
-  assert.equal(rows.length, 10 + 1 + 3 + 2 + 6 + 1);
-  assert.deepEqual(rows.at(-1), ['axes', 'degree', '4']);
-  // The setting angle left to the calculator: the derived one, to 8 digits; the axes run named.
+// The form's words for a few fields, as views/field-names.js reads them from its labels.
+const words = {
+  labels: { 'hob.normalModule': 'Normal module m_n', 'hob.gashLead': 'Gash lead L_c', 'hob.gash': 'Gash', 'wheel.outerDiameter': 'Outer diameter d_w',
+    'setup.tilt': 'Tilt of the wheel η', 'setup.settingAngle': 'Setting angle γ_m', 'setup.centerDistance': 'Centre distance E_t',
+    'machine.K1': 'K_1', degree: 'Polynomial degree', 'grid.rMin': 'r from' },
+  units: { 'hob.normalModule': 'mm', 'hob.gashLead': 'mm', 'wheel.outerDiameter': 'mm', 'setup.tilt': 'deg', 'setup.settingAngle': 'deg',
+    'setup.centerDistance': 'mm', 'machine.K1': 'mm', 'grid.rMin': 'mm' },
+  groups: { hob: 'Hob data', wheel: 'Wheel data', setup: 'Universal machine settings', machine: 'Machine constants', grid: 'Polynomials and measuring grid' },
+};
+
+test("the report's inputs: by the form's labels with their units, by group, the degree, what was derived; never a path", () => {
+  const result = { setup: { settingAngle: 12.6260001234, centerDistance: 155.1 } };
+  const rows = reportInputRows(result, paper, words);
+  assert.deepEqual(rows[0], { group: 'Hob data', label: 'Normal module m_n', value: '7', unit: 'mm', derived: false });
+  assert.deepEqual(rows.find((r) => r.label === 'Gash lead L_c'), { group: 'Hob data', label: 'Gash lead L_c', value: '876.56', unit: 'mm', derived: false });
+  assert.deepEqual(rows.find((r) => r.label === 'Gash'), { group: 'Hob data', label: 'Gash', value: 'helical', unit: '', derived: false });
+  assert.deepEqual(rows.map((r) => r.group).filter((g, i, a) => a.indexOf(g) === i), Object.values(words.groups));
+  assert.deepEqual(rows.at(-1), { group: 'Polynomials and measuring grid', label: 'Polynomial degree', value: '4', unit: '', derived: false });
+  // A field without a label in the form is left out, never shown by its path.
+  assert.ok(!rows.some((r) => /\w\.\w/.test(r.label) || r.label === 'normalPressureAngle'), JSON.stringify(rows));
+  // The paper gives the setting angle and the centre distance: none derived.
+  assert.ok(!rows.some((r) => r.derived));
+  // The setting angle left to the calculator: the derived one, to 8 digits, marked so.
   const { settingAngle, ...setup } = paper.setup;
-  const derived = reportRows(result, { ...paper, setup, axes: { X: [1] }, grid: { ...paper.grid, extra: { a: 1 } } });
-  assert.ok(!derived.some((r) => r[1] === 'settingAngle'));
-  assert.ok(!derived.some((r) => r[1] === 'extra' || r[1] === 'a'), 'nested values stay out of the report');
-  assert.deepEqual(derived.at(-2), ['setup', 'settingAngle (derived)', '12.626 deg']);
-  assert.deepEqual(derived.at(-1), ['axes', 'run', 'X, Y, Z, A, B as in the case']);
+  const derived = reportInputRows(result, { ...paper, setup, axes: { X: [1] }, grid: { ...paper.grid, extra: { a: 1 } } }, words);
+  assert.deepEqual(derived.filter((r) => r.label === 'Setting angle γ_m'), [{ group: 'Universal machine settings', label: 'Setting angle γ_m', value: '12.626', unit: 'deg', derived: true }]);
+  assert.ok(!derived.some((r) => r.label === 'extra' || r.label === 'a'), 'nested values stay out of the report');
+});
+
+test("the report's job: the form's labels, in the case's order, blanks left out", () => {
+  const names = { 'job.number': 'Job number', 'job.customer': 'Customer', 'job.hobSerial': 'Hob serial number', 'job.operator': 'Operator', 'job.notes': 'Notes' };
+  assert.deepEqual(jobRows({ notes: 'Second pass.\nDressed.', number: ' A-117 ', customer: '', operator: 'K. Weber' }, names),
+    [['Job number', 'A-117'], ['Operator', 'K. Weber'], ['Notes', 'Second pass.\nDressed.']]);
+  assert.deepEqual(jobRows(undefined, names), []);
+});
+
+// The verdict line with the module's figures and units: the class with its conformity and the
+// face's rms measured and predicted (with the bound), or the face simulated when nothing is measured.
+test("the report's verdict line: the class with its conformity, the face's rms before and after, with units", () => {
+  const unitOf = (p) => fieldUnit(p) || '';
+  const nominal = hobsharp.evaluate(paper);
+  const line = verdictLine(nominal, unitOf);
+  assert.match(line, /^Class (AA|A|B|C|D) — (conforms|undecided|does not conform); face (below 0\.001|[\d.]+) µm rms simulated for the axes run; nothing measured, no correction\.$/);
+  assert.ok(line.startsWith(`Class ${nominal.inspection.class} — ${nominal.inspection.conformity};`), line);
+  // A measured face: a what-if's Z offset of 10 µm, noise-free.
+  const radial = paper.grid.radial, axial = paper.grid.axial;
+  const measured = Array.from({ length: radial }, (_, i) => Array.from({ length: axial }, (_, j) => 3 + 0.5 * i - 0.2 * j));
+  const r = hobsharp.evaluate({ ...paper, measured, correction: { probeNoise: 0.5 } });
+  const c = r.correction;
+  assert.equal(c.stop, false);
+  const f = (v) => fmt(v, 3);
+  const after = c.predictedRms === 0 ? 'within the probe noise after the correction' : `${f(c.predictedRms)} µm rms predicted after the correction`;
+  assert.equal(verdictLine(r, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured, ${after} (at most ${f(c.predictedRmsHigh)} µm).`);
+  // Within the probe noise: stop, the axes run stay.
+  const quiet = hobsharp.evaluate({ ...paper, measured: measured.map((row) => row.map(() => 0.01)), correction: { probeNoise: 0.5 } });
+  assert.equal(quiet.correction.stop, true);
+  assert.match(verdictLine(quiet, unitOf), /; face 0\.01 µm rms measured: within the probe noise, keep the axes run\.$/);
+  assert.doesNotMatch(line + verdictLine(r, unitOf), /NaN|undefined|correction\.[a-z]|rms[A-Z]|e-\d/);
 });
 
 test("the report's first line names the day and what was measured: a grid, the machine's points, or nothing", () => {

@@ -31,6 +31,10 @@ export function readForm() {
   for (const el of $$('#inputs [data-field]')) {
     const field = el.dataset.field;
     if (el.tagName === 'SELECT') { setPath(c, field, el.value); continue; }
+    if (el.dataset.text !== undefined) {  // the job's texts, as typed; blank for none
+      if (el.value.trim() !== '') setPath(c, field, el.value);
+      continue;
+    }
     if (el.value.trim() === '') {
       if (el.validity && el.validity.badInput) setPath(c, field, el.value); // lets the module name it
       continue;
@@ -49,6 +53,8 @@ export function writeForm(c) {
     if (el.tagName === 'SELECT') el.value = v === undefined ? el.options[0].value : v;
     else el.value = v === undefined || v === null ? '' : String(v);
   }
+  // The job's fields open when the case names a job.
+  if (c.job && Object.keys(c.job).length) $('#job-details').open = true;
   $('#gash-by').value = c.hob && c.hob.gashLead === undefined && c.hob.gashHelixAngle !== undefined ? 'angle' : 'lead';
   showGashFields();
 }

@@ -1,13 +1,16 @@
 // The grinding passes plotted: per pass, measured (solid) and predicted (dashed), the rms (µm, with
 // the prediction's bound as a bar above it and the probe noise's floor, sigma, as a dotted line
 // over a shaded band: a measured rms in the band is noise, and another pass would only move it), the sum of
-// squares (µm²), the largest |deviation| (µm) and the thickness error (µm), side by side; the rms
-// and the sum of squares on a log scale while every value is positive. series: historySeries() of
+// squares (µm²), the largest |deviation| (µm) and the thickness error (µm), side by side. The rms
+// on a log scale that stops at a scale that means something (rmsAxisFloor: a tenth of the smallest
+// probe noise, at least 0.01 µm): a figure below it is drawn on the axis's floor as a downward
+// triangle, its value in the hover, so that a solver's 1e-20 does not stretch the scale over
+// eighteen decades; the others linear. series: historySeries() of
 // web/src/pass-history.js, which leaves out every value that is not finite. units: the module's
 // units of the figures (result-fields.js), where it gives them.
 const PANELS = [
   { q: 'rms', title: 'RMS', unit: 'µm', log: true },
-  { q: 'sse', title: 'Sum of squares', unit: 'µm²', log: true },
+  { q: 'sse', title: 'Sum of squares', unit: 'µm²' },
   { q: 'max', title: 'Largest |deviation|', unit: 'µm' },
   { q: 'thickness', title: 'Thickness error', unit: 'µm' },
 ];
@@ -18,6 +21,14 @@ const figure = (v) => String(Number(v.toPrecision(3)));
 function floorLine(floor, passCount) {
   if (!floor.x.length) return null;
   return { x: [0.5, ...floor.x, passCount + 0.5], y: [floor.y[0], ...floor.y, floor.y[floor.y.length - 1]] };
+}
+
+// The rms axis's floor, µm: a tenth of the smallest probe noise, and never below 0.01 µm (what a
+// rake-face measurement can tell apart at all).
+export const LEAST_RMS_SHOWN = 0.01;
+export function rmsAxisFloor(floorValues = []) {
+  const sigmas = floorValues.filter((v) => Number.isFinite(v) && v > 0);
+  return Math.max(LEAST_RMS_SHOWN, sigmas.length ? Math.min(...sigmas) / 10 : 0);
 }
 
 export function drawPassHistory(Plotly, el, series, passCount, units = {}) {
@@ -35,9 +46,15 @@ export function drawPassHistory(Plotly, el, series, passCount, units = {}) {
     const floor = q === 'rms' ? floorLine(series.floor || { x: [], y: [] }, passCount) : null;
     const high = q === 'rms' && s.predicted.high ? s.predicted.high : [];
     const values = [...s.measured.y, ...s.predicted.y, ...high.filter((v) => v !== null), ...(floor ? floor.y : [])];
-    const log = Boolean(logWhenPositive) && values.length > 0 && values.every((v) => v > 0);
+    const log = Boolean(logWhenPositive);
+    const bottom = log ? rmsAxisFloor(series.floor ? series.floor.y : []) : null;
+    const shown = (v) => (log ? Math.max(v, bottom) : v);
     layout[`xaxis${axis}`] = { domain, anchor: `y${axis}`, title: { text: 'pass' }, tickvals: ticks, range: [0.5, passCount + 0.5] };
     layout[`yaxis${axis}`] = { anchor: `x${axis}`, type: log ? 'log' : 'linear', exponentformat: 'power', zeroline: q === 'thickness' };
+    if (log) {
+      const top = Math.max(bottom * 10, ...values.filter((v) => Number.isFinite(v)));
+      layout[`yaxis${axis}`].range = [Math.log10(bottom), Math.log10(top) + 0.15];
+    }
     layout.annotations.push({ text: `${title} (${unit})`, xref: 'paper', yref: 'paper', x: (domain[0] + domain[1]) / 2, y: 1.02,
       xanchor: 'center', yanchor: 'bottom', showarrow: false, font: { size: 13 } });
     if (floor) {
@@ -50,19 +67,21 @@ export function drawPassHistory(Plotly, el, series, passCount, units = {}) {
       });
     }
     for (const set of ['measured', 'predicted']) {
+      const below = s[set].y.map((y) => log && y < bottom);
+      const symbol = set === 'predicted' ? 'circle-open' : 'circle';
       const trace = {
-        type: 'scatter', mode: 'lines+markers', x: s[set].x, y: s[set].y,
+        type: 'scatter', mode: 'lines+markers', x: s[set].x, y: s[set].y.map(shown),
         xaxis: `x${axis}`, yaxis: `y${axis}`, name: set, legendgroup: set, showlegend: i === 0,
         line: { color: COLOURS[set], dash: set === 'predicted' ? 'dash' : 'solid' },
-        marker: { size: 8, symbol: set === 'predicted' ? 'circle-open' : 'circle' },
-        hovertemplate: `pass %{x}, ${set}: %{y:.4g} ${unit}<extra></extra>`,
+        marker: { size: 8, symbol: below.some(Boolean) ? below.map((b) => (b ? 'triangle-down' : symbol)) : symbol },
+        customdata: s[set].y.map((y, k) => `${Number(y.toPrecision(4))} ${unit}${below[k] ? `, below the axis's ${figure(bottom)} ${unit}` : ''}`),
+        hovertemplate: `pass %{x}, ${set}: %{customdata}<extra></extra>`,
       };
-      // The prediction's bound: a bar from the predicted rms up to it.
+      // The prediction's bound: a bar from the predicted rms (as drawn) up to it.
       if (set === 'predicted' && high.length) {
-        const up = s.predicted.y.map((y, k) => (high[k] !== null && high[k] >= y ? high[k] - y : 0));
+        const up = trace.y.map((y, k) => (high[k] !== null && high[k] >= y ? high[k] - y : 0));
         trace.error_y = { type: 'data', symmetric: false, array: up, arrayminus: up.map(() => 0), color: COLOURS.predicted, thickness: 1.5, width: 6 };
-        trace.customdata = high.map((h) => (h === null ? '' : `, at most ${figure(h)} ${unit}`));
-        trace.hovertemplate = `pass %{x}, predicted: %{y:.4g} ${unit}%{customdata}<extra></extra>`;
+        trace.customdata = trace.customdata.map((text, k) => (high[k] === null || high[k] === undefined ? text : `${text}, at most ${figure(high[k])} ${unit}`));
       }
       traces.push(trace);
     }

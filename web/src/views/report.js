@@ -1,71 +1,147 @@
-// The printed report (the browser's print, A4 or Letter; the print stylesheet in style.css): a
-// head that only print shows, with the date, the rake face's class with its conformity and proven
-// class, the hob, wheel and setup data, and the case link; the views the record needs follow (the
-// axes to run, the topography maps led by the inspection, the verdict and the correction's
-// tables), each kept whole on a page. For print the plots are redrawn to the paper's
-// width, and back after.
-import { AXES } from '../limits.js';
-import { escapeHtml, fmt } from '../format.js';
-import { inputRows } from '../io/input-rows.js';
-import { classLead } from '../inspection-table.js';
+// The printed report (the browser's print, A4 or Letter; the print stylesheet in style.css). Its
+// first page, which only print shows: the verdict in one line (report-lines.js), the date, the
+// rake face's class with its conformity and proven class, the job, the inputs with their labels
+// and units (the form's own), and the case link as a QR code (npm "qrcode"). Then "Program
+// this": the axes to run in the control's units (the page's "Axes to run": axes-to-run.js,
+// machine-axes.js) with the NC program they belong to (showReportProgram). The views the record
+// needs follow, each kept whole on a page; the exact polynomials (Tab. 2) close it as an
+// appendix. For print the plots are redrawn to the printable width, and back after.
+import QRCode from 'qrcode';
+import { AXES, CORRECTION } from '../limits.js';
+import { escapeHtml } from '../format.js';
+import { fieldUnit } from '../result-fields.js';
+import { axesToRun } from '../axes-to-run.js';
+import { machineCoefficients, machineUnit, programmed, roundedFiguresText } from '../machine-axes.js';
+import { LINK_TOO_LONG, QR_MOST_BYTES, jobRows, linkBytes, reportDateLine, reportInputRows, reportInspectionLine, verdictLine } from '../report-lines.js';
+import { fieldNames } from './field-names.js';
 
 const $ = (selector) => document.querySelector(selector);
+const unitOf = (path) => fieldUnit(path) || '';
 
-// The report's rows of [group, field, value]: the hob, wheel, setup, machine and grid values the
-// case gives (io/input-rows.js), the degree, and what was derived.
-const GROUPS = ['hob', 'wheel', 'setup', 'machine', 'grid'];
-export function reportRows(result, caseObject) {
-  const given = inputRows(caseObject).map(([path, v]) => [path.split('.'), v])
-    .filter(([p, v]) => p.length === 2 && GROUPS.includes(p[0]) && v !== null && typeof v !== 'object');
-  const rows = [];
-  for (const group of GROUPS) {
-    for (const [[g, field], v] of given) if (g === group) rows.push([group, field, typeof v === 'number' ? fmt(v, 8) : String(v)]);
+// The form's labels (as HTML, with their symbols) and units of the case's fields, and its groups'
+// headings: what the report's inputs table shows instead of the case's field paths.
+function formWords() {
+  const names = fieldNames();
+  const labels = {}, units = {}, groups = {};
+  for (const [path, name] of Object.entries(names)) labels[path] = name.html;
+  for (const fieldset of document.querySelectorAll('#inputs fieldset[data-group]')) groups[fieldset.dataset.group] = names[fieldset.dataset.group].html;
+  for (const input of document.querySelectorAll('#inputs [data-field]')) {
+    const unit = input.closest('label') && input.closest('label').querySelector('.unit:not([data-limit])');
+    units[input.dataset.field] = unit ? unit.textContent.trim() : '';
   }
-  if (caseObject.degree !== undefined) rows.push(['axes', 'degree', String(caseObject.degree)]);
-  if (!caseObject.setup || caseObject.setup.settingAngle === undefined) rows.push(['setup', 'settingAngle (derived)', `${fmt(result.setup.settingAngle, 8)} deg`]);
-  if (caseObject.axes) rows.push(['axes', 'run', AXES.join(', ') + ' as in the case']);
-  return rows;
+  return { labels, units, groups, text: Object.fromEntries(Object.entries(names).map(([p, n]) => [p, n.text])) };
 }
 
-// The report's first line: the day, and what was measured (a grid, the machine's points, or nothing).
-export function reportDateLine(caseObject, date = new Date()) {
-  const points = caseObject.measuredPoints;
-  const measured = caseObject.measured ? 'with a measured topography'
-    : points ? `with a measured topography at ${points.length} probe points` : 'no measured topography';
-  return `Printed ${date.toISOString().slice(0, 10)}; ${measured}.`;
+function renderInputs(result, caseObject) {
+  const words = formWords();
+  const rows = reportInputRows(result, caseObject, words);
+  let group = null;
+  const body = rows.map((r) => {
+    const head = r.group !== group ? `<tr class="report-group"><th colspan="3">${r.group}</th></tr>` : '';
+    group = r.group;
+    return `${head}<tr><td>${r.label}${r.derived ? ' <small>(derived)</small>' : ''}</td><td class="num">${escapeHtml(r.value)}</td><td>${escapeHtml(r.unit)}</td></tr>`;
+  }).join('');
+  $('#report-inputs').innerHTML = `<table class="grid-table report-table"><caption>Inputs</caption><tbody>${body}</tbody></table>`;
+  const job = jobRows(caseObject.job, words.text);
+  $('#report-job').innerHTML = job.length
+    ? `<table class="grid-table report-table"><caption>Job</caption><tbody>${job.map(([label, text]) =>
+      `<tr><th>${escapeHtml(label)}</th><td class="report-text">${escapeHtml(text)}</td></tr>`).join('')}</tbody></table>`
+    : '<p>Job: none given (the job number, customer, hob serial and operator are typed under "Job" above the inputs).</p>';
 }
 
-// The inspection's line in the report's head: the class with its conformity and the proven class,
-// "Rake face (DIN 3968): Class A — conforms (ISO 14253-1, U95 = 2 µm); proven class A." ('' without
-// an inspection). The verdict's sentence and the checks lead the topography's page.
-export function reportInspectionLine(inspection) {
-  const lead = classLead(inspection);
-  if (!lead) return '';
-  return `Rake face (DIN 3968): ${lead.graded ? `${lead.text}.` : inspection.notGraded || 'Not graded.'}`;
+// "Program this": the axes to run in the control's units, as the page's "Axes to run" shows them.
+function renderProgramAxes(state) {
+  const { axes, source } = axesToRun(state);
+  const helical = state.result.setup.motionUnit === 'rad';
+  const m = machineCoefficients(axes, helical);
+  const degree = axes.X.length - 1;
+  $('#report-program-source').textContent = source;
+  // The unit of a cell is its row's (mm or deg) per its column's power of the motion (deg or mm):
+  // machineUnit's "mm/deg^2" split so that the numbers fit the paper's width.
+  const per = (k) => machineUnit(AXES[0], k, helical).split('/')[1];
+  $('#report-axes thead').innerHTML = `<tr><th>axis</th>${Array.from({ length: degree + 1 }, (_, k) =>
+    `<th>a${k}${k ? ` <span class="unit">(per ${per(k)})</span>` : ''}</th>`).join('')}</tr>`;
+  $('#report-axes tbody').innerHTML = AXES.map((a) => `<tr data-axis="${a}"><th>${a} <span class="unit">(${machineUnit(a, 0, helical)})</span></th>${m[a].map((c, k) =>
+    `<td class="num" title="${machineUnit(a, k, helical)}">${programmed(c, CORRECTION.coefficientDigits)}</td>`).join('')}</tr>`).join('');
+  $('#report-axes-figures').textContent = roundedFiguresText(state.result.correction, unitOf);
+}
+
+// The NC program the axes belong to, printed under them. The page's NC program view (issue 22,
+// item 1) calls this with the program it offers ({name: 'Sinumerik 840D sl, POLY', text}), and
+// with null when there is none; until then the report prints the axes without a program.
+export function showReportProgram(program) {
+  const box = $('#report-program');
+  const text = program && typeof program.text === 'string' ? program.text : '';
+  box.hidden = !text;
+  $('#report-program-name').textContent = text ? `NC program: ${program.name || ''}` : '';
+  $('#report-program-text').textContent = text;
+}
+
+// The case link as a QR code, or a sentence when it is too long for one. Returns a promise.
+let shownLink = null;
+export function renderLink(link = location.href) {
+  if (link === shownLink) return Promise.resolve();
+  shownLink = link;
+  const box = $('#report-qr'), note = $('#report-link-note');
+  const bytes = linkBytes(link);
+  if (bytes > QR_MOST_BYTES) {
+    box.innerHTML = '';
+    box.hidden = true;
+    note.textContent = LINK_TOO_LONG(bytes);
+    return Promise.resolve();
+  }
+  return QRCode.toString(link, { type: 'svg', errorCorrectionLevel: 'L', margin: 4 }).then((svg) => {
+    if (shownLink !== link) return;
+    box.innerHTML = svg;
+    box.hidden = false;
+    // A module of about 0.33 mm, so that a phone reads it off paper: 30 to 60 mm wide.
+    const size = Math.min(60, Math.max(30, 0.33 * Number(/viewBox="0 0 (\d+)/.exec(svg)[1])));
+    box.style.setProperty('--qr-size', `${size.toFixed(1)}mm`);
+    box.dataset.bytes = String(bytes);
+    note.textContent = 'Case link: scan the code to open this case in the calculator.';
+  }, (e) => {
+    box.hidden = true;
+    note.textContent = `The case link could not be made a QR code (${e.message}): save the case file ("Save case") and keep it with this report.`;
+  });
+}
+
+// The printable width, CSS px: the narrower of A4 (210 mm) and Letter (215.9 mm) less the
+// stylesheet's 12 mm margins (@page), so that one layout fits either paper.
+export const PRINTABLE_WIDTH = Math.floor(((Math.min(210, 215.9) - 2 * 12) / 25.4) * 96);
+
+// A plot's width in print: the printable width less the insets of the card it sits in (the same
+// on its left and right), and no wider than its box.
+function printWidth(el) {
+  const inset = el.getBoundingClientRect().left - document.documentElement.getBoundingClientRect().left;
+  return Math.max(200, Math.floor(Math.min(el.clientWidth, PRINTABLE_WIDTH - 2 * inset)));
 }
 
 export function mountReport(store) {
-  store.on('result', ({ result, caseObject }) => {
+  store.on('result', ({ result, caseObject }, state) => {
+    $('#report-verdict').textContent = verdictLine(result, unitOf);
     $('#report-date').textContent = reportDateLine(caseObject);
     $('#report-inspection').textContent = reportInspectionLine(result.inspection);
-    const rows = reportRows(result, caseObject);
-    $('#report-inputs').innerHTML = `<table class="grid-table"><thead><tr><th>group</th><th>field</th><th>value</th></tr></thead><tbody>${
-      rows.map((r) => `<tr>${r.map((c) => `<td>${escapeHtml(c)}</td>`).join('')}</tr>`).join('')}</tbody></table>`;
+    renderInputs(result, caseObject);
+    renderProgramAxes(state);
+    // The link is written after the result (io/url.js): the code follows it.
+    queueMicrotask(() => renderLink());
   });
-  const linkNow = () => { $('#report-link').textContent = location.href; };
-  // The plots at the paper's width while printing (their heights as drawn), at the screen's after.
+  // The plots at the printable width while printing (their heights as drawn), at the screen's after.
+  // The browser lays the printed pages out at the paper's width, not the window's, and tells the
+  // page only that print media now apply: the width comes from the paper (printWidth), never from
+  // the window's layout, so that a map and its colour bar stay within the card.
   const resize = () => {
-    linkNow();
+    renderLink();
     if (!self.Plotly) return;
     const printing = window.matchMedia('print').matches;
     for (const el of document.querySelectorAll('.plot')) {
       if (!el.data || el.offsetParent === null) continue;
-      self.Plotly.relayout(el, { width: printing ? el.clientWidth : null }).catch(() => {});
+      self.Plotly.relayout(el, { width: printing ? printWidth(el) : null }).catch(() => {});
     }
   };
   const media = window.matchMedia('print');
   media.addEventListener('change', resize);
   window.addEventListener('beforeprint', resize);
   window.addEventListener('afterprint', resize);
-  $('#print-report').addEventListener('click', () => { linkNow(); window.print(); });
+  $('#print-report').addEventListener('click', () => { renderLink(); window.print(); });
 }

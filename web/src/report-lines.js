@@ -1,0 +1,100 @@
+// The printed report's first page in words (pure, with Node tests; views/report.js puts it on the
+// page): the verdict in one line, the job, and the inputs with their labels and units. Units of
+// results come from the module (unitOf: a result field's path to its unit, result-fields.js);
+// labels and units of the inputs from the caller (the form's own, views/field-names.js), so that
+// nothing here types a unit or shows a case's field path.
+import { classLead } from './inspection-table.js';
+import { fmt } from './format.js';
+import { inputRows } from './io/input-rows.js';
+
+const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
+// An rms to 3 significant digits; below a nanometre, what no measurement tells apart from zero, as
+// such ("below 0.001 µm"), not as a solver's 2e-11.
+const LEAST = 0.001;
+const figure = (v, unit) => (Math.abs(v) < LEAST && v !== 0 ? `below ${LEAST}` : fmt(v, 3)) + (unit ? ` ${unit}` : '');
+
+// The report's first line: the day, and what was measured (a grid, the machine's points, or nothing).
+export function reportDateLine(caseObject, date = new Date()) {
+  const points = caseObject.measuredPoints;
+  const measured = caseObject.measured ? 'with a measured topography'
+    : points ? `with a measured topography at ${points.length} probe points` : 'no measured topography';
+  return `Printed ${date.toISOString().slice(0, 10)}; ${measured}.`;
+}
+
+// The inspection's line in the report's head: the class with its conformity and the proven class,
+// "Rake face (DIN 3968): Class A — conforms (ISO 14253-1, U95 = 2 µm); proven class A." ('' without
+// an inspection). The verdict's sentence and the checks lead the topography's page.
+export function reportInspectionLine(inspection) {
+  const lead = classLead(inspection);
+  if (!lead) return '';
+  return `Rake face (DIN 3968): ${lead.graded ? `${lead.text}.` : inspection.notGraded || 'Not graded.'}`;
+}
+
+// "Class A — conforms; face 12.3 µm rms measured, 0.08 µm rms predicted after the correction (at
+// most 0.11 µm)": the rake face's class with its conformity (ISO 14253-1), then the face's rms
+// before and after. Without a measurement the face is the one simulated for the axes run; when
+// the correction says stop, the face is within the probe noise and the axes stay.
+export function verdictLine(result, unitOf) {
+  const lead = classLead(result && result.inspection, unitOf);
+  const head = !lead ? 'Rake face not inspected' : lead.graded ? `Class ${lead.klass} — ${lead.conformity}` : 'Rake face not graded';
+  const c = result && result.correction;
+  const before = num(c && c.rmsBefore);
+  if (c && before !== null) {
+    const unit = unitOf('correction.rmsBefore');
+    const measured = `face ${figure(before, unit)} rms measured`;
+    if (c.stop === true) return `${head}; ${measured}: within the probe noise, keep the axes run.`;
+    const predicted = num(c.predictedRms), high = num(c.predictedRmsHigh);
+    const bound = high === null ? '' : ` (at most ${figure(Math.max(high, LEAST), unitOf('correction.predictedRmsHigh'))})`;
+    if (predicted === null) return `${head}; ${measured}.`;
+    const after = predicted === 0 ? 'within the probe noise after the correction'
+      : `${figure(predicted, unitOf('correction.predictedRms'))} rms predicted after the correction`;
+    return `${head}; ${measured}, ${after}${bound}.`;
+  }
+  const simulated = num(result && result.topography && result.topography.rms);
+  const face = simulated === null ? '' : `; face ${figure(simulated, unitOf('topography.rms'))} rms simulated for the axes run`;
+  return `${head}${face}; nothing measured, no correction.`;
+}
+
+// The job's record as [label, text] rows in the case's order, its labels the form's
+// (names: a case field's path to its label); empty when the case names no job.
+export const JOB_FIELDS = ['number', 'customer', 'hobSerial', 'operator', 'notes'];
+export function jobRows(job, names) {
+  if (!job || typeof job !== 'object') return [];
+  return JOB_FIELDS.filter((k) => typeof job[k] === 'string' && job[k].trim() !== '')
+    .map((k) => [names[`job.${k}`] || k, job[k].trim()]);
+}
+
+// The inputs as the report lists them: [{group, label, value, unit}] per value the case gives in
+// the hob, wheel, setup, machine and grid groups and the degree (io/input-rows.js), then the setting
+// angle and centre distance when derived. labels: a path to its label (the form's words; a path
+// without one is left out, never shown as a path), units: a path to its unit ('' for none),
+// groups: a group to its heading.
+const GROUPS = ['hob', 'wheel', 'setup', 'machine', 'grid'];
+const value = (v) => (typeof v === 'number' ? fmt(v, 8) : String(v));
+export function reportInputRows(result, caseObject, { labels, units, groups }) {
+  const rows = [];
+  const given = inputRows(caseObject).filter(([path, v]) => v !== null && typeof v !== 'object' && !Array.isArray(v));
+  const add = (path, v, derived = false) => {
+    if (!labels[path]) return;
+    const group = path.includes('.') ? path.split('.')[0] : 'grid';
+    rows.push({ group: groups[group] || '', label: labels[path], value: value(v), unit: units[path] || '', derived });
+  };
+  for (const group of GROUPS) {
+    for (const [path, v] of given) if (path.split('.')[0] === group && path.split('.').length === 2) add(path, v);
+    if (group === 'setup' && result && result.setup) {
+      for (const key of ['settingAngle', 'centerDistance']) {
+        const given = caseObject.setup && caseObject.setup[key] !== undefined;
+        if (!given && num(result.setup[key]) !== null) add(`setup.${key}`, result.setup[key], true);
+      }
+    }
+    if (group === 'grid' && caseObject.degree !== undefined) add('degree', caseObject.degree);
+  }
+  return rows;
+}
+
+// The case link as a QR code holds at most this many bytes: version 40 at error correction level
+// L in byte mode (ISO/IEC 18004, Table 7). A longer link gets a sentence instead of a code.
+export const QR_MOST_BYTES = 2953;
+export const linkBytes = (link) => new TextEncoder().encode(link).length;
+export const LINK_TOO_LONG = (bytes) => `The case link (${bytes} bytes) is too long for a QR code (at most ${QR_MOST_BYTES} bytes): ` +
+  'save the case file ("Save case") and keep it with this report.';
