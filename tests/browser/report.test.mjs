@@ -159,6 +159,9 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
     const pageText = (k) => execFileSync('pdftotext', ['-f', String(k), '-l', String(k), '-layout', pdf, '-'], { encoding: 'utf8' });
     const second = pageText(2);
     assert.match(second, /Program this/);
+    // With the NC program the page offers for the control chosen (Sinumerik by default).
+    assert.match(second, /NC program: .*SINUMERIK/i);
+    assert.match(all, /N10 G90 G1 X-?[\d.]+ Y-?[\d.]+ Z-?[\d.]+ A-?[\d.]+ B-?[\d.]+\s+N20 POLY /);
     for (const [axis, cells] of programRows) {
       const line = second.split('\n').find((l) => new RegExp(`^\\s*${axis}\\s`).test(l)) || '';
       assert.equal(line.trim().replace(/\s+/g, ' '), `${axis} (${['A', 'B'].includes(axis) ? 'deg' : 'mm'}) ${cells.join(' ')}`, `${format}: axis ${axis}`);

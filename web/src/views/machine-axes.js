@@ -33,12 +33,17 @@ export function mountMachineAxes(store) {
     noteProgram(state);
   }
   // The NC program's blocks and deviation beside its buttons, for the control chosen.
+  // The printed report's "Program this" prints the same program ('ncProgram').
   function noteProgram(state) {
     const note = $('#nc-note');
     try {
-      note.textContent = programNote(programOf(state));
+      const program = programOf(state);
+      note.textContent = programNote(program);
+      const select = $('#nc-dialect');
+      store.emit('ncProgram', { program: { name: select.options[select.selectedIndex].textContent, text: program.text } });
     } catch (e) {
       note.textContent = e.message;
+      store.emit('ncProgram', { program: null });
     }
   }
   $('#nc-dialect').addEventListener('change', () => { if (store.state.result) noteProgram(store.state); });

@@ -2,16 +2,15 @@
 // first page, which only print shows: the verdict in one line (report-lines.js), the date, the
 // rake face's class with its conformity and proven class, the job, the inputs with their labels
 // and units (the form's own), and the case link as a QR code (npm "qrcode"). Then "Program
-// this": the axes to run in the control's units (the page's "Axes to run": axes-to-run.js,
-// machine-axes.js) with the NC program they belong to (showReportProgram). The views the record
+// this": the axes to run in the control's units (the page's "Axes to run": machine-axes.js's axesToRun)
+// with the NC program they belong to (the one offered beside them, event 'ncProgram'). The views the record
 // needs follow, each kept whole on a page; the exact polynomials (Tab. 2) close it as an
 // appendix. For print the plots are redrawn to the printable width, and back after.
 import QRCode from 'qrcode';
 import { AXES, CORRECTION } from '../limits.js';
 import { escapeHtml } from '../format.js';
 import { fieldUnit } from '../result-fields.js';
-import { axesToRun } from '../axes-to-run.js';
-import { machineCoefficients, machineUnit, programmed, roundedFiguresText } from '../machine-axes.js';
+import { axesToRun, machineCoefficients, machineUnit, programmed, roundedFiguresText } from '../machine-axes.js';
 import { LINK_TOO_LONG, QR_MOST_BYTES, jobRows, linkBytes, reportDateLine, reportInputRows, reportInspectionLine, verdictLine } from '../report-lines.js';
 import { fieldNames } from './field-names.js';
 
@@ -51,7 +50,8 @@ function renderInputs(result, caseObject) {
 
 // "Program this": the axes to run in the control's units, as the page's "Axes to run" shows them.
 function renderProgramAxes(state) {
-  const { axes, source } = axesToRun(state);
+  const { axes, words } = axesToRun(state.result, state.resultCase && state.resultCase.axes);
+  const source = `(${words})`;
   const helical = state.result.setup.motionUnit === 'rad';
   const m = machineCoefficients(axes, helical);
   const degree = axes.X.length - 1;
@@ -66,10 +66,9 @@ function renderProgramAxes(state) {
   $('#report-axes-figures').textContent = roundedFiguresText(state.result.correction, unitOf);
 }
 
-// The NC program the axes belong to, printed under them. The page's NC program view (issue 22,
-// item 1) calls this with the program it offers ({name: 'Sinumerik 840D sl, POLY', text}), and
-// with null when there is none; until then the report prints the axes without a program.
-export function showReportProgram(program) {
+// The NC program the axes belong to, printed under them: the one the page offers beside "Axes to
+// run" for the control chosen (views/machine-axes.js emits it as 'ncProgram'), or none.
+function showReportProgram(program) {
   const box = $('#report-program');
   const text = program && typeof program.text === 'string' ? program.text : '';
   box.hidden = !text;
@@ -117,6 +116,7 @@ function printWidth(el) {
 }
 
 export function mountReport(store) {
+  store.on('ncProgram', ({ program }) => showReportProgram(program));
   store.on('result', ({ result, caseObject }, state) => {
     $('#report-verdict').textContent = verdictLine(result, unitOf);
     $('#report-date').textContent = reportDateLine(caseObject);
