@@ -8,9 +8,18 @@
 import { CASE_FORMAT } from './limits.js';
 import { measuredText } from './io/csv.js';
 import { MAX_CASE_DEPTH, nestingDepth } from './io/nesting.js';
-import { calculatorCase, inputsFromCase, readPage } from './io/case-state.js';
+import { inputsFromCase, readPage } from './io/case-state.js';
+import { caseOf } from './store.js';
 
 const isPlainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+
+// The case the page sends for c once it is loaded (store.caseOf of its inputs): the check is the
+// computation itself, and the calculator (client.js) answers the same case again from its last
+// result, so a loaded case is evaluated once.
+function sentCase(c) {
+  const { formCase, measured, locked, lockedAxes, tuning, axes, extra } = inputsFromCase(c);
+  return caseOf({ form: formCase, measured, locked, lockedAxes, tuning, axes, extra });
+}
 
 // The paper's example with the setting angle and the centre distance derived, as the paper
 // derives them (tests/data/tab1.json fixes them at the paper's rounded values, for the native
@@ -73,7 +82,7 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
     const notes = [], refusals = [];
     for (;;) {
       try {
-        await calculator.evaluate(calculatorCase(candidate));
+        await calculator.evaluate(sentCase(candidate));
         break;
       } catch (error) {
         const part = (/^(measured|correction|passes)\b/.exec(error.field || '') || [])[1];
