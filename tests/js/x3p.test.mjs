@@ -223,7 +223,7 @@ test('a points entry whose deflate stream runs on past its declared size is refu
   assert.ok(bomb.length < 200 * 1024, `the bomb is ${bomb.length} bytes`);
   const started = performance.now();
   refuses(bomb, /^Error: bindata\/data\.bin in the X3P container inflates to more than the 360 bytes its entry declares: a damaged or hostile file; refused\./);
-  assert.ok(performance.now() - started < 500, `refused after ${performance.now() - started} ms`);
+  assert.ok(performance.now() - started < 2000, `refused after ${performance.now() - started} ms`);
   // main.xml likewise (a document that runs on into blanks).
   refuses(runOnX3p(f, MAIN_FILE, 16 * 1024 * 1024), /^Error: main\.xml in the X3P container inflates to more than the \d+ bytes its entry declares/);
   // A stream that ends short of its declared size is damaged too.
