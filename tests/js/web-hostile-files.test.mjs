@@ -77,6 +77,11 @@ test('a case with per-gash topographies (a 2.2 MB link) gets a link that fits, l
   delete expected.inspection.gashTopographies;
   assert.deepEqual(caseFromHash(link.hash).case, expected);
   assert.equal(leftOutText(link), 'The link leaves out the per-gash topographies: save the case (a file) to keep it.');
+  // The measured grid a link keeps (MAX_LINK_VALUES values, full digits, negative) fits whole.
+  const measured = Array.from({ length: 50 }, (_, i) => Array.from({ length: 50 }, (_, j) => -Math.sin(i * 0.37 + j * 0.11) * 3.123456789));
+  const withGrid = caseLink({ ...paper, measured, correction: { locked: ['X a0'], lockedAxes: [] } });
+  assert.deepEqual(withGrid.leftOut, []);
+  assert.deepEqual(caseFromHash(withGrid.hash).case.measured, JSON.parse(JSON.stringify(measured)));  // (-0 is written 0)
   // A job that fits says nothing; one too large for any link gets none.
   assert.deepEqual(caseLink(paper).leftOut, []);
   const huge = caseLink({ ...paper, job: { notes: 'x'.repeat(MAX_LINK_CHARS + 10) } });
