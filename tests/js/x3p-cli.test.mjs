@@ -11,6 +11,7 @@ import { fileURLToPath } from 'node:url';
 import { unzipSync, zipSync, strToU8 } from 'fflate';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { readX3p } from '../../web/src/io/x3p.js';
+import { runOnX3p } from './hostile-files.mjs';
 
 const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const cli = path.join(root, 'wasm', 'cli.mjs');
@@ -84,4 +85,22 @@ test('bad X3P files and options: the file and the element named on stderr, exit 
   const brokenFile = path.join(dir, 'broken.json');
   writeFileSync(brokenFile, JSON.stringify(broken));
   assert.match(run(brokenFile, '--measured-x3p', x3p).stderr, /broken\.json: hob\.rakeOffset/);
+});
+
+test('an X3P whose points run on past their declared size (a zip bomb) is refused naming the file, quickly', () => {
+  const prefix = path.join(dir, 'bomb-source');
+  assert.equal(run(measuredFile, '--x3p-out', prefix).status, 0);
+  const bomb = path.join(dir, 'bomb.x3p');
+  writeFileSync(bomb, runOnX3p(unzipSync(readFileSync(`${prefix}-measured.x3p`)), 'bindata/data.bin', 256 * 1024 * 1024));
+  // The time of a good file's run (the module's start, the case's evaluation) on this machine now.
+  let started = performance.now();
+  assert.equal(run(paperFile, '--measured-x3p', `${prefix}-measured.x3p`).status, 0);
+  const good = performance.now() - started;
+  started = performance.now();
+  const out = run(paperFile, '--measured-x3p', bomb);
+  const ms = performance.now() - started;
+  assert.equal(out.status, 1, out.stdout.slice(0, 200));
+  assert.equal(out.stdout, '');
+  assert.match(out.stderr, /bomb\.x3p: bindata\/data\.bin in the X3P container inflates to more than the 360 bytes its entry declares: a damaged or hostile file; refused\./);
+  assert.ok(ms < Math.max(2000, 1.5 * good), `refused after ${ms} ms (a good file's run: ${good} ms)`);
 });

@@ -4,12 +4,14 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createHash } from 'node:crypto';
+import { deflateRawSync } from 'node:zlib';
 import { unzipSync, zipSync, strToU8, strFromU8 } from 'fflate';
 import {
   readX3p, writeX3p, x3pOnGrid, x3pGridCsv, x3pTopographies, metresToMicrons, md5Hex,
   MAIN_FILE, DATA_FILE, CHECKSUM_FILE, X3P_NAMESPACE,
 } from '../../web/src/io/x3p.js';
 import { readMeasured } from '../../web/src/io/measured-import.js';
+import { runOnX3p, zipWithStream } from './hostile-files.mjs';
 
 const grid = { r: [19, 24.25, 29.5, 34.75, 40], x: [-70, -52.5, -35, -17.5, 0, 17.5, 35, 52.5, 70] };
 // Values with full double precision (as the simulation gives) and short ones (as a machine writes).
@@ -212,6 +214,23 @@ test('a zip whose main.xml claims to be huge is not inflated', () => {
   const f = files(good());
   const bigMain = new Uint8Array(9 * 1024 * 1024).fill(0x20);  // deflates to a few kB
   refuses(rezip({ ...f, [MAIN_FILE]: bigMain }), /^Error: main\.xml in the X3P container is larger than a topography needs; refused\./);
+});
+
+test('a points entry whose deflate stream runs on past its declared size is refused at that size, quickly, not inflated to the end', () => {
+  const f = files(good());
+  // 64 MB of zeros after the true points: the entry declares only the points' bytes.
+  const bomb = runOnX3p(f, DATA_FILE, 64 * 1024 * 1024);
+  assert.ok(bomb.length < 200 * 1024, `the bomb is ${bomb.length} bytes`);
+  const started = performance.now();
+  refuses(bomb, /^Error: bindata\/data\.bin in the X3P container inflates to more than the 360 bytes its entry declares: a damaged or hostile file; refused\./);
+  assert.ok(performance.now() - started < 2000, `refused after ${performance.now() - started} ms`);
+  // main.xml likewise (a document that runs on into blanks).
+  refuses(runOnX3p(f, MAIN_FILE, 16 * 1024 * 1024), /^Error: main\.xml in the X3P container inflates to more than the \d+ bytes its entry declares/);
+  // A stream that ends short of its declared size is damaged too.
+  const short = new Uint8Array(f[DATA_FILE].subarray(0, 100));
+  refuses(zipWithStream(f, DATA_FILE, new Uint8Array(deflateRawSync(short)), 360), /^Error: bindata\/data\.bin in the X3P container inflates to 100 bytes, not the 360 its entry declares: the file is damaged; refused\./);
+  // The declared size itself is capped, whatever the stream.
+  refuses(zipWithStream(f, DATA_FILE, new Uint8Array([3, 0]), 64 * 1024 * 1024), /^Error: bindata\/data\.bin in the X3P container is larger than a topography needs; refused\./);
 });
 
 test('the writer refuses a topography that is not the grid, or not finite', () => {

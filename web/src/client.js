@@ -36,15 +36,27 @@ export function workerError({ message, code, field }) {
   return failure(message, refusal ? { code, field: field || '' } : { code: 'Internal' });
 }
 
+// A value as JSON with its objects' keys sorted: the same case gives the same text, whatever order
+// its members were set in.
+export function canonicalJson(value) {
+  return JSON.stringify(value, (_, v) => (v !== null && typeof v === 'object' && !Array.isArray(v)
+    ? Object.fromEntries(Object.keys(v).sort().map((k) => [k, v[k]])) : v));
+}
+
 // evaluate(case) resolves to {result, ms}; limits() to the module's limits(), fields() to its
 // resultFields() (the result's fields with their units and meanings). Each rejects with
 // an Error whose .code is the module's ('InvalidInput' or 'Unsolvable', a refusal, with its
-// .field; 'Internal', a fault: the worker took a fresh module), or 'Timeout' when the watchdog
-// ended the worker.
+// .field; 'Internal', a fault: the worker took a fresh module), 'Timeout' when the watchdog
+// ended the worker, or 'Cancelled' when cancel() did.
+// A case is evaluated once: the last case computed is kept with its result, and asked again (a
+// loaded case, checked and then shown) it is answered from there. evaluations counts the cases
+// the worker was given; onBusy(busy) says when the first evaluation starts and the last ends.
 export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = {}) {
   const pending = new Map();
   let nextId = 1;
   let started;
+  let last = null;  // {key, result, ms}: the last case computed
+  let running = 0;  // evaluations under way
 
   const rejectAll = (error) => {
     for (const p of pending.values()) { clearTimeout(p.timer); p.reject(error); }
@@ -65,12 +77,28 @@ export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = 
       w.onerror = (event) => rejectAll(failure(`The calculator stopped: ${event.message || 'the worker failed to start'}`, { code: 'Internal' }));
     }, (e) => rejectAll(failure(`The calculator did not start: ${e.message}`, { code: 'Internal' })));
   };
+  // Ends the worker, whatever it computes, rejecting every request with `error`; a fresh one starts.
+  const replace = (error) => {
+    started.then((w) => w.terminate(), () => {});
+    rejectAll(error);
+    start();
+  };
   const restart = () => {
     const seconds = (client.watchdogMs / 1000).toFixed(client.watchdogMs < 10000 ? 1 : 0);
-    started.then((w) => w.terminate(), () => {});
-    rejectAll(failure(`The calculator did not answer within ${seconds} s and was restarted.`, { code: 'Timeout' }));
-    start();
+    replace(failure(`The calculator did not answer within ${seconds} s and was restarted.`, { code: 'Timeout' }));
     onRestart();
+  };
+  const evaluate = (caseObject) => {
+    const key = canonicalJson(caseObject);
+    if (last && last.key === key) return Promise.resolve({ result: last.result, ms: last.ms });
+    client.evaluations += 1;
+    if (running++ === 0) client.onBusy(true);
+    const done = () => { if (--running === 0) client.onBusy(false); };
+    return send({ caseObject }).then((answer) => {
+      done();
+      last = { key, result: answer.result, ms: answer.ms };
+      return answer;
+    }, (error) => { done(); throw error; });
   };
   const send = (message) => {
     const id = nextId++;
@@ -88,7 +116,12 @@ export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = 
   start();
   const client = {
     watchdogMs,
-    evaluate: (caseObject) => send({ caseObject }),
+    evaluations: 0,
+    onBusy: () => {},
+    evaluate,
+    // Ends the computation under way: the worker is ended and a fresh one started; every request
+    // waiting rejects with code 'Cancelled'.
+    cancel: () => replace(failure('The computation was cancelled.', { code: 'Cancelled' })),
     limits: () => send({ limits: true }).then(({ result }) => result),
     // The result's fields with their units and meanings (the module's resultFields()).
     fields: () => send({ fields: true }).then(({ result }) => result),

@@ -1,14 +1,19 @@
 // For the browser tests, the benchmark and anyone curious, from the store's events only:
 // window.hobsharpTimings says when the page showed its first result and drew its plots (ms after
 // navigation), how many results, refusals and plot passes it has had, and how long each change
-// of an input took to show its numbers. window.hobsharpTest lets the tests stall the worker.
+// of an input took to show its numbers, how many cases the worker evaluated and how many were
+// cancelled. window.hobsharpTest lets the tests stall the worker.
 
 export function installHooks(store, calculator) {
   const t = {
     opened: performance.now(), firstResult: undefined, plotted: undefined,
     results: 0, errors: 0, draws: 0,
     inputToNumbers: [],  // ms from a user's input event to its numbers in the page
+    cancelled: 0,
   };
+  // How many cases the worker was given to evaluate (a case is evaluated once: client.js).
+  Object.defineProperty(t, 'evaluations', { get: () => calculator.evaluations, enumerable: true });
+  store.on('cancelled', () => { t.cancelled += 1; });
   let inputAt = null;
   store.on('inputs', ({ at }) => { if (typeof at === 'number') inputAt = at; });
   store.on('result', () => {

@@ -9,8 +9,29 @@ import { CASE_FORMAT } from './limits.js';
 import { measuredText } from './io/csv.js';
 import { MAX_CASE_DEPTH, nestingDepth } from './io/nesting.js';
 import { calculatorCase, inputsFromCase, readPage } from './io/case-state.js';
+import { caseOf } from './store.js';
+import { canonicalJson } from './client.js';
 
 const isPlainObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+
+// The case checked for c: the case the page sends once c is loaded (store.caseOf of its inputs)
+// when it is c as given but for the empty locks caseOf adds to a measurement. Then the check is
+// the computation itself, and the calculator (client.js) answers the same case again from its
+// last result: a loaded case is evaluated once. Otherwise (locks that are not lists, a correction
+// without a measurement) c as given, so that the calculator names what is wrong in it.
+function checkedCase(c) {
+  const given = calculatorCase(c);
+  let sent;
+  try {
+    const { formCase, measured, locked, lockedAxes, tuning, axes, extra } = inputsFromCase(c);
+    sent = caseOf({ form: formCase, measured, locked, lockedAxes, tuning, axes, extra });
+  } catch {
+    return given;  // (members the page cannot take in: the calculator names them)
+  }
+  const measuring = given.measured !== undefined || given.measuredPoints !== undefined;
+  const expected = measuring ? { ...given, correction: { lockedAxes: [], locked: [], ...given.correction } } : given;
+  return canonicalJson(expected) === canonicalJson(sent) ? sent : given;
+}
 
 // The paper's example with the setting angle and the centre distance derived, as the paper
 // derives them (tests/data/tab1.json fixes them at the paper's rounded values, for the native
@@ -73,7 +94,7 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
     const notes = [], refusals = [];
     for (;;) {
       try {
-        await calculator.evaluate(calculatorCase(candidate));
+        await calculator.evaluate(checkedCase(candidate));
         break;
       } catch (error) {
         const part = (/^(measured|correction|passes)\b/.exec(error.field || '') || [])[1];

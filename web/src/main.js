@@ -32,6 +32,7 @@ import { mountIdentification } from './views/identification.js';
 import { mountCorrectionOptions } from './views/correction-options.js';
 import { mountUndo } from './views/undo.js';
 import { mountAccess } from './views/access.js';
+import { mountCancel } from './views/cancel.js';
 import { mountCaseFiles } from './io/case-files.js';
 import { caseFromHash, mountLink } from './io/url.js';
 import { createLoader } from './load.js';
@@ -45,6 +46,7 @@ loadPlotly().catch(() => {});  // in parallel with the calculator; a failure is 
 installHooks(store, calculator);
 mountAccess();
 mountStatus(store);
+mountCancel(calculator);
 const form = mountForm(store);
 mountFieldErrors(store);
 mountStale(store);
@@ -72,8 +74,7 @@ mountWheelSplit(store, plots);
 mountPassHistory(store, calculator, measuredView);
 mountUndo(store);
 const loader = createLoader({ store, calculator, form, measuredView, paperCase: self.HOBSHARP_PAPER_CASE });
-mountCaseFiles(store, loader);
-mountLink(store);
+mountCaseFiles(store, loader, mountLink(store));
 startRecompute(store, calculator);
 
 // The module's limits first (the form's bounds, the axes, the case format) and the description of

@@ -1,5 +1,6 @@
 // Every change of the inputs is sent at once; while a calculation runs, only the newest change
-// waits (older ones are dropped), and a result is shown only if no newer input is waiting.
+// waits (older ones are dropped), and a result is shown only if no newer input is waiting. A
+// calculation cancelled (views/cancel.js) shows nothing new: the 'cancelled' event says so.
 import { caseOf } from './store.js';
 import { OPTION_FIELD } from './correction-options.js';
 
@@ -36,7 +37,10 @@ export function startRecompute(store, calculator) {
       const { result, ms } = await calculator.evaluate(caseObject);
       if (!waiting) store.accept(result, caseObject, ms);
     } catch (error) {
-      if (!waiting) refused(error, caseObject);
+      // Cancelled (views/cancel.js): the results on screen stay, and say they are the last computed.
+      // A cancel ends the inputs waiting too: the next change computes.
+      if (error.code === 'Cancelled') { waiting = null; store.emit('cancelled', { caseObject }); }
+      else if (!waiting) refused(error, caseObject);
     }
     running = false;
     if (waiting) next();

@@ -9,6 +9,7 @@
 //   result     a result arrived for the newest inputs: {result, caseObject, ms}
 //   refusal    an input was refused, by the calculator or by the page: {error, caseObject}
 //   aside      a measured grid the calculator refused was set aside: {error}
+//   cancelled  the user cancelled the calculation of these inputs: {caseObject}
 //   status     state.status changed
 //   notice     state.notice changed (a message that stays until the user changes something)
 //   view       what the views show changed: state.view (normal or circular deviation), or

@@ -4,11 +4,13 @@
 import { savedCase, userData } from './case-state.js';
 import { chosenFileText, download } from './files.js';
 import { resultsCsv, resultsFileName } from './results-csv.js';
+import { leftOutText } from './url.js';
 
 const $ = (selector) => document.querySelector(selector);
 const MAX_CASE_BYTES = 40 * 1024 * 1024;
 
-export function mountCaseFiles(store, loader) {
+// links: mountLink's (io/url.js), the link of the last good result.
+export function mountCaseFiles(store, loader, links) {
   $('#preset-paper').addEventListener('click', () => {
     const losing = userData(store.state);
     if (losing.length && !window.confirm(`Load the paper example? It replaces ${losing.join(', ')}. ` +
@@ -37,12 +39,18 @@ export function mountCaseFiles(store, loader) {
     }
     loader.file(c, file.name);
   });
+  // The link of the last good result (io/url.js), as it fits: what it leaves out is said, and a
+  // job too large for any link is not handed out as one.
   $('#copy-link').addEventListener('click', async () => {
+    const last = links.link();
+    if (last.hash === null) { store.setStatus(leftOutText(last), 'error'); return; }
+    const href = last.hash ? `${location.href.split('#')[0]}${last.hash}` : location.href;
+    const note = last.hash ? leftOutText(last) : '';
     try {
-      await navigator.clipboard.writeText(location.href);
-      store.setStatus('The link to this job is on the clipboard.', 'ok');
+      await navigator.clipboard.writeText(href);
+      store.setStatus(`The link to this job is on the clipboard.${note ? ` ${note}` : ''}`, 'ok');
     } catch (e) {
-      store.setStatus(`Copy this link: ${location.href}`, 'ok');
+      store.setStatus(`Copy this link: ${href}${note ? ` ${note}` : ''}`, 'ok');
     }
   });
   $('#download-results').addEventListener('click', () => {

@@ -7,6 +7,10 @@ import { MAX_CASE_DEPTH, nestingDepth } from './nesting.js';
 // The largest measured text the page takes, pasted or uploaded: a grid of at most 201 x 201
 // values is a few hundred kB.
 export const MAX_MEASURED_BYTES = 2 * 1024 * 1024;
+// The most values a measured text may hold, read before it is parsed as a grid: a grid of at most
+// 201 x 201 values is 40,804 with its positions, and a measuring machine's lines above it add a
+// few. 2 MB of one-digit lines hold 1,000,000 (which froze the page 16 s).
+export const MAX_GRID_VALUES = 50000;
 
 export function tooLargeMessage(what, bytes) {
   return `${what} is ${(bytes / 1048576).toFixed(1)} MB; a measured grid of at most ${GRID.max} × ${GRID.max} values ` +

@@ -3,10 +3,18 @@
 // in gash order by file name (gash-2 before gash-10), each of the grid's shape. Throws an Error
 // naming the file.
 import { checkShape, readMeasured } from './measured-import.js';
+import { INSPECTION } from '../limits.js';
+
+// Throws when n files cannot be one per gash: fewer than 2, or more than the calculator's most
+// gashes (limits().inspection.maxGashes), checked before any file is read.
+export function checkGashFileCount(n) {
+  if (n < 2) throw new Error(`Choose one CSV file per gash, at least 2; got ${n}.`);
+  if (INSPECTION.maxGashes && n > INSPECTION.maxGashes) throw new Error(`${n} files chosen, one per gash; a hob has at most ${INSPECTION.maxGashes} gashes.`);
+}
 
 // files: [{name, text}]; grid: {r: [mm], x: [mm]} -> {names, grids} in gash order.
 export function readGashTopographies(files, grid) {
-  if (files.length < 2) throw new Error(`Choose one CSV file per gash, at least 2; got ${files.length}.`);
+  checkGashFileCount(files.length);
   const sorted = [...files].sort((a, b) => a.name.localeCompare(b.name, 'en', { numeric: true }));
   const grids = sorted.map(({ name, text }) => {
     try {

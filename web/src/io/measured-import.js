@@ -3,7 +3,8 @@
 // decimal commas, values typed in mm by mistake, or a grid written along the other direction.
 // readMeasured() says what it recognised and what looks wrong; orient() applies the options the
 // user ticks on the preview (transpose, reverse rows or columns, change sign, mm to µm).
-import { MAX_MEASURED_BYTES, tooLargeMessage } from './csv.js';
+import { MAX_GRID_VALUES, MAX_MEASURED_BYTES, tooLargeMessage } from './csv.js';
+import { GRID } from '../limits.js';
 
 // The values a grid of measured deviations can plausibly hold, µm: below this largest |value|, the
 // numbers look like mm (a probe resolves about 0.1 µm; 0.05 mm is a plausible deviation).
@@ -31,6 +32,26 @@ function cellsOf(line) {
   return { cells: cells.filter((c) => c !== ''), decimalComma: false };
 }
 
+const count = (n) => n.toLocaleString('en-US');
+
+// Throws naming the line where the text's values run past MAX_GRID_VALUES, before the values are
+// read: a text of 1,000,000 values is refused at once, not parsed (nor put into the page's box,
+// views/measured.js, where a million lines take the browser 20 s to lay out).
+export function checkGridValueCount(text) {
+  let values = 0, n = 0;
+  for (let start = 0; start < text.length; n += 1) {
+    const end = text.indexOf('\n', start);
+    const line = text.slice(start, end < 0 ? text.length : end).trim();
+    start = end < 0 ? text.length : end + 1;
+    if (line === '' || line.startsWith('#')) continue;
+    values += cellsOf(line).cells.length;
+    if (values > MAX_GRID_VALUES) {
+      const most = GRID.max ? `; a measured grid has at most ${GRID.max} × ${GRID.max}, ${count((GRID.max + 1) ** 2)} with its positions` : '';
+      throw new Error(`Line ${count(n + 1)}: the text holds more than ${count(MAX_GRID_VALUES)} values${most}. Is this the right file?`);
+    }
+  }
+}
+
 const near = (a, b) => Math.abs(a - b) <= POSITION_TOLERANCE;
 const fmtList = (list) => list.map((v) => String(Math.round(v * 1000) / 1000)).join(', ');
 
@@ -39,6 +60,7 @@ const fmtList = (list) => list.map((v) => String(Math.round(v * 1000) / 1000)).j
 // grid: {r: [mm], x: [mm]}, the lines of the face grid now, to recognise and check positions.
 export function readMeasured(text, grid) {
   if (text.length > MAX_MEASURED_BYTES) throw new Error(tooLargeMessage('The text', text.length));
+  checkGridValueCount(text);
   const notes = [], warnings = [], suggest = { transpose: false, mm: false };
   const lines = [];
   text.replace(/^\uFEFF/, '').split(/\r?\n/).forEach((raw, i) => {
@@ -90,7 +112,8 @@ export function readMeasured(text, grid) {
     suggest.transpose = true;
     warnings.push({ kind: 'transpose', text: `The text has ${out.length} rows of ${grid.r.length} values: the grid written along the other direction? Tick "transpose".` });
   }
-  const largest = Math.max(0, ...out.flat().map(Math.abs));
+  let largest = 0;  // a loop: a text's values are never spread into a call
+  for (const row of out) for (const v of row) largest = Math.max(largest, Math.abs(v));
   if (largest > 0 && largest < MM_SUSPECT_BELOW) {
     suggest.mm = true;
     warnings.push({ kind: 'mm', text: `The largest |value| is ${Number(largest.toPrecision(3))} µm, below what a probe resolves: these look like mm. Tick "values in mm" to multiply them by 1000.` });

@@ -10,7 +10,7 @@
 // root to tip), Z = the normal deviation (plus = excess material). X3P gives every coordinate in
 // metres: x and r are written as offset + index * increment (mm / 1000), the deviation as
 // float64 metres (µm / 1e6).
-import { unzipSync, zipSync } from 'fflate';
+import { Unzip, UnzipInflate, unzipSync, zipSync } from 'fflate';
 import { XMLParser, XMLValidator } from 'fast-xml-parser';
 import { md5 } from '@noble/hashes/legacy.js';
 
@@ -66,7 +66,7 @@ const num = (v) => String(v);
 function incrementOf(lines, name) {
   if (lines.length < 2) throw new Error(`The ${name} grid has ${lines.length} line; an X3P surface needs at least 2.`);
   const step = (lines[lines.length - 1] - lines[0]) / (lines.length - 1);
-  const tol = 1e-9 * Math.max(1, ...lines.map(Math.abs));
+  const tol = 1e-9 * lines.reduce((m, v) => Math.max(m, Math.abs(v)), 1);
   lines.forEach((v, i) => {
     if (Math.abs(v - (lines[0] + i * step)) > tol) throw new Error(`The ${name} grid's lines are not equally spaced (line ${i + 1} at ${v} mm).`);
   });
@@ -210,7 +210,19 @@ function axisOf(root, name) {
   };
 }
 
+// The most bytes an entry the reader needs may hold (-1: an entry it does not read).
+const limitOf = (name) => (name === MAIN_FILE || name === CHECKSUM_FILE ? MAX_MAIN_BYTES : name.startsWith('bindata/') ? MAX_DATA_BYTES : -1);
+// The zip is fed to the inflater in pieces this large: one piece inflates to at most about
+// 1032 times as much (deflate's largest ratio), 1 MB, before the count of bytes is checked (larger
+// pieces inflate more per check, and fflate takes longer per byte on them).
+const PIECE_BYTES = 1024;
+const zipError = (e) => new Error(`The file is not a readable X3P container (zip): ${e.message}.`);
+
 // The zip's entries that the reader needs, each no larger than its limit; throws naming the file.
+// The central directory gives the entries and the sizes they declare; each entry is then inflated
+// piece by piece, counting its bytes, and refused as soon as it runs past its declared size: a
+// deflate stream can run on far beyond what its entry declares (4 MB that inflate to 4 GB), and
+// is never inflated to its end.
 function entriesOf(bytes) {
   if (!(bytes instanceof Uint8Array)) bytes = new Uint8Array(bytes);
   if (bytes.length > MAX_X3P_BYTES) {
@@ -219,21 +231,43 @@ function entriesOf(bytes) {
   if (bytes.length < 4 || bytes[0] !== 0x50 || bytes[1] !== 0x4b) {
     throw new Error('The file is not an X3P container: an .x3p is a zip archive, and this does not start as one.');
   }
-  const tooLarge = [];
-  let files;
+  const declared = new Map();
   try {
-    files = unzipSync(bytes, {
-      filter: (f) => {
-        const limit = f.name === MAIN_FILE || f.name === CHECKSUM_FILE ? MAX_MAIN_BYTES : f.name.startsWith('bindata/') ? MAX_DATA_BYTES : -1;
-        if (limit < 0) return false;
-        if (f.originalSize > limit) { tooLarge.push(f.name); return false; }
-        return true;
-      },
-    });
+    unzipSync(bytes, { filter: (f) => { if (limitOf(f.name) >= 0 && !declared.has(f.name)) declared.set(f.name, f.originalSize); return false; } });
   } catch (e) {
-    throw new Error(`The file is not a readable X3P container (zip): ${e.message}.`);
+    throw zipError(e);
   }
-  if (tooLarge.length) throw new Error(`${tooLarge[0]} in the X3P container is larger than a topography needs; refused.`);
+  const tooLarge = [...declared].find(([name, size]) => size > limitOf(name));
+  if (tooLarge) throw new Error(`${tooLarge[0]} in the X3P container is larger than a topography needs; refused.`);
+  const files = {};
+  let failure = null;
+  const unzip = new Unzip((file) => {
+    const size = declared.get(file.name);
+    if (size === undefined || failure || files[file.name]) return;  // not started: its bytes are passed over
+    const out = new Uint8Array(size);
+    let n = 0;
+    file.ondata = (error, chunk, final) => {
+      if (failure) return;
+      if (error) { failure = zipError(error); return; }
+      if (n + chunk.length > size) {
+        failure = new Error(`${file.name} in the X3P container inflates to more than the ${size} bytes its entry declares: a damaged or hostile file; refused.`);
+        return;
+      }
+      out.set(chunk, n);
+      n += chunk.length;
+      if (!final) return;
+      if (n !== size) failure = new Error(`${file.name} in the X3P container inflates to ${n} bytes, not the ${size} its entry declares: the file is damaged; refused.`);
+      else files[file.name] = out;
+    };
+    file.start();
+  });
+  unzip.register(UnzipInflate);
+  try {
+    for (let k = 0; k < bytes.length && !failure; k += PIECE_BYTES) unzip.push(bytes.subarray(k, k + PIECE_BYTES), k + PIECE_BYTES >= bytes.length);
+  } catch (e) {
+    failure = failure || zipError(e);
+  }
+  if (failure) throw failure;
   if (!files[MAIN_FILE]) throw new Error(`The X3P container holds no ${MAIN_FILE} (the document that describes the surface).`);
   return files;
 }
@@ -332,7 +366,9 @@ export function readX3p(bytes) {
     }
     values.push(row);
   }
-  const largest = Math.max(...values.map((row) => Math.max(...row.map(Math.abs)))) / UM_PER_M;
+  let largest = 0;  // a loop: a file's values are never spread into a call (a million would overflow the stack)
+  for (const row of values) for (const v of row) largest = Math.max(largest, Math.abs(v));
+  largest /= UM_PER_M;
   if (largest > IMPLAUSIBLE_METRES) {
     fail(`${MAIN_FILE}, Record1/Axes/CZ`, `deviations up to ${Number(largest.toPrecision(3))} m: no grinding error is that large. X3P stores metres; were these written in µm or mm?`);
   }

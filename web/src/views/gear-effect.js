@@ -47,7 +47,8 @@ function drawProfiles(Plotly, g) {
 // spread: fHα that does not change along the hob (scatter 0) is drawn flat, not its rounding
 // noise (1e-9 µm) magnified to fill the plot with nine-digit tick labels.
 function leastRange(values, least = 0.1) {
-  const lo = Math.min(...values), hi = Math.max(...values);
+  let lo = Infinity, hi = -Infinity;  // a loop: no list is spread into a call
+  for (const v of values) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
   if (!(hi - lo < least)) return null;
   const mid = (lo + hi) / 2;
   return [mid - least / 2, mid + least / 2];

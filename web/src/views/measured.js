@@ -4,7 +4,7 @@
 import { predictionText, verdictText } from '../words.js';
 import { fieldMeaning, fieldUnit } from '../result-fields.js';
 import { MAX_MEASURED_BYTES, measuredText, tooLargeMessage } from '../io/csv.js';
-import { ORIENT_OPTIONS, checkShape, orient, readMeasured } from '../io/measured-import.js';
+import { ORIENT_OPTIONS, checkGridValueCount, checkShape, orient, readMeasured } from '../io/measured-import.js';
 import { looksLikePoints, readPoints } from '../io/points-import.js';
 import { escapeHtml, fixed } from '../format.js';
 import { chosenFileText } from '../io/files.js';
@@ -49,14 +49,27 @@ function showWarnings(read, problem, ticked) {
   return !problem;
 }
 
-// Text pasted or dropped into the box counts against the same limit as an uploaded file; over
-// it, nothing is inserted (a 100 MB paste would freeze the page).
+// Why a grid's text is refused before it goes into the box (too many values: a textarea of a
+// million lines takes the browser 20 s to lay out), or '' (a points file has limits of its own).
+function tooManyValues(text) {
+  if (looksLikePoints(text)) return '';
+  try {
+    checkGridValueCount(text);
+    return '';
+  } catch (e) {
+    return e.message;
+  }
+}
+
+// Text pasted or dropped into the box counts against the same limits as an uploaded file; over
+// them, nothing is inserted (a 100 MB paste would freeze the page, and so would a million lines).
 function guardSize(box, refuse) {
   const guard = (event, text, what) => {
     const kept = box.value.length - (box.selectionEnd - box.selectionStart);
-    if (kept + text.length <= MAX_MEASURED_BYTES) return;
+    const many = kept + text.length <= MAX_MEASURED_BYTES ? tooManyValues(text) : '';
+    if (kept + text.length <= MAX_MEASURED_BYTES && !many) return;
     event.preventDefault();
-    refuse(tooLargeMessage(what, text.length));
+    refuse(many ? `${what}: ${many}` : tooLargeMessage(what, text.length));
   };
   box.addEventListener('paste', (e) => guard(e, e.clipboardData ? e.clipboardData.getData('text/plain') : '', 'The pasted text'));
   box.addEventListener('drop', (e) => guard(e, e.dataTransfer ? e.dataTransfer.getData('text/plain') : '', 'The dropped text'));
@@ -198,6 +211,8 @@ export function mountMeasured(store) {
       return;
     }
     if (!file) return;
+    const many = tooManyValues(file.text);
+    if (many) { refuse(`${file.name}: ${many}`); return; }
     box.value = file.text;
     preview();
     use(file.text);

@@ -26,6 +26,10 @@ export function mountStatus(store) {
     store.setStatus(`${what}: ${worded(error).text}${kept()}`, 'error');
     if (error.code === 'Timeout') store.setNotice(`${error.message}${kept()} Change an input to compute again.`);
   });
+  store.on('cancelled', () => {
+    store.setStatus(`Cancelled: nothing was computed for the inputs now in the form.${kept()}`, 'error');
+    store.setNotice(`The computation was cancelled.${kept()} Change an input to compute again.`);
+  });
   store.on('aside', ({ error }) => store.setNotice(`The measured grid is set aside, not used: ${error.message} ` +
     'Its text stays in the box under "Measured topography and correction": correct it there, or the grid, and press "Use this grid".'));
   // A user's change ends the notice; loading a case does not.

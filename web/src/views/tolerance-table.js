@@ -10,7 +10,7 @@ import { escapeHtml, fmt } from '../format.js';
 import { fieldUnit } from '../result-fields.js';
 import { cellConfidence, cellTexts, gashText, gashTopographyCount, isEdited, parseGashDeviations, tableInUse, uncertaintyText, withCell,
   withDefaultTable, withGashDeviations, withGashTopographies, withUncertainty } from '../tolerance-edit.js';
-import { readGashTopographies } from '../io/gash-files.js';
+import { checkGashFileCount, readGashTopographies } from '../io/gash-files.js';
 import { MAX_MEASURED_BYTES } from '../io/csv.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -53,10 +53,12 @@ function render(state) {
   $('#gash-files-clear').disabled = !n;
 }
 
-// The chosen files' texts, each within the measured grid's size limit.
+// The chosen files' texts, each within the measured grid's size limit; their count is checked
+// before any is read.
 async function chosenTexts(input) {
   const files = [...input.files];
   input.value = '';
+  if (files.length) checkGashFileCount(files.length);
   return Promise.all(files.map(async (f) => {
     if (f.size > MAX_MEASURED_BYTES) throw new Error(`${f.name} is ${(f.size / 1048576).toFixed(1)} MB; a measured grid is a few hundred kB.`);
     return { name: f.name, text: await f.text() };
@@ -104,16 +106,29 @@ export function mountToleranceTable(store) {
       setError(`${e.message} The gash deviations in use are unchanged.`);
     }
   });
+  // The inputs and the files' note before a set of gash files was used: put back when the
+  // calculator refuses the set, so that the set in use stays and the next edit computes.
+  let beforeGashes = null, keepError = false;
   $('#gash-files').addEventListener('change', async (event) => {
     try {
       const files = await chosenTexts(event.target);
       if (!files.length || !store.state.result) return;
       const { names, grids } = readGashTopographies(files, store.state.result.topography);
+      beforeGashes = { extra: structuredClone(store.state.extra), read: $('#gash-files-read').textContent };
       commit(withGashTopographies(store.state.extra, grids), event);
       $('#gash-files-read').textContent = `Gashes 1 to ${names.length}: ${names.join(', ')}.`;
     } catch (e) {
       setError(`${e.message} The gashes in use are unchanged.`);
     }
+  });
+  store.on('refusal', ({ error, caseObject }) => {
+    if (!beforeGashes || !caseObject || !/^inspection\.gashTopographies/.test(error.field || '')) return;
+    const back = beforeGashes;
+    beforeGashes = null;
+    keepError = true;  // the refusal stays in view while the set in use is computed again
+    $('#gash-files-read').textContent = back.read;
+    setError(`${error.message} The gashes in use are unchanged.`);
+    store.setInputs({ extra: back.extra }, { source: 'inspection', force: true });
   });
   $('#gash-files-clear').addEventListener('click', (event) => {
     commit(withGashTopographies(store.state.extra, null), event);
@@ -125,11 +140,16 @@ export function mountToleranceTable(store) {
     store.emit('commit');
   });
   store.on('limits', () => renderUncertainty(store.state));
-  store.on('result', (_, state) => { setError(''); setUncertaintyError(''); render(state); renderUncertainty(state); });
+  store.on('result', (_, state) => {
+    if (!keepError) setError('');
+    keepError = false;
+    beforeGashes = null;
+    setUncertaintyError(''); render(state); renderUncertainty(state);
+  });
   store.on('restore', () => { renderUncertainty(store.state); if (store.state.result) render(store.state); });
   store.on('refusal', ({ error, caseObject }) => {
     if (!caseObject || !isInspectionField(error.field)) return;
     if (error.field === 'inspection.uncertainty') setUncertaintyError(error.message);
-    else setError(error.message);
+    else if (!keepError) setError(error.message);  // (a refused set of gash files says so itself)
   });
 }

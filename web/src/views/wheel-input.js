@@ -32,17 +32,20 @@ export function mountWheelInput(store) {
     $('#wheel-read').textContent = note;
   };
   file.addEventListener('change', async () => {
+    // Only what the file holds is read here: a file refused changes nothing, so the words say so.
+    let chosen = null, imported;
     try {
-      const chosen = await chosenFileText(file, MAX_MEASURED_BYTES,
+      chosen = await chosenFileText(file, MAX_MEASURED_BYTES,
         (name, bytes) => `${name} is ${(bytes / 1048576).toFixed(1)} MB; a wheel's points are a few kB. Is this the right file?`);
       if (!chosen) return;
-      const imported = readWheelCsv(chosen.text);
-      setError('');
-      change(withWheelPoints(store.state.extra, imported), `Read ${chosen.name}: ${imported.points.R.length} points` +
-        `${imported.notes.length ? ` (${imported.notes.join('; ')})` : ''}.`);
+      imported = readWheelCsv(chosen.text);
     } catch (e) {
-      setError(`${e.message} The wheel in use is unchanged.`);
+      setError(`${chosen ? `${chosen.name}: ` : ''}${e.message} The wheel in use is unchanged.`);
+      return;
     }
+    setError('');
+    change(withWheelPoints(store.state.extra, imported), `Read ${chosen.name}: ${imported.points.R.length} points` +
+      `${imported.notes.length ? ` (${imported.notes.join('; ')})` : ''}.`);
   });
   $('#wheel-conjugate').addEventListener('click', () => {
     setError('');

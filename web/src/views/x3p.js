@@ -3,8 +3,9 @@
 // into the box as CSV with its positions, so that the preview and "Use this grid" take it as
 // they take a CSV; "Export topography (X3P)" writes the measured, the predicted (after the
 // correction) or the simulated topography of the result on screen. A refused file leaves the box
-// and the results as they were.
-import { MAX_X3P_BYTES, readX3p, writeX3p, x3pFileName, x3pGridCsv, x3pOnGrid, x3pTopographies } from '../io/x3p.js';
+// and the results as they were. The file is read off the page's thread (x3p-reader.js).
+import { MAX_X3P_BYTES, writeX3p, x3pFileName, x3pGridCsv, x3pTopographies } from '../io/x3p.js';
+import { readX3pOffPage } from '../x3p-reader.js';
 import { download } from '../io/files.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -36,9 +37,9 @@ export function mountX3p(store, { take, refuse }) {
       const r = store.state.result;
       if (!r) throw new Error('Compute a setup first, so that the grid is known.');
       const t = r.topography;
-      const read = readX3p(file.bytes);
-      const values = x3pOnGrid(read, t);
-      $('#x3p-read').textContent = `Read ${file.name}: ${read.notes.join(', ')}; its lines are the grid's.`;
+      store.setStatus(`Reading ${file.name}…`, 'busy');
+      const { notes, values } = await readX3pOffPage(file.bytes, t);  // off the page's thread
+      $('#x3p-read').textContent = `Read ${file.name}: ${notes.join(', ')}; its lines are the grid's.`;
       take(x3pGridCsv({ r: t.r, x: t.x, values }));
     } catch (err) {
       refuse(file ? `${file.name}: ${err.message}` : err.message);
