@@ -2,6 +2,10 @@
 # HobSharp's one entry point. On a fresh Debian 12 machine:
 #   ./hobsharp.sh serve   install what is missing, build, and serve the calculator on localhost
 #   ./hobsharp.sh test    install what is missing, build everything, and run every test
+#                         (what CI runs, .ci/run)
+#   ./hobsharp.sh test --quick
+#                         a developer's quicker loop: the same, without the sanitizer build, the
+#                         tests under ASan + UBSan and the fuzzing (docs/testing.md)
 #   ./hobsharp.sh bench   build and run the benchmarks
 #   ./hobsharp.sh validate [--scenarios N] [--seed S] [--docs]
 #                         the validation campaign on random hobs (docs/validation.md); --docs
@@ -108,6 +112,12 @@ case "${1:-}" in
     exec python3 -m http.server "$PORT" --bind 127.0.0.1 --directory "$SITE"
     ;;
   test)
+    QUICK=
+    case "${2:-}" in
+      "") ;;
+      --quick) QUICK=1 ;;
+      *) echo "usage: $0 test [--quick]" >&2; exit 2 ;;
+    esac
     install_missing
     install_npm
     timed build_native
@@ -118,6 +128,10 @@ case "${1:-}" in
     timed node --test tests/js/
     echo "== browser tests (playwright-core, Debian's Chromium; screenshots in test-output/browser/)"
     timed node --test tests/browser/
+    if [ -n "$QUICK" ]; then
+      echo "== --quick: no sanitizer build, no tests under ASan + UBSan, no fuzzing (./hobsharp.sh test runs them)"
+      exit 0
+    fi
     echo "== sanitizer build (clang, ASan + UBSan) in build/sanitize"
     timed build_sanitize
     echo "== native tests under ASan + UBSan (halt at the first report)"
@@ -151,7 +165,7 @@ case "${1:-}" in
     node tests/validation/plot.mjs "$OUT/validation.json"
     ;;
   *)
-    echo "usage: $0 serve|test|bench|validate" >&2
+    echo "usage: $0 serve|test [--quick]|bench|validate" >&2
     exit 2
     ;;
 esac

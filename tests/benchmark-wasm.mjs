@@ -35,7 +35,7 @@ const bigCase = { ...big, measured: hobsharp.evaluate({ ...big, axes: withError(
 const dense = { ...paper, grid: { ...paper.grid, radial: 101, axial: 101 } };
 const denseCase = { ...dense, axes: withError(dense, [['Z', 0, -0.01], ['B', 2, 0.001]]) };
 
-// The wheel-profile correction (README §Wheel-profile correction): the cycle's machine error ground
+// The wheel-profile correction (docs/method.md §Wheel-profile correction): the cycle's machine error ground
 // by a wheel 10 µm out of profile (a second-degree shape along the radius, as tests/benchmark.cpp),
 // corrected with correction.wheel on.
 const contactR = hobsharp.evaluate(paper).wheelProfile.R;
@@ -52,7 +52,7 @@ const inspectionCase = { ...cycleCase, inspection: { gashDeviations: [0, 1.5, -2
 const gearCase = { ...inspectionCase, hob: { ...inspectionCase.hob, gashes: 12, relief: 4.5 } };
 
 const best = (f, runs, repeats = 5) => Math.min(...Array.from({ length: repeats }, () => f(runs)));
-// Reading and correcting 2,000 measured points (README, "Measured points"): the page's and the
+// Reading and correcting 2,000 measured points (docs/measured-points.md): the page's and the
 // CLI's reader (web/src/io/points-import.js) on tests/data/points-2000.csv, plus evaluate() in the module.
 const pointsCsv = readFileSync(path.join(root, 'tests', 'data', 'points-2000.csv'), 'utf8');
 const pointsCase = { ...paper, measuredPoints: readPoints(pointsCsv).points };

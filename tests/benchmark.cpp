@@ -110,7 +110,7 @@ void DenseTopography101(benchmark::State& state) {
   }
 }
 
-// The rake-face inspection of the paper's case (README "Rake-face inspection"): the measured face's
+// The rake-face inspection of the paper's case (docs/inspection.md): the measured face's
 // checks, 12 gashes' spacing and indexing correction, the class verdict, and the same after the correction.
 void InspectionPaperCase(benchmark::State& state) {
   SharpeningJob job = paperJob(5, 9);
@@ -128,7 +128,7 @@ void InspectionPaperCase(benchmark::State& state) {
   }
 }
 
-// Reading and correcting a 2,000-point measurement (README, "Measured points"): the points CSV
+// Reading and correcting a 2,000-point measurement (docs/measured-points.md): the points CSV
 // tests/data/points-2000.csv read (a plain reader here: the page's and the CLI's reader is
 // web/src/io/points-import.js, timed in the wasm benchmark), the job resolved, and evaluated: the
 // face simulated at the points, the default correction, the grid views re-simulated.
@@ -165,7 +165,7 @@ void CorrectPoints2000(benchmark::State& state) {
   }
 }
 
-// The wheel-profile correction (README §Wheel-profile correction): the cycle of CorrectionCycle
+// The wheel-profile correction (docs/method.md §Wheel-profile correction): the cycle of CorrectionCycle
 // with `correction.wheel` on, the measured face ground by a wheel 10 µm out of profile (a
 // second-degree shape along the radius) with the benchmark's machine error.
 void WheelCorrectionCycle(benchmark::State& state) {
@@ -187,7 +187,7 @@ void WheelCorrectionCycle(benchmark::State& state) {
   }
 }
 
-// The inspection and the gear effect of the paper's case (README "The effect on the gear"): the
+// The inspection and the gear effect of the paper's case (docs/gear-effect.md): the
 // above, then the cutting edges of 5 teeth x 2 flanks x 21 radii on the measured face, with a
 // relief of 4.5 mm over 12 gashes.
 void InspectionAndGearEffectPaperCase(benchmark::State& state) {

@@ -1,4 +1,4 @@
-// The effect of the rake face on the gear (core/gear/, README "The effect on the gear"), against a
+// The effect of the rake face on the gear (core/gear/, docs/gear-effect.md), against a
 // second method: the closed-form first-order estimate (the face displaced along the circle by
 // delta_c = delta / |n . e_theta| meets the relieved flank k delta_c / R earlier, so the hob's flank
 // stands k sin(alpha_n) delta_c / R proud) and finite differences of the full computation; zero
@@ -123,7 +123,7 @@ TEST(GearEffect, MatchesTheClosedFormFirstOrderEstimate) {
 
 TEST(GearEffect, ARadialTiltChangesThePressureAngleByItsFirstOrderAmount) {
   // A tilt about the pitch radius, d(delta)/dr = a, changes the pressure angle by about
-  // -a (k / r_p) sin a_n cos a_n / cos(gash helix), as the README derives (the 1/r of the side
+  // -a (k / r_p) sin a_n cos a_n / cos(gash helix), as docs/gear-effect.md derives (the 1/r of the side
   // relief angle bends it by a few per cent over +-m_n); both flanks alike.
   const SharpeningJob job = test::jobOf(test::paperCase());
   const double a = 1.0;  // µm per mm of radius: 21 µm over the face

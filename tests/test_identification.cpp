@@ -1,4 +1,4 @@
-// Identify, then compensate (README "Correction"): the machine error found by nonlinear least
+// Identify, then compensate (docs/method.md, "Correction"): the machine error found by nonlinear least
 // squares, the axes nominal - error, judged by re-simulating the face the machine then grinds,
 // on the probe grid and on a grid 4 times as dense between the probe points.
 #include <cmath>

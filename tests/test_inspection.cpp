@@ -1,4 +1,4 @@
-// The rake-face inspection (core/inspection/, README "Rake-face inspection"): each check on
+// The rake-face inspection (core/inspection/, docs/inspection.md): each check on
 // constructed faces whose answer is known by hand, the class table at its band edges, the
 // indexing correction against the simulated face's own A sensitivity, and bad input refused with
 // the field named.

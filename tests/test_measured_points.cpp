@@ -1,5 +1,5 @@
-// A measurement at the measuring machine's own points (`measuredPoints`, README "Measured
-// points"): points at a grid's positions give exactly the grid's result, in any order; points
+// A measurement at the measuring machine's own points (`measuredPoints`,
+// docs/measured-points.md): points at a grid's positions give exactly the grid's result, in any order; points
 // anywhere else on the face are corrected as points (the correction's rows are the points), as
 // well as the grid is; points off the face, outside the ground region, twice, not finite, or too
 // few for the coefficients are refused naming the point.

@@ -91,7 +91,7 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   const Json j = Json::parse(resultJson(evaluated(withWheel)));
   std::set<std::string> written;
   leaves(j, "", &written);
-  // The fields only a measurement at points off the grid has (README, "Measured points"): the
+  // The fields only a measurement at points off the grid has (docs/measured-points.md): the
   // same measurement as points 0.01 mm off the grid's radii.
   const std::set<std::string> pointsOnly = {"correction.pointMeasured", "correction.pointResidual", "correction.measuredOnGrid"};
   for (const std::string& f : pointsOnly) EXPECT_EQ(written.count(f), 0u) << f << " with a grid";

@@ -1,4 +1,4 @@
-// The wheel-profile correction (issue 12 item 3, README §Wheel-profile correction,
+// The wheel-profile correction (issue 12 item 3, docs/method.md §Wheel-profile correction,
 // core/correction/wheel_correction.h): the axes and a wheel-profile offset from one measured face,
 // judged on the face re-simulated with the true wheel offset plus the proposed dressing and the
 // true axis error plus the proposed axes, on the probe grid and on a grid 4 times as dense.
@@ -31,7 +31,7 @@ CaseInput straightCase() {
 
 // A face shape along the radius (µm, z = -1 at the root .. 1 at the tip) of the given degree, at
 // most 10 µm: the wheel offset that grinds it is its negative (a constant +5 µm of offset grinds
-// the face 5 µm deeper, README §The wheel's profile offset).
+// the face 5 µm deeper, docs/method.md §The wheel's profile offset).
 std::function<double(double)> faceShape(int degree) {
   switch (degree) {
     case 2: return [](double z) { return 10 * z * z - 4; };

@@ -148,7 +148,7 @@ val resultFieldList() {
   return a;
 }
 
-// The inspection's names, limits and default tolerance table (README, "Rake-face inspection"), the
+// The inspection's names, limits and default tolerance table (docs/inspection.md), the
 // table in the shape `inspection.tolerances` takes, so the page can show it, edit it and save it.
 val inspectionLimits() {
   val o = val::object();
@@ -236,7 +236,7 @@ val limits() {
   motion.set("helical", std::string(motionUnit(GashKind::Helical)));
   motion.set("straight", std::string(motionUnit(GashKind::Straight)));
   o.set("motionUnits", motion);
-  // The correction's options (README "Correction"): methods, the probe noise and the resolution
+  // The correction's options (docs/method.md, "Correction"): methods, the probe noise and the resolution
   // of each axis (µm for X, Y, Z, degrees for A, B) with their defaults and ranges.
   const CorrectionOptions defaults;
   val correction = val::object();

@@ -2,8 +2,8 @@
 // node wasm/cli.mjs case.json  - evaluates a hobsharp-case/1 file and prints the result as JSON,
 // exactly as the C++ writer wrote it (core/result_model.h). On bad input it prints the message on
 // stderr and exits with 1 (2 for a usage error).
-//   --points file.csv    the measurement as the measuring machine's points (README, "Measured
-//                        points"; web/src/io/points-import.js): replaces the case's `measured` and
+//   --points file.csv    the measurement as the measuring machine's points (docs/measured-points.md;
+//                        web/src/io/points-import.js): replaces the case's `measured` and
 //                        `measuredPoints`
 //   --points-out prefix  writes prefix-measured.csv and prefix-predicted.csv: the measured points
 //                        and the face predicted after the correction at them (needs --points or

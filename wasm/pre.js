@@ -1,5 +1,5 @@
 // Runs inside the module factory (--pre-js). The module's JS API, the same in the browser and in
-// Node (README "The JS API"):
+// Node (docs/api.md):
 //   Module.evaluate(case[, {typedArrays: true}])  the result of a hobsharp-case/1 object
 //   Module.evaluateToJson(case)                   the C++ JSON writer's text for it (the CLI's output)
 //   Module.resultFields(), Module.limits()        the result's fields, the case's limits and defaults
@@ -96,7 +96,7 @@ function hobsharpCall(binding, ...args) {
 
 Module['HobSharpError'] = HobSharpError;
 
-// The result, as the README's table lists it. Numeric lists are Arrays, or with typedArrays
+// The result, as docs/api.md's table lists it. Numeric lists are Arrays, or with typedArrays
 // Float64Arrays (cheaper to post between threads); matrices are lists of rows either way.
 Module['evaluate'] = function (caseObject, options) {
   const text = hobsharpCaseText(caseObject, 'evaluate');

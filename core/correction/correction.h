@@ -39,7 +39,7 @@ struct Correction {
   // The linear step's covariance of `change` per unit probe variance (sigma = 1 µm).
   Eigen::MatrixXd changeCovariancePerNoise;
 
-  // What the engineer reads (README, "Correction"), filled by correctMeasuredFace for either method.
+  // What the engineer reads (docs/method.md, "Correction"), filled by correctMeasuredFace for either method.
   CorrectionMethod method = CorrectionMethod::Linear;
   LeastSquaresSummary summary;           // status, reason, iterations
   AxisPolynomials identifiedError;       // E: the machine's actual axes minus the commanded ones
@@ -80,7 +80,7 @@ struct Correction {
   // correction was linearised at the nominal axes instead, from the face measured.
   bool linearisedAtNominal = false;
 
-  // With a measurement at probe points (correctMeasuredPoints, README "Measured points"): `before`,
+  // With a measurement at probe points (correctMeasuredPoints, docs/measured-points.md): `before`,
   // `after` and `afterRounded` hold one column, a value per point in the points' order, and their
   // figures are over the points. On the grid the plots show: the face the identified error grinds
   // with the axes run (the measurement as the axes explain it) and the predicted face, both

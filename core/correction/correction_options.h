@@ -41,7 +41,7 @@ struct CorrectionOptions {
   CorrectionMethod method = CorrectionMethod::Nonlinear;
   // The probe's standard deviation sigma, µm. A direction of the face the axes can make is
   // identified only when the measured face holds more of it than significance * sigma, so the
-  // correction does not fit noise (README, "Correction").
+  // correction does not fit noise (docs/method.md, "Correction").
   double probeNoise = 0.5;
   double significance = 3;
   // A direction of the face is left out when the step it needs, in machine steps, exceeds

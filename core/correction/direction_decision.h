@@ -1,4 +1,4 @@
-// Which directions of the linearised face an identification takes (identification.h; README,
+// Which directions of the linearised face an identification takes (identification.h; docs/method.md,
 // "Correction"). Along each singular direction of the Jacobian the data's
 // component c_i is the probe noise (sigma per point) plus the signal:
 //   - a direction is left out as within the noise when |c_i| <= significance * sigma;

@@ -1,4 +1,4 @@
-// What a pass will leave on the probe grid, with a bound (README, "Correction"; issue 20): the
+// What a pass will leave on the probe grid, with a bound (docs/method.md, "Correction"; issue 20): the
 // face the proposed exact axes grind, µm rms, and an upper figure that folds in
 //   - the misfit the identified error leaves (all of it taken as shape, none as noise),
 //   - the probe noise carried through the identified directions (k of them: sigma² (k + 3 sqrt(2k))),

@@ -1,4 +1,4 @@
-// The one identification (README, "Correction"; issue 20, item 2): the values of parameter blocks
+// The one identification (docs/method.md, "Correction"; issue 20, item 2): the values of parameter blocks
 // (the machine's axis error; the wheel's deviation from the case's wheel; later index errors) that
 // together made the measured face, by nonlinear least squares on the simulated face:
 //   minimise |face(x_1 .. x_B) - measured|² over the blocks' values x_b,

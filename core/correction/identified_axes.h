@@ -1,4 +1,4 @@
-// What the face identifies of the machine error, axis by axis, in the engineer's words (README,
+// What the face identifies of the machine error, axis by axis, in the engineer's words (docs/method.md,
 // "Correction"; docs/conventions.md §What the engineer reads about the machine).
 //
 // The face does not see each axis alone: some combinations of axes grind nearly the same face (on

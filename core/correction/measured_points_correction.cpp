@@ -1,5 +1,5 @@
 // correctMeasuredPoints (correction.h): the correction of a measurement at probe points, on the
-// run face simulated at those points (README, "Measured points").
+// run face simulated at those points (docs/measured-points.md).
 #include <string>
 
 #include "correction.h"

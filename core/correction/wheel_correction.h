@@ -1,4 +1,4 @@
-// The wheel-profile correction (README §Wheel-profile correction, `correction.wheel: true`): the
+// The wheel-profile correction (docs/method.md §Wheel-profile correction, `correction.wheel: true`): the
 // axes and a wheel-profile offset from one measured face. The machine error E and the wheel's
 // deviation W are identified together (wheel_error.h); the proposal is to run nominal - E and to
 // dress -(O + W) in addition to the wheel's current offset O (the case's), which brings the wheel

@@ -1,4 +1,4 @@
-// Identify, then compensate, with the wheel (README §Wheel-profile correction, `correction.wheel`):
+// Identify, then compensate, with the wheel (docs/method.md §Wheel-profile correction, `correction.wheel`):
 // the machine error E and the wheel's deviation W from the case's wheel that together made the
 // measured face when `run` was commanded: minimise |face(run + E; wheel + W) - measured|² over E
 // and W by the identification (identification.h) with two parameter blocks, the axes and then the

@@ -1,5 +1,5 @@
 // A cutting edge of the hob: where the relieved thread flank meets the actual rake face
-// (README, "The effect on the gear").
+// (docs/gear-effect.md).
 //
 // The generating worm is taken as its basic rack wrapped about the hob axis: in the axial section,
 // the flank of the tooth centred at x_c is x_f(R) = x_c -+ (S/2 - (R - r_p) tan alpha_n), S = pi m_n / 2

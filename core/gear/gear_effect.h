@@ -1,4 +1,4 @@
-// The effect of the actual rake face on the gear (README, "The effect on the gear"): for every
+// The effect of the actual rake face on the gear (docs/gear-effect.md): for every
 // tooth of the gash that lies whole on the face, each flank's cutting edge (cutting_edge.h) at
 // evenly spaced radii over the active profile, and the generating profile it gives the gear with
 // its figures (profile_figures.h); then the largest over the teeth and their scatter along the hob.

@@ -1,4 +1,4 @@
-// The profile figures of one flank of the gear (README, "The effect on the gear"), after ISO 1328-1:
+// The profile figures of one flank of the gear (docs/gear-effect.md), after ISO 1328-1:
 // the mean profile line is the least-squares straight line of the profile deviation over the
 // evaluation range;
 //   profile slope deviation fH_alpha - the rise of that line from the start of the range (gear

@@ -17,7 +17,7 @@ double atCentre(const Eigen::MatrixXd& m) {
 }
 
 // At probe points: the deviation of the point nearest the grid's mean point (no interpolation;
-// README, "Measured points").
+// docs/measured-points.md).
 double atNearestToMean(const GroundFace& face, const Eigen::MatrixXd& m) {
   int best = 0;
   double bestD = std::numeric_limits<double>::infinity();

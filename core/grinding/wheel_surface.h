@@ -1,6 +1,6 @@
 // The grinding wheel as a surface of its own: the surface of revolution of the conjugate profile
 // (Eqs. 3-6) moved along the profile's normal by an offset that is a function of the wheel radius R
-// of the conjugate point (README §The wheel's profile offset, docs/case-format.md).
+// of the conjugate point (docs/method.md §The wheel's profile offset, docs/case-format.md).
 //
 // Sign: + is more wheel, so less material on the face. The face normal n_t at a contact point is
 // the wheel's normal too and points out of the tooth material, into the wheel; the dressed

@@ -1,5 +1,5 @@
 // The default tolerance table: data/din3968-cutting-face.json (DIN 3968's cutting-face values as a
-// hob maker's catalogue prints them; README, "Rake-face inspection"), turned into C++ when the
+// hob maker's catalogue prints them; docs/inspection.md), turned into C++ when the
 // build is configured (core/inspection/CMakeLists.txt), so that the core reads no file.
 #pragma once
 

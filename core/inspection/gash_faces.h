@@ -1,4 +1,4 @@
-// One measured topography per gash (`inspection.gashTopographies`, README "Rake-face inspection"):
+// One measured topography per gash (`inspection.gashTopographies`, docs/inspection.md):
 // each gash's mean deviation at the pitch radius, which gives the spacing checks and the indexing
 // correction, and each gash's own face checks; the hob's face checks are the worst over its gashes.
 //   deviation at the pitch radius - the least-squares straight line over the radius through the

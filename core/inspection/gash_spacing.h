@@ -1,4 +1,4 @@
-// The spacing of the cutting faces around the hob (README, "Rake-face inspection"), from one mean
+// The spacing of the cutting faces around the hob (docs/inspection.md), from one mean
 // deviation per gash at the pitch radius (µm, gash 1, 2, .. z in turn; plus = excess material):
 //   adjacent   - the single pitch deviation of the cutting faces (f_tN, DIN 3968 item 8): gash
 //                k+1's deviation minus gash k's, for every neighbouring pair (the last pair is gash

@@ -1,5 +1,4 @@
-// The per-gash indexing correction of the A axis that removes the spacing error (README,
-// "Rake-face inspection"). The A axis turns the hob: with A + dA the wheel, and so the ground face,
+// The per-gash indexing correction of the A axis that removes the spacing error (docs/inspection.md). The A axis turns the hob: with A + dA the wheel, and so the ground face,
 // is turned by -dA about the hob axis (Eq. 7, r_1 = Rx(-A) ...), which moves a face point p by
 // -dA (x_1 x p). Along the outward normal n that is a deviation of -dA n . (x_1 x p).
 #pragma once

@@ -1,5 +1,5 @@
 // The rake-face checks of DIN 3968 that the calculator grades, and the accuracy classes AA to D
-// (README, "Rake-face inspection").
+// (docs/inspection.md).
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-// A tolerance table by normal-module band and class (README, "Rake-face inspection"): DIN 3968's
+// A tolerance table by normal-module band and class (docs/inspection.md): DIN 3968's
 // cutting-face values as a hob maker's catalogue prints them (defaultToleranceTable()), or the
 // engineer's edited table from the case (`inspection.tolerances`, docs/case-format.md).
 #pragma once

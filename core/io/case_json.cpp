@@ -448,7 +448,7 @@ Outcome<CorrectionInput> readCorrection(const Node& c) {
       out.locked.push_back(Coefficient{a, text[3] - '0'});
     }
   }
-  if (const Json* v = c.find("wheel")) {  // the wheel-profile correction (README)
+  if (const Json* v = c.find("wheel")) {  // the wheel-profile correction (docs/method.md)
     if (!v->is_boolean()) return refuse(c.field("wheel"), std::string("must be true or false; got ") + typeName(*v) + ".");
     out.wheel = v->get<bool>();
   }

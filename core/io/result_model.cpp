@@ -193,7 +193,7 @@ void verdict(ResultVisitor& v, const Inspection& in, const std::string& prefix, 
          warning);
 }
 
-// A correction at measuredPoints off the grid (README, "Measured points"): per point [r, x, µm],
+// A correction at measuredPoints off the grid (docs/measured-points.md): per point [r, x, µm],
 // and the measurement as the identified error explains it, on the grid.
 void visitPointCorrection(const Correction& c, ResultVisitor& v) {
   constexpr const char* kWithPoints = "only with `measuredPoints` off the grid's positions";
@@ -210,7 +210,7 @@ void visitPointCorrection(const Correction& c, ResultVisitor& v) {
          c.explainedOnGrid.normal);
 }
 
-// The rake-face inspection (README, "Rake-face inspection"), then the one predicted after the correction.
+// The rake-face inspection (docs/inspection.md), then the one predicted after the correction.
 void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
   const Inspection& in = e.inspection;
   const bool helical = e.job.setup.face.helical();
@@ -347,7 +347,7 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
   }
 }
 
-// The effect on the gear (README, "The effect on the gear"): the reason always, the figures with the
+// The effect on the gear (docs/gear-effect.md): the reason always, the figures with the
 // hob's relief. Per flank: the headline figures, then along the hob per tooth, then the profiles.
 void visitGearEffect(const Evaluation& e, ResultVisitor& v, bool every) {
   constexpr const char* kWithRelief = "only with the hob's relief (hob.gashes and hob.relief, or hob.sideReliefAngle)";
@@ -452,7 +452,7 @@ void visitWheelOffset(const Evaluation& e, ResultVisitor& v) {
                S.thickness);
 }
 
-// The wheel-profile correction (README §Wheel-profile correction): present only with
+// The wheel-profile correction (docs/method.md §Wheel-profile correction): present only with
 // `correction.wheel: true`.
 void visitWheelCorrection(const Evaluation& e, ResultVisitor& v) {
   constexpr const char* kWithWheel = "only with `measured` and `correction.wheel`";
@@ -586,7 +586,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     v.axes({"correction.roundedAxes", kCoefficientUnit, kRounded.c_str(), kWithMeasured}, c.roundedAxes);
     v.texts({"correction.coefficients", "", "the coefficients left free (not locked)", kWithMeasured}, names(c.coefficients));
     eigenNumbers(v, {"correction.change", "coefficient units", "the changes of correction.coefficients, in order: correction.axes minus the axes run", kWithMeasured}, c.change);
-    // One figure per axis: µm-type units for X, Y, Z and µrad-type ones for A, B (README, "Correction").
+    // One figure per axis: µm-type units for X, Y, Z and µrad-type ones for A, B (docs/method.md, "Correction").
     auto perAxis = [&](const char* const names[], const char* linear, const char* rotary, const char* what,
                        const std::array<double, kAxisCount>& values) {
       for (Axis a : kAxes) {
@@ -631,7 +631,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
             aloneUncertainty);
     v.texts({"correction.identifiedCombinations", "", "sentences: the axes the face does not tell apart, in what proportion they grind alike and what it shows of them (µm, µrad), then the axes it does not show", kWithMeasured},
             c.identified.sentences);
-    // With measuredPoints off the grid the grid views are the re-simulated faces (README, "Measured points").
+    // With measuredPoints off the grid the grid views are the re-simulated faces (docs/measured-points.md).
     const Topography& gridAfter = c.atProbes() ? c.afterOnGrid : c.after;
     const Topography& gridMeasured = c.atProbes() ? c.explainedOnGrid : c.before;
     matrix(v, {"correction.residual", "µm", "the face predicted after the pass: re-simulated with correction.axes and the identified error, plus the part no axis makes", kWithMeasured}, gridAfter.normal);

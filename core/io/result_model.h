@@ -1,7 +1,7 @@
 // The result of one evaluation, described once: every field the calculator hands out, with its
 // path, unit and meaning, visited in one order. Every output is a visitor of this walk: the JSON
 // text (command line, native_eval), the module's JS object (wasm/bindings.cpp) and the field
-// list that the README's table is checked against (resultFields()).
+// list that docs/api.md's table is checked against (resultFields()).
 #pragma once
 
 #include <cstddef>

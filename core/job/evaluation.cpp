@@ -19,7 +19,7 @@ InspectedFace inspectedFace(const Evaluation& e) {
   // measuredPoints at the grid's positions became the job's grid (sharpening_job.cpp).
   if (in.measured) return {*in.measured, given};
   // measuredPoints off the grid: the measurement as the identified error explains it, on the grid
-  // (README, "Measured points").
+  // (docs/measured-points.md).
   if (e.correction && e.correction->atProbes()) return {e.correction->explainedOnGrid.normal, given};
   return {e.topography.normal, FaceSource::Simulated};
 }
@@ -86,7 +86,7 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
     e.dressedProfile = dressedProfile(s, e.wheelProfile);
     e.offsetSensitivities = wheelOffsetSensitivity(e.groundFace, s.wheel);
   }
-  if (job.input.measured && job.correction.wheel) {  // README §Wheel-profile correction
+  if (job.input.measured && job.correction.wheel) {  // docs/method.md §Wheel-profile correction
     const double rLow = std::max(job.grid.r.front(), job.rootRadius), rHigh = std::min(job.grid.r.back(), job.outerRadius);
     auto c = correctAxesAndWheel(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction,
                                  e.wheelProfile, rLow, rHigh, linearisedAt);
@@ -99,7 +99,7 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
     if (!c) return c.error();
     e.correction = std::move(c).value();
   }
-  if (!job.probes.empty()) {  // README, "Measured points"
+  if (!job.probes.empty()) {  // docs/measured-points.md
     auto c = correctMeasuredPoints(s, job.nominalAxes, job.runAxes, job.grid, job.probes, job.probeMeasured, job.correction);
     if (!c) return c.error();
     e.correction = std::move(c).value();

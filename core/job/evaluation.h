@@ -31,7 +31,7 @@ struct Evaluation {
   Topography topography;
   SensitivityMatrix sensitivities;  // every coefficient, at the axes that were run
   std::optional<Correction> correction;
-  // The rake-face inspection (README, "Rake-face inspection"): of the measured face when there is
+  // The rake-face inspection (docs/inspection.md): of the measured face when there is
   // one, else of the simulated one; the A-axis indexing correction with per-gash deviations; and
   // the inspection predicted after the correction (the face correction's predicted face, the
   // gashes after the rounded indexing correction) when either correction exists.
@@ -43,7 +43,7 @@ struct Evaluation {
   // the face's sensitivity to the offset's knot values; empty for the conjugate wheel.
   DressedProfile dressedProfile;
   WheelOffsetSensitivity offsetSensitivities;
-  // The effect of the face inspected on the gear (README, "The effect on the gear"): with the hob's
+  // The effect of the face inspected on the gear (docs/gear-effect.md): with the hob's
   // relief; else, or when it cannot be computed, the sentence that says why.
   std::optional<GearEffect> gearEffect;
   std::string gearEffectReason;
@@ -51,7 +51,7 @@ struct Evaluation {
   // (rad per rad, the mean of the two flanks), from the gear-effect model on a face that carries a
   // rake error alone (rakeErrorFace, docs/inspection.md "Rake error").
   std::optional<double> pressureAnglePerRake;
-  // With `correction.wheel` (README §Wheel-profile correction): the wheel's part of the correction;
+  // With `correction.wheel` (docs/method.md §Wheel-profile correction): the wheel's part of the correction;
   // `correction` then holds the axes' part, its predicted face with both applied.
   std::optional<WheelCorrection> wheelCorrection;
 };

@@ -2,7 +2,7 @@
 // each point a radius r and axial position x on the rake face (mm) and the normal deviation there
 // (µm). The points may lie anywhere on the ground face: the correction's rows are the points
 // themselves (correctMeasuredPoints, correction.h), nothing is interpolated. Points exactly at
-// the grid's positions, covering each once, are taken as the grid (README, "Measured points").
+// the grid's positions, covering each once, are taken as the grid (docs/measured-points.md).
 #pragma once
 
 #include <optional>

@@ -192,7 +192,7 @@ Outcome<CorrectionOptions> correctionOptions(const CorrectionInput& c, int degre
       return refuse(name + ".locked", k.name() + " is beyond the polynomial degree " + std::to_string(degree) + ".");
   o.locked = c.locked;
   o.lockedAxes = c.lockedAxes;
-  if (c.wheel.value_or(false)) {  // the wheel-profile correction (README)
+  if (c.wheel.value_or(false)) {  // the wheel-profile correction (docs/method.md)
     if (o.method != CorrectionMethod::Nonlinear)
       return refuse(name + ".wheel", "needs correction.method \"nonlinear\": the wheel is identified together with the "
                                      "machine error, which the linear step does not do.");
@@ -269,7 +269,7 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   if (in.measured) {
     if (auto r = checkMeasured(*in.measured, grid, "measured"); !r) return r.error();
   }
-  // Where the measuring machine's points may lie (README, "Measured points").
+  // Where the measuring machine's points may lie (docs/measured-points.md).
   const PointRegion region{job.rootRadius, job.outerRadius,
                            in.hob.length / 2 + std::abs(face.axialAt(*pitch)) + kGridTolerance * (1 + in.hob.length),
                            kGridTolerance, kMaxDeviation};
@@ -301,7 +301,7 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   if (job.correction.wheel && !job.probes.empty())
     return refuse("correction.wheel", "is not available for measured points off the grid yet: give the points at the "
                                       "grid's positions (or the grid as `measured`) to correct the wheel too.");
-  if (auto r = checkInspectionInput(in.inspection); !r) return r.error();  // README, "Rake-face inspection"
+  if (auto r = checkInspectionInput(in.inspection); !r) return r.error();  // docs/inspection.md
   for (std::size_t k = 0; k < in.inspection.gashTopographies.size(); ++k)
     if (auto r = checkMeasured(in.inspection.gashTopographies[k], grid, "inspection.gashTopographies[" + std::to_string(k) + "]"); !r)
       return r.error();

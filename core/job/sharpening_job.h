@@ -24,7 +24,7 @@ struct SharpeningJob {
   AxisPolynomials runAxes;      // case.axes, or the nominal ones
   FaceGrid grid;
   CorrectionOptions correction;
-  // measuredPoints off the grid's positions (README, "Measured points"): the points and their
+  // measuredPoints off the grid's positions (docs/measured-points.md): the points and their
   // deviations (µm), corrected as points; empty when there are none or they are the grid.
   ProbePoints probes;
   Eigen::VectorXd probeMeasured;

@@ -1,6 +1,6 @@
 // A natural cubic spline through knots (x_i, y_i): second derivative zero at both ends, and
 // beyond the ends the straight line tangent there, which keeps it twice differentiable
-// everywhere (README §The wheel's profile offset). Natural rather than not-a-knot: with 2 or 3
+// everywhere (docs/method.md §The wheel's profile offset). Natural rather than not-a-knot: with 2 or 3
 // knots it stays defined (a line, or the smoothest curve through 3 points), and its extension
 // past the knots never curves away.
 //

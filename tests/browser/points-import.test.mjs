@@ -1,5 +1,5 @@
-// A measurement at the measuring machine's own points in the page (issue 11, item 1; README,
-// "Measured points"): a points CSV uploaded is previewed, then corrected as points; a file the
+// A measurement at the measuring machine's own points in the page (issue 11, item 1;
+// docs/measured-points.md): a points CSV uploaded is previewed, then corrected as points; a file the
 // reader refuses, or points the calculator refuses, leave the page as it was.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';

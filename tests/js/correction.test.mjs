@@ -1,4 +1,4 @@
-// The correction's fields through the WebAssembly module (README "Correction"): the default
+// The correction's fields through the WebAssembly module (docs/method.md, "Correction"): the default
 // nonlinear identification, the paper's linear step side by side, the shapes the page reads, and
 // the refusals of correction.probeNoise, correction.resolution and correction.method.
 import { test } from 'node:test';

@@ -1,6 +1,6 @@
-// The effect on the gear through the WebAssembly module (README "The effect on the gear"): the
+// The effect on the gear through the WebAssembly module (docs/gear-effect.md): the
 // reason without the relief, a measured radial tilt giving fHα plus and a smaller pressure angle
-// on both flanks as the README's first-order estimate says, the same figures as the native build,
+// on both flanks as docs/gear-effect.md's first-order estimate says, the same figures as the native build,
 // typed arrays, and bad relief input refused with the field named while the module stays usable.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';

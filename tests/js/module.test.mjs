@@ -27,7 +27,7 @@ function measuredCase() {
   const run = structuredClone(nominal);
   run.Y[0] += 0.01; run.Z[0] -= 0.01; run.Z[1] += 0.003; run.A[0] += 0.0002; run.B[2] += 0.001;
   const measured = hobsharp.evaluate({ ...c, axes: run }).topography.normal;
-  // A simulated what-if is noise-free, and says so (README "Correction").
+  // A simulated what-if is noise-free, and says so (docs/method.md, "Correction").
   return { ...c, measured, correction: { probeNoise: 1e-4 } };
 }
 

@@ -1,4 +1,4 @@
-// The CLI with a points CSV (README, "Measured points"): node wasm/cli.mjs case.json --points
+// The CLI with a points CSV (docs/measured-points.md): node wasm/cli.mjs case.json --points
 // file.csv [--points-out prefix]; the written measured and predicted points read back; malformed
 // files and refused points are named on stderr with a non-zero exit.
 import { test } from 'node:test';

@@ -1,12 +1,13 @@
-// The README's table of result fields, made from the module's own field list (resultFields(),
-// core/result_model.cpp). tests/js/readme.test.mjs checks that README.md holds it.
+// The table of result fields in docs/api.md (it was the README's), made from the module's own
+// field list (resultFields(), core/io/result_model.cpp). tests/js/readme.test.mjs checks that
+// docs/api.md holds it.
 //   node tests/js/readme-table.mjs           prints the table
-//   node tests/js/readme-table.mjs --write   rewrites it in README.md, between the two markers
+//   node tests/js/readme-table.mjs --write   rewrites it in docs/api.md, between the two markers
 import { readFileSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-export const readmePath = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..', 'README.md');
+export const readmePath = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..', 'docs', 'api.md');
 export const BEGIN = '<!-- result-fields: made by `node tests/js/readme-table.mjs --write` from resultFields() -->';
 export const END = '<!-- /result-fields -->';
 
@@ -28,7 +29,7 @@ export function fieldTable(fields) {
   return ['| field | holds | unit | meaning |', '|---|---|---|---|', ...rows].join('\n');
 }
 
-// The table in the README's text, between the markers (null without them).
+// The table in docs/api.md's text, between the markers (null without them).
 export function readmeTable(text) {
   const begin = text.indexOf(BEGIN), end = text.indexOf(END);
   if (begin < 0 || end < begin) return null;
@@ -40,10 +41,10 @@ if (process.argv[1] === fileURLToPath(import.meta.url)) {
   const table = fieldTable((await loadHobSharp()).resultFields());
   if (process.argv[2] === '--write') {
     const text = readFileSync(readmePath, 'utf8');
-    if (readmeTable(text) === null) throw new Error(`README.md has no markers ${BEGIN} ... ${END}`);
+    if (readmeTable(text) === null) throw new Error(`docs/api.md has no markers ${BEGIN} ... ${END}`);
     const begin = text.indexOf(BEGIN) + BEGIN.length, end = text.indexOf(END);
     writeFileSync(readmePath, `${text.slice(0, begin)}\n${table}\n${text.slice(end)}`);
-    console.log('README.md: the result table rewritten');
+    console.log('docs/api.md: the result table rewritten');
   } else {
     console.log(table);
   }

@@ -1,4 +1,5 @@
-// The README's table of result fields is the module's own description of the result.
+// The table of result fields in docs/api.md (once the README's) is the module's own description
+// of the result.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -7,11 +8,11 @@ import { fieldTable, readmeTable, readmePath } from './readme-table.mjs';
 
 const hobsharp = await loadHobSharp();
 
-test('the README table of result fields is made from resultFields()', () => {
+test('the table of result fields in docs/api.md is made from resultFields()', () => {
   const inReadme = readmeTable(readFileSync(readmePath, 'utf8'));
-  assert.notEqual(inReadme, null, 'README.md has the result-fields markers');
+  assert.notEqual(inReadme, null, 'docs/api.md has the result-fields markers');
   assert.equal(inReadme, fieldTable(hobsharp.resultFields()),
-    'README.md is out of date: run node tests/js/readme-table.mjs --write');
+    'docs/api.md is out of date: run node tests/js/readme-table.mjs --write');
 });
 
 test('every listed field is in the result of a measured case, and nothing else is', () => {
@@ -28,7 +29,7 @@ test('every listed field is in the result of a measured case, and nothing else i
   const r = hobsharp.evaluate(c);
   const fields = hobsharp.resultFields();
   const listed = new Set(fields.map((f) => f.path));
-  // The fields of a measurement at points off the grid (README, "Measured points"): in the result
+  // The fields of a measurement at points off the grid (docs/measured-points.md): in the result
   // of the same values as points 0.01 mm off the grid's radii, and not in the grid's.
   const { measured, ...withoutGrid } = c;
   const measuredPoints = measured.flatMap((row, i) => row.map((v, j) => [r.topography.r[i] + (i === 0 ? 0.01 : -0.01), r.topography.x[j], v]));

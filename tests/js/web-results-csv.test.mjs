@@ -77,7 +77,7 @@ test('the wheel profile CSV has its 41 points, r, R and Z in mm', () => {
   assert.ok(Math.abs(r.wheelProfile.R[0] - 49.999828) < 1e-5);
 });
 
-// The effect on the gear in the record (README, "The effect on the gear"): with the hob's relief,
+// The effect on the gear in the record (docs/gear-effect.md): with the hob's relief,
 // each figure per flank with its unit (µm, arc-min) as the module gives it; without, the reason.
 test('the effect on the gear: its figures per flank with their units, or why there are none', () => {
   const measured = [19, 24.25, 29.5, 34.75, 40].map((ri) => [-70, -52.5, -35, -17.5, 0, 17.5, 35, 52.5, 70].map((xj) => (ri - 29.5) + 0.1 * xj));

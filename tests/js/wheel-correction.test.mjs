@@ -1,4 +1,4 @@
-// The wheel-profile correction (issue 12 item 3, README §Wheel-profile correction) through the
+// The wheel-profile correction (issue 12 item 3, docs/method.md §Wheel-profile correction) through the
 // WebAssembly module: correction.wheel on a face ground by a wheel out of profile with a machine
 // error; the new result fields are there, finite, of their shapes, and match the native build.
 import { test } from 'node:test';

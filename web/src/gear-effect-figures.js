@@ -1,4 +1,4 @@
-// The effect on the gear as figures (README, "The effect on the gear"), as the page's table
+// The effect on the gear as figures (docs/gear-effect.md), as the page's table
 // (views/gear-effect.js), the results CSV and the printed report give them.
 
 // The two flanks, as the result names them and in words.

@@ -13,7 +13,7 @@ export const GRID = { min: 2 };
 // resolution: {X: {default, min, max, unit}, ...}}.
 export const CORRECTION = {};
 // The inspection's checks, classes and default tolerance table: {checks, classes, maxGashes,
-// maxGashDeviation, defaultTolerances} (README, "Rake-face inspection").
+// maxGashDeviation, defaultTolerances} (docs/inspection.md).
 export const INSPECTION = {};
 let rotary = new Set();
 export const isRotary = (axis) => rotary.has(axis);
@@ -25,7 +25,7 @@ const AXIS_WORDS = {
 };
 export const AXIS_NAMES = {};
 
-// limits: what Module.limits() returns (README "The JS API"). Refuses a shape it cannot use.
+// limits: what Module.limits() returns (docs/api.md). Refuses a shape it cannot use.
 export function setModuleLimits(limits) {
   const { format, maxGridLines, degree, defaultGrid, axes, correction, inspection } = limits || {};
   if (typeof format !== 'string' || !(maxGridLines >= GRID.min) || !degree || !defaultGrid || !Array.isArray(axes)) {

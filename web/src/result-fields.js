@@ -1,5 +1,5 @@
 // The result's fields as the module describes them (Module.resultFields(): [{path, kind, unit,
-// meaning, when}], the README's table of result fields): the page takes a figure's unit and its
+// meaning, when}], docs/api.md's table of result fields): the page takes a figure's unit and its
 // meaning from here, not from words of its own. Filled once the worker is ready, with the limits
 // (main.js); until then, and for a path the module does not describe, there is none.
 const FIELDS = new Map();

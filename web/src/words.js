@@ -20,8 +20,8 @@ const plural = (n, one, many) => `${n} ${n === 1 ? one : many}`;
 
 // The correction's verdict with its figures. rank: independent coefficient combinations the
 // correction moves; amplifyingDropped: combinations it leaves alone because a visible change of
-// the face would need axis moves far larger than the deviation they remove (README "How the core
-// computes" > Correction).
+// the face would need axis moves far larger than the deviation they remove (docs/method.md,
+// "Correction").
 export function verdictText(c) {
   // Stop (correction.stop): the measured face is within the probe noise. Its figures as measured,
   // and nothing predicted: another pass would only move noise.

@@ -1,4 +1,4 @@
-// A measurement at the measuring machine's own points as CSV (README, "Measured points"): a header
+// A measurement at the measuring machine's own points as CSV (docs/measured-points.md): a header
 // with each column's name and unit, then one point per line, r (mm), x (mm), deviation (µm).
 //   r (mm),x (mm),deviation (µm)
 //   19.5,-70.2,1.25

@@ -50,7 +50,7 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
       lines.push(row(name, unit, v));
     }
   }
-  // The effect on the gear (README, "The effect on the gear"): its figures per flank, or why there are none.
+  // The effect on the gear (docs/gear-effect.md): its figures per flank, or why there are none.
   const g = r.gearEffect;
   if (hasGearEffect(g)) {
     lines.push('', `# effect on the gear, from the ${g.source === 'simulated' ? 'simulated' : 'measured'} rake face`,
@@ -79,7 +79,7 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   grid('simulated normal deviation (µm) for the axes run', r.topography.normal);
   grid('simulated circular deviation (µm at the mean radius)', r.topography.circular);
   if (c) grid('predicted normal deviation after correction (µm)', c.residual);
-  // At the measuring machine's points (README, "Measured points"): each block reads back as a
+  // At the measuring machine's points (docs/measured-points.md): each block reads back as a
   // points CSV (io/points-import.js), its title line a comment.
   const points = (title, list) => {
     lines.push('', `# ${title}`, row('r (mm)', 'x (mm)', 'deviation (µm)'));

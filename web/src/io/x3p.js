@@ -3,8 +3,8 @@
 // axes; Record2: who, what and when; Record3: the grid's size and a link to its points; Record4:
 // the checksum file's name), bindata/data.bin (the points, little-endian, x index fastest) and
 // md5checksum.hex (the MD5 of main.xml). Element names follow the openGPS schema
-// ISO5436_2_XML.xsd (namespace http://www.opengps.eu/2008/ISO5436_2); the README's "Exchange
-// format" section gives the sources.
+// ISO5436_2_XML.xsd (namespace http://www.opengps.eu/2008/ISO5436_2); docs/x3p.md gives the
+// sources.
 //
 // The face's grid maps onto X3P's axes: X = x along the gash (columns), Y = r, the radius (rows,
 // root to tip), Z = the normal deviation (plus = excess material). X3P gives every coordinate in

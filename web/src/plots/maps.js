@@ -1,6 +1,6 @@
 // A deviation topography as a map (Plotly heatmap), in µm, with the colour bar that says which
 // colour is excess material; and, for a measurement at the measuring machine's own points
-// (README, "Measured points"), those points marked on it (a scatter trace on the same axes).
+// (docs/measured-points.md), those points marked on it (a scatter trace on the same axes).
 import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
 import { AXIS_TITLES } from './surface.js';
 

@@ -1,4 +1,4 @@
-// The effect of the rake face on the gear (README, "The effect on the gear"): per flank the
+// The effect of the rake face on the gear (docs/gear-effect.md): per flank the
 // profile slope deviation fHα with its pressure-angle error, the profile form deviation ffα and
 // their scatter along the hob; a plot of the gear's profile deviation over the active profile
 // (one line per tooth of the gash) and one of fHα along the hob. Without the hob's relief the

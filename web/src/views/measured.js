@@ -121,7 +121,7 @@ export function mountMeasured(store) {
       .map((v) => `<td>${escapeHtml(fixed(v, 3))}</td>`).join('')}${row.length > 12 ? '<td>…</td>' : ''}</tr>`).join('');
     $('#measured-preview-table').innerHTML = `<thead>${head}</thead><tbody>${body}${g.length > 12 ? '<tr><th>…</th></tr>' : ''}</tbody>`;
   };
-  // The preview of a points CSV (README, "Measured points"): what was read, what looks wrong, the
+  // The preview of a points CSV (docs/measured-points.md): what was read, what looks wrong, the
   // first points as they would be used (only "change sign" and "values in mm" apply to points).
   const previewPoints = (text) => {
     let read = null, problem = '';

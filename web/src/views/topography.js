@@ -34,7 +34,7 @@ function topographyViews(r, caseObject, view) {
     const afterNumbers = numbersOf({ sse: c.sseAfter, max: c.maxAfter, thickness: c.thicknessAfter, rms: c.rmsAfter,
       peakToValley: c.peakToValleyAfter }, circular && c.residualCircular);
     return {
-      // Points off the grid (README, "Measured points"): the figures are the points', the map the face the identified error grinds.
+      // Points off the grid (docs/measured-points.md): the figures are the points', the map the face the identified error grinds.
       beforeTitle: c.pointMeasured ? `Measured at ${c.pointMeasured.length} points (figures at the points; map: as the axes explain it)` : 'Measured',
       before: circular ? c.measuredCircular : caseObject.measured || c.measuredOnGrid, beforeName: `Measured ${viewName}`,
       beforeNumbers, beforeFigures: figuresText(beforeNumbers),
