@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "number_text.h"
+#include "probe_points.h"
 #include "units.h"
 
 namespace hobsharp {
@@ -243,10 +244,10 @@ Outcome<HobReliefInput> readRelief(const Node& h, const HobInput& hob) {
   const double radius = hob.outerDiameter / 2;
   if (out.relief && (*out.relief <= 0 || *out.relief >= radius))
     return refuse(h.field("relief"), "must be positive and below the hob's outer radius (" + numberText(radius) +
-                                         " mm); got " + numberText(*out.relief) + " mm.");
+                                         " mm); got " + exactText(*out.relief) + " mm.");
   if (out.sideReliefAngle && (*out.sideReliefAngle <= 0 || *out.sideReliefAngle > kMaxSideReliefAngle))
     return refuse(h.field("sideReliefAngle"), "must lie over 0 up to " + numberText(kMaxSideReliefAngle) + " deg; got " +
-                                                  numberText(*out.sideReliefAngle) + " deg.");
+                                                  exactText(*out.sideReliefAngle) + " deg.");
   if (out.relief && out.sideReliefAngle) {
     if (!out.gashes)
       return refuse(h.field("gashes"), "is needed to check hob.relief against hob.sideReliefAngle.");
@@ -257,7 +258,7 @@ Outcome<HobReliefInput> readRelief(const Node& h, const HobInput& hob) {
       if (std::abs(implied - *out.sideReliefAngle) > kSideReliefAgreement)
         return refuse(h.field("sideReliefAngle"), "disagrees with hob.relief and hob.gashes, which give " +
                                                       numberText(implied) + " deg at the pitch diameter; got " +
-                                                      numberText(*out.sideReliefAngle) + " deg.");
+                                                      exactText(*out.sideReliefAngle) + " deg.");
     }
   }
   return out;
@@ -545,15 +546,23 @@ Outcome<ToleranceTable> readToleranceTable(const Node& t) {
 // "passes[1].measuredPoints"). Where they lie is resolveJob()'s to check.
 Outcome<std::vector<MeasuredPoint>> readMeasuredPoints(const Json& p, const std::string& field) {
   if (!p.is_array() || p.empty())
-    return refuse(field, "must be a list of points [r, x, deviation] (mm, mm, µm), such as [[19, -70, 1.5], ...].");
+    return refusePoints(field, "must be a list of points [r, x, deviation] (mm, mm, µm), such as [[19, -70, 1.5], ...].");
   std::vector<MeasuredPoint> out;
+  static const char* const kValue[3] = {"r", "x", "the deviation"};
   for (std::size_t k = 0; k < p.size(); ++k) {
-    const std::string name = field + "[" + std::to_string(k) + "]";
     if (!p[k].is_array() || p[k].size() != 3)
-      return refuse(name, std::string("must be a point [r, x, deviation] of three numbers; got ") +
-                              (p[k].is_array() ? std::to_string(p[k].size()) + " values" : typeName(p[k])) + ".");
+      return refusePoint(field, k, std::string("must be a point [r, x, deviation] of three numbers; got ") +
+                                       (p[k].is_array() ? std::to_string(p[k].size()) + " values" : typeName(p[k])) + ".");
     double v[3] = {0, 0, 0};
-    for (std::size_t j = 0; j < 3; ++j) HOBSHARP_ASSIGN(v[j], Node::toNumber(p[k][j], name + "[" + std::to_string(j) + "]"));
+    for (std::size_t j = 0; j < 3; ++j) {
+      auto n = Node::toNumber(p[k][j], "");
+      if (!n) {  // named in words, the point counted from 1; the field stays the path
+        Error e = refusePoint(field, k, std::string(kValue[j]) + " " + n.error().message.substr(2));
+        e.field += "[" + std::to_string(j) + "]";
+        return e;
+      }
+      v[j] = *n;
+    }
     out.push_back(MeasuredPoint{v[0], v[1], v[2]});
   }
   return out;
