@@ -41,6 +41,8 @@ export function mountWheelInput(store) {
       change(withWheelPoints(store.state.extra, imported), `Read ${chosen.name}: ${imported.points.R.length} points` +
         `${imported.notes.length ? ` (${imported.notes.join('; ')})` : ''}.`);
     } catch (e) {
+      // An earlier file's "Read ..." note would seem to be this file's: gone (#wheel-source says what is in use).
+      $('#wheel-read').textContent = '';
       setError(`${e.message} The wheel in use is unchanged.`);
     }
   });
