@@ -127,20 +127,35 @@ Outcome<void> checkAxes(const AxisPolynomials& axes, int degree, const std::stri
   return success();
 }
 
+// A measured grid as the engineer names it: "Measured grid" for `measured`, "Pass 2, measured grid"
+// for `passes[1].measured` (the pass counted from 1, as pointsWords does), "Gash 2's topography"
+// for `inspection.gashTopographies[1]`.
+std::string gridWords(const std::string& name) {
+  const std::string gash = "inspection.gashTopographies[";
+  if (name.rfind(gash, 0) == 0) return "Gash " + std::to_string(std::stoul(name.substr(gash.size())) + 1) + "'s topography";
+  const std::string points = pointsWords(name + "Points");
+  return points.substr(0, points.size() - std::string("points").size()) + "grid";
+}
+
 // A measured grid of the grid's shape, every value finite and within ±kMaxDeviation; `name` is
-// its field ("measured", "passes[1].measured").
+// its field ("measured", "passes[1].measured"). The field of a refused value is its path (for the
+// page to find the input); the message names its row and value from 1, with r and x.
 Outcome<void> checkMeasured(const Eigen::MatrixXd& m, const FaceGrid& grid, const std::string& name) {
   if (m.rows() != grid.rows() || m.cols() != grid.cols())
-    return refuse(name, "needs grid.radial = " + std::to_string(grid.rows()) + " rows of grid.axial = " +
-                            std::to_string(grid.cols()) + " values; got " + std::to_string(m.rows()) + " x " +
-                            std::to_string(m.cols()) + ".");
+    return Error{name, gridWords(name) + ": needs " + std::to_string(grid.rows()) + " rows (the radial grid lines) of " +
+                           std::to_string(grid.cols()) + " values (the axial grid lines); got " + std::to_string(m.rows()) +
+                           " x " + std::to_string(m.cols()) + ".",
+                 ErrorCode::InvalidInput};
   for (int i = 0; i < m.rows(); ++i)
     for (int j = 0; j < m.cols(); ++j)
       if (!std::isfinite(m(i, j)) || std::abs(m(i, j)) > kMaxDeviation)
-        return refuse(name + "[" + std::to_string(i) + "][" + std::to_string(j) + "]",
-                      std::isfinite(m(i, j)) ? "must lie within ±" + numberText(kMaxDeviation) + " µm (10 mm); got " +
-                                                   exactText(m(i, j)) + " µm."
-                                             : "must be a finite number.");
+        return Error{name + "[" + std::to_string(i) + "][" + std::to_string(j) + "]",
+                     gridWords(name) + ", row " + std::to_string(i + 1) + " (r = " + numberText(grid.r[i]) + " mm), value " +
+                         std::to_string(j + 1) + " (x = " + numberText(grid.x[j]) + " mm): " +
+                         (std::isfinite(m(i, j)) ? "must lie within ±" + numberText(kMaxDeviation) + " µm (10 mm); got " +
+                                                       exactText(m(i, j)) + " µm."
+                                                 : std::string("must be a finite number.")),
+                     ErrorCode::InvalidInput};
   return success();
 }
 
