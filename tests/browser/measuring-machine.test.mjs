@@ -1,6 +1,6 @@
 // A measuring machine's files on the page (issue 22, item 3): a grid and a points file with lines
 // above the table are read, their record (part, date, operator) and what was skipped shown; a points
-// file the calculator refuses leaves the page showing what is in use: the status says it was
+// or grid file the calculator refuses leaves the page showing what is in use: the status says it was
 // refused and why, in words; the box, its preview and the verdict are the measurement in use.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -110,6 +110,35 @@ test('a grid file with a preamble is read with its record; a later file the page
   assert.match(s.read, /^In use, grid-preamble\.csv: Read 5 × 9 values/);
   assert.equal(s.sseBefore, good.sseBefore);
   await page.locator('#measured-section .pair > div:first-child').screenshot({ path: path.join(shots, 'machine-grid-refused.png') });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+// The calculator (not the page's reader) refuses a grid: a value beyond 10 mm. The grid in use stays
+// in use, as with points: nothing is set aside, the box and the preview are the grid in use.
+test('a grid file the calculator refuses leaves the grid in use, and says why in words', async () => {
+  const page = await openPage(undefined, desk);
+  await afterResult(page, () => page.setInputFiles('#measured-file', file('grid-preamble.csv', data('grid-preamble.csv'))));
+  const good = await shown(page);
+  const wild = data('grid-preamble.csv').replace('29,5;4,862;4,063;3,367;2,773;', '29,5;4,862;4,063;3,367;20000;');
+  assert.notEqual(wild, data('grid-preamble.csv'));
+  await afterRefusal(page, () => page.setInputFiles('#measured-file', file('wild.csv', wild)));
+  const s = await shown(page);
+  const why = 'Measured grid, row 3 (r = 29.5 mm), value 4 (x = -17.5 mm): must lie within ±10000 µm (10 mm); got 20000 µm.';
+  assert.equal(s.status, `wild.csv is refused (grid-preamble.csv stays in use): ${why}`);
+  assert.equal(s.statusKind, 'error');
+  assert.equal(s.error, `wild.csv is refused: ${why} In use: grid-preamble.csv (5 × 9 values).`);
+  assert.equal(s.box, good.box, 'the box holds the grid in use again');
+  assert.match(s.read, /^In use, grid-preamble\.csv: Read 5 × 9 values/);
+  assert.equal(s.sseBefore, good.sseBefore, 'the verdict is the grid in use');
+  assert.equal(s.verdict, good.verdict);
+  assert.equal(await page.evaluate(() => document.querySelector('#notice').hidden), true, 'nothing set aside');
+  assert.equal((await page.evaluate(() => window.hobsharpTest.measuredSource())).name, 'grid-preamble.csv');
+  assert.doesNotMatch(s.body, /measured\[|grid\.radial|measuredPoints/, 'no JSON path on the page');
+  await page.locator('#measured-section .pair > div:first-child').screenshot({ path: path.join(shots, 'machine-grid-calculator-refused.png') });
+  // The next edit computes with the grid in use.
+  await afterResult(page, () => page.click('#use-measured'));
+  assert.equal((await shown(page)).sseBefore, good.sseBefore);
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

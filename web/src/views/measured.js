@@ -176,13 +176,14 @@ export function mountMeasured(store) {
   $('#measured-preview').addEventListener('change', preview);
   store.on('result', () => { if (!$('#measured-preview').hidden || box.value.trim() !== '') preview(); });
 
-  // The inputs before a points file was used: put back if the calculator refuses the points, so
-  // that nothing on screen is lost.
-  let beforePoints = null;
+  // The inputs before a measurement (points or grid) was used: put back if the calculator refuses
+  // it, so that the measurement in use stays in use and nothing on screen is lost.
+  let before = null;
   const withoutPoints = (extra) => {
     const { measuredPoints, ...rest } = extra || {};
     return rest;
   };
+  const inputsBefore = (boxBefore) => ({ measured: store.state.measured, extra: structuredClone(store.state.extra), tuning: store.state.tuning, box: boxBefore });
   // name: the file's, or undefined for the box's text; boxBefore: what the box held before the
   // file, put back if the file is refused (the preview then shows what is in use).
   const use = (text, name, boxBefore) => {
@@ -195,7 +196,7 @@ export function mountMeasured(store) {
         const measuredPoints = pointsOriented(read.points);
         message.hidden = true;
         attempt = { name: name || 'the points in the box', what: `${measuredPoints.length} points`, meta: read.meta, text };
-        beforePoints = { measured: store.state.measured, extra: structuredClone(store.state.extra), tuning: store.state.tuning, box: boxBefore };
+        before = inputsBefore(boxBefore);
         store.setInputs({ measured: null, extra: { ...store.state.extra, measuredPoints }, tuning: tuningFor(store.state.tuning, false) },
           { source: 'measured', force: true });
         store.emit('commit');
@@ -204,6 +205,7 @@ export function mountMeasured(store) {
       const { read, grid: measured } = gridOf(text, r.topography);
       message.hidden = true;
       attempt = { name: name || 'the grid in the box', what: `${measured.length} × ${(measured[0] || []).length} values`, meta: read.meta, text };
+      before = inputsBefore(boxBefore);
       store.setInputs({ measured, extra: withoutPoints(store.state.extra), tuning: tuningFor(store.state.tuning, false) },
         { source: 'measured', force: true });
       store.emit('commit');
@@ -216,12 +218,18 @@ export function mountMeasured(store) {
     }
   };
   let keepMessage = false;
+  // The calculator refused the measurement just sent (its points, or its grid: say, a value beyond
+  // 10 mm): the inputs before are computed again (recompute.js then sets no grid aside).
   store.on('refusal', ({ error, caseObject }) => {
-    if (!beforePoints || !caseObject || !caseObject.measuredPoints || !/^measuredPoints/.test(error.field || '')) return;
-    const { box: boxBefore, ...back } = beforePoints;
-    beforePoints = null;
+    if (!before || !caseObject) return;
+    const field = error.field || '';
+    const points = Boolean(caseObject.measuredPoints) && /^measuredPoints/.test(field);
+    const grid = Boolean(caseObject.measured) && /^measured(\[|$)/.test(field);
+    if (!points && !grid) return;
+    const { box: boxBefore, ...back } = before;
+    before = null;
     keepMessage = true;  // the refusal stays in view while the inputs before are computed again
-    refusedFile(attempt ? attempt.name : 'the points in the box', error.message, boxBefore);
+    refusedFile(attempt ? attempt.name : points ? 'the points in the box' : 'the grid in the box', error.message, boxBefore);
     attempt = null;
     store.setInputs(back, { source: 'measured', force: true });
   });
@@ -266,7 +274,7 @@ export function mountMeasured(store) {
     used = state.measured;
   });
   store.on('result', ({ result, caseObject }) => {
-    if (caseObject.measuredPoints) beforePoints = null;
+    if (caseObject.measured || caseObject.measuredPoints) before = null;
     if ((caseObject.measured || caseObject.measuredPoints) && !keepMessage) { message.hidden = true; refusal = null; }
     keepMessage = false;
     inUseAfter(caseObject);
