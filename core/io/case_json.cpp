@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "number_text.h"
+#include "grid_words.h"
 #include "probe_points.h"
 #include "units.h"
 
@@ -309,25 +310,31 @@ Outcome<AxisPolynomials> readAxes(const Node& a) {
   return axes;
 }
 
-// A grid of measured deviations; `name` is its field ("measured", "passes[1].measured").
+// A grid of measured deviations; `name` is its field ("measured", "passes[1].measured"). A refusal's
+// field is the path; its message names the grid, row and value in words, counted from 1 (grid_words.h).
 Outcome<Eigen::MatrixXd> readMeasured(const Json& m, const std::string& name = "measured") {
-  if (!m.is_array()) return refuse(name, std::string("must be a list of rows; got ") + typeName(m) + ".");
-  if (m.empty()) return refuse(name, "is empty; it needs one row per radial grid line.");
+  const auto refuseGrid = [](const std::string& field, const std::string& words, const std::string& reason) {
+    return Error{field, words + ": " + reason, ErrorCode::InvalidInput};
+  };
+  if (!m.is_array()) return refuseGrid(name, gridWords(name), std::string("must be a list of rows; got ") + typeName(m) + ".");
+  if (m.empty()) return refuseGrid(name, gridWords(name), "the list is empty; it needs one row per radial grid line.");
   const std::size_t cols = m[0].is_array() ? m[0].size() : 0;
   // Every row's shape before the matrix is allocated: its size then follows from the text's.
   for (std::size_t i = 0; i < m.size(); ++i) {
     const std::string row = name + "[" + std::to_string(i) + "]";
-    if (!m[i].is_array()) return refuse(row, std::string("must be a list of values; got ") + typeName(m[i]) + ".");
+    if (!m[i].is_array())
+      return refuseGrid(row, gridRowWords(name, i), std::string("must be a list of values; got ") + typeName(m[i]) + ".");
     if (m[i].size() != cols)
-      return refuse(row, "has " + std::to_string(m[i].size()) + " values; the first row has " + std::to_string(cols) + ".");
+      return refuseGrid(row, gridRowWords(name, i),
+                        "has " + std::to_string(m[i].size()) + " values; the first row has " + std::to_string(cols) + ".");
   }
   Eigen::MatrixXd out(static_cast<Eigen::Index>(m.size()), static_cast<Eigen::Index>(cols));
   for (std::size_t i = 0; i < m.size(); ++i) {
-    const std::string row = name + "[" + std::to_string(i) + "]";
     for (std::size_t j = 0; j < cols; ++j) {
-      double v = 0;
-      HOBSHARP_ASSIGN(v, Node::toNumber(m[i][j], row + "[" + std::to_string(j) + "]"));
-      out(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = v;
+      auto v = Node::toNumber(m[i][j], "");
+      if (!v) return refuseGrid(name + "[" + std::to_string(i) + "][" + std::to_string(j) + "]", gridValueWords(name, i, j),
+                                v.error().message.substr(2));
+      out(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = *v;
     }
   }
   return out;

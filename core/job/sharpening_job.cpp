@@ -1,5 +1,6 @@
 #include "sharpening_job.h"
 #include "number_text.h"
+#include "grid_words.h"
 #include "probe_points.h"
 
 #include <cmath>
@@ -127,16 +128,6 @@ Outcome<void> checkAxes(const AxisPolynomials& axes, int degree, const std::stri
   return success();
 }
 
-// A measured grid as the engineer names it: "Measured grid" for `measured`, "Pass 2, measured grid"
-// for `passes[1].measured` (the pass counted from 1, as pointsWords does), "Gash 2's topography"
-// for `inspection.gashTopographies[1]`.
-std::string gridWords(const std::string& name) {
-  const std::string gash = "inspection.gashTopographies[";
-  if (name.rfind(gash, 0) == 0) return "Gash " + std::to_string(std::stoul(name.substr(gash.size())) + 1) + "'s topography";
-  const std::string points = pointsWords(name + "Points");
-  return points.substr(0, points.size() - std::string("points").size()) + "grid";
-}
-
 // A measured grid of the grid's shape, every value finite and within ±kMaxDeviation; `name` is
 // its field ("measured", "passes[1].measured"). The field of a refused value is its path (for the
 // page to find the input); the message names its row and value from 1, with r and x.
@@ -150,8 +141,8 @@ Outcome<void> checkMeasured(const Eigen::MatrixXd& m, const FaceGrid& grid, cons
     for (int j = 0; j < m.cols(); ++j)
       if (!std::isfinite(m(i, j)) || std::abs(m(i, j)) > kMaxDeviation)
         return Error{name + "[" + std::to_string(i) + "][" + std::to_string(j) + "]",
-                     gridWords(name) + ", row " + std::to_string(i + 1) + " (r = " + numberText(grid.r[i]) + " mm), value " +
-                         std::to_string(j + 1) + " (x = " + numberText(grid.x[j]) + " mm): " +
+                     gridRowWords(name, i) + " (r = " + numberText(grid.r[i]) + " mm), value " + std::to_string(j + 1) +
+                         " (x = " + numberText(grid.x[j]) + " mm): " +
                          (std::isfinite(m(i, j)) ? "must lie within ±" + numberText(kMaxDeviation) + " µm (10 mm); got " +
                                                        exactText(m(i, j)) + " µm."
                                                  : std::string("must be a finite number.")),
