@@ -337,9 +337,10 @@ void expectRefused(const Json& j, const std::string& field, const std::string& p
   if (e.message.rfind("Wheel file", 0) == 0) {
     EXPECT_EQ(e.message.find("wheel."), std::string::npos) << e.message;
     const std::size_t open = field.rfind('[');
-    if (open != std::string::npos)  // the point, from 1
+    if (open != std::string::npos) {  // the point, from 1
       EXPECT_EQ(e.message.rfind("Wheel file, point " + std::to_string(std::stoi(field.substr(open + 1)) + 1) + ": ", 0), 0u)
           << e.message;
+    }
   } else {
     EXPECT_EQ(e.message.rfind(field, 0), 0u) << e.message;
   }
