@@ -211,11 +211,15 @@ export function mountMeasured(store) {
       store.emit('commit');
     } catch (e) {
       if (name === undefined) { refuse(e.message); return; }
-      refusedFile(name, e.message, boxBefore);
-      refuse(refusal.note);
-      store.setStatus(refusal.status, 'error');  // nothing is computed again: said at once
-      refusal.status = null;
+      refuseNow(name, e.message, boxBefore);
     }
+  };
+  // A file refused before anything is computed: the message and the status say so at once.
+  const refuseNow = (name, reason, boxBefore) => {
+    refusedFile(name, reason, boxBefore);
+    refuse(refusal.note);
+    store.setStatus(refusal.status, 'error');
+    refusal.status = null;
   };
   let keepMessage = false;
   // The calculator refused the measurement just sent (its points, or its grid: say, a value beyond
@@ -230,6 +234,7 @@ export function mountMeasured(store) {
     before = null;
     keepMessage = true;  // the refusal stays in view while the inputs before are computed again
     refusedFile(attempt ? attempt.name : points ? 'the points in the box' : 'the grid in the box', error.message, boxBefore);
+    refusal.error = error;
     attempt = null;
     store.setInputs(back, { source: 'measured', force: true });
   });
@@ -247,11 +252,14 @@ export function mountMeasured(store) {
     store.emit('commit');
   });
   $('#measured-file').addEventListener('change', async (e) => {
+    const chosen = e.target.files[0];
     let file;
     try {
       file = await chosenFileText(e.target, MAX_MEASURED_BYTES, tooLargeMessage);
     } catch (err) {
-      refuse(err.message);
+      // Empty or too large: refused as a file (never an earlier file's note); "The file is empty."
+      const name = chosen.name;
+      refuseNow(name, err.message.startsWith(`${name} `) ? `The file ${err.message.slice(name.length + 1)}` : err.message);
       return;
     }
     if (!file) return;
@@ -261,7 +269,12 @@ export function mountMeasured(store) {
     use(file.text, file.name, boxBefore);
   });
 
-  store.on('refusal', ({ error }) => { if (isMeasuredField(error.field)) show(refusal ? refusal.note : error.message); });
+  // A refused file's note where the refusal is that file's (the calculator's, or the note itself);
+  // any other refusal as it comes, never an earlier file's note.
+  store.on('refusal', ({ error }) => {
+    if (!isMeasuredField(error.field)) return;
+    show(refusal && (refusal.error === error || refusal.note === error.message) ? refusal.note : error.message);
+  });
   // An undo step puts its grid into the box, if it has another grid than the one used now.
   let used = null;
   store.on('inputs', (_, state) => { used = state.measured; });
