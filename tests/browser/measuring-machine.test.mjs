@@ -136,7 +136,16 @@ test('a grid file the calculator refuses leaves the grid in use, and says why in
   assert.equal((await page.evaluate(() => window.hobsharpTest.measuredSource())).name, 'grid-preamble.csv');
   assert.doesNotMatch(s.body, /measured\[|grid\.radial|measuredPoints/, 'no JSON path on the page');
   await page.locator('#measured-section .pair > div:first-child').screenshot({ path: path.join(shots, 'machine-grid-calculator-refused.png') });
+  // The same grid typed into the box and used: refused as the box's, its text kept there to be
+  // corrected; the grid in use stays in use.
+  await page.fill('#measured-csv', wild);
+  await afterRefusal(page, () => page.click('#use-measured'));
+  const typed = await shown(page);
+  assert.equal(typed.status, `The grid in the box is refused (grid-preamble.csv stays in use): ${why}`);
+  assert.equal(typed.box.replace(/\r\n?/g, '\n'), wild.replace(/\r\n?/g, '\n'), 'the typed text stays, to be corrected');
+  assert.equal(typed.sseBefore, good.sseBefore);
   // The next edit computes with the grid in use.
+  await page.fill('#measured-csv', good.box);
   await afterResult(page, () => page.click('#use-measured'));
   assert.equal((await shown(page)).sseBefore, good.sseBefore);
   assert.deepEqual(page.problems, []);

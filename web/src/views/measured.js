@@ -91,8 +91,9 @@ export function mountMeasured(store) {
   // A file the page or the calculator refused: the box gets back what it held before (the preview
   // then shows what is in use), the message and the status say what was refused, why, and what is in use.
   const refusedFile = (name, reason, boxBefore) => {
-    const note = `${name} is refused: ${reason} ${inUseText()}`;
-    refusal = { note, status: `${name} is refused (${inUse ? `${inUse.name} stays in use` : 'no measurement in use'}): ${reason}` };
+    const lead = name.replace(/^the /, 'The ');  // a file's name as it is; "The grid in the box"
+    const note = `${lead} is refused: ${reason} ${inUseText()}`;
+    refusal = { note, status: `${lead} is refused (${inUse ? `${inUse.name} stays in use` : 'no measurement in use'}): ${reason}` };
     if (boxBefore !== undefined && box.value !== boxBefore) {
       box.value = boxBefore;
       preview();
