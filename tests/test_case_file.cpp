@@ -43,7 +43,24 @@ TEST_P(BadInput, IsRefusedWithItsMessage) {
   EXPECT_EQ(e.field, rule.field) << e.message;
   EXPECT_NE(e.message.find(rule.message), std::string::npos) << e.message;
   ASSERT_FALSE(std::string(rule.field).empty()) << "every refusal names a field";
-  EXPECT_EQ(e.message.rfind(rule.field, 0), 0u) << e.message;  // the message starts with the field
+  // The message starts with the field; a measured point's in words, counted from 1 (issue 22):
+  // "Pass 2, measured point 2: ..." for passes[1].measuredPoints[1], never the path.
+  const std::string field = rule.field;
+  const std::size_t at = field.find(".measuredPoints[");
+  const std::string expected = rule.message;
+  if (expected.rfind("Measured grid", 0) == 0 || expected.find(", measured grid") != std::string::npos) {
+    // A measured grid (issue 22): named in words, its row and value counted from 1 (with their r
+    // and x when checked against the grid), never the path.
+    EXPECT_EQ(e.message.rfind(expected, 0), 0u) << e.message;
+    EXPECT_EQ(e.message.find("measured["), std::string::npos) << e.message;
+    EXPECT_EQ(e.message.find("grid.radial"), std::string::npos) << e.message;
+  } else if (at == std::string::npos) {
+    EXPECT_EQ(e.message.rfind(rule.field, 0), 0u) << e.message;
+  } else {
+    const int pass = std::stoi(field.substr(7)) + 1, point = std::stoi(field.substr(at + 16)) + 1;
+    EXPECT_EQ(e.message.rfind("Pass " + std::to_string(pass) + ", measured point " + std::to_string(point) + ": ", 0), 0u) << e.message;
+    EXPECT_EQ(e.message.find("measuredPoints"), std::string::npos) << e.message;
+  }
 }
 
 Json measuredRows(int rows, int cols) {
@@ -112,17 +129,17 @@ const Rule kRules[] = {
     {"AxesMissingAxis", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5, 0, 0, 0}}}; }, "axes.Y", "is missing"},
     {"AxesNotNumbers", [](Json& j) { j["axes"] = {{"X", {22.4, "a", 0, 0, 0}}, {"Y", {39.3, 0, 0, 0, 0}}, {"Z", {-116.4, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.22, 0, 0, 0, 0}}}; }, "axes.X[1]", "must be a number"},
     // A measured array whose shape does not match the grid.
-    {"MeasuredTooFewRows", [](Json& j) { j["measured"] = measuredRows(4, 9); }, "measured", "needs grid.radial = 5 rows of grid.axial = 9 values; got 4 x 9"},
-    {"MeasuredShortRow", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][2].erase(8); }, "measured[2]", "has 8 values"},
-    {"MeasuredNotANumber", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][3][4] = "x"; }, "measured[3][4]", "must be a number; got a string"},
-    {"MeasuredEmpty", [](Json& j) { j["measured"] = Json::array(); }, "measured", "is empty"},
-    {"MeasuredNotAList", [](Json& j) { j["measured"] = 3; }, "measured", "must be a list of rows"},
+    {"MeasuredTooFewRows", [](Json& j) { j["measured"] = measuredRows(4, 9); }, "measured", "Measured grid: needs 5 rows (the radial grid lines) of 9 values (the axial grid lines); got 4 x 9."},
+    {"MeasuredShortRow", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][2].erase(8); }, "measured[2]", "Measured grid, row 3: has 8 values; the first row has 9."},
+    {"MeasuredNotANumber", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][3][4] = "x"; }, "measured[3][4]", "Measured grid, row 4, value 5: must be a number; got a string."},
+    {"MeasuredEmpty", [](Json& j) { j["measured"] = Json::array(); }, "measured", "Measured grid: the list is empty"},
+    {"MeasuredNotAList", [](Json& j) { j["measured"] = 3; }, "measured", "Measured grid: must be a list of rows; got a number."},
     // Absurd magnitudes: beyond 10 mm, where the correction's squares would overflow.
-    {"MeasuredHuge", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][2][3] = 1e154; }, "measured[2][3]", "got 1e+154 µm"},
-    {"MeasuredBeyond10mm", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][4][8] = -10000.5; }, "measured[4][8]", "must lie within ±10000 µm"},
-    {"MeasuredRowsNotLists", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][1] = 7; }, "measured[1]", "must be a list of values; got a number"},
+    {"MeasuredHuge", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][2][3] = 1e154; }, "measured[2][3]", "Measured grid, row 3 (r = 29.5 mm), value 4 (x = -17.5 mm): must lie within ±10000 µm (10 mm); got 1e+154 µm."},
+    {"MeasuredBeyond10mm", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][4][8] = -10000.5; }, "measured[4][8]", "Measured grid, row 5 (r = 40 mm), value 9 (x = 70 mm): must lie within ±10000 µm (10 mm); got -10000.5 µm."},
+    {"MeasuredRowsNotLists", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][1] = 7; }, "measured[1]", "Measured grid, row 2: must be a list of values; got a number."},
     // A long first row and 100,000 rows that are not lists: refused before 80 GB are allocated.
-    {"MeasuredHugeFirstRow", [](Json& j) { j["measured"] = Json(std::vector<int>(100001, 1)); j["measured"][0] = std::vector<double>(100000, 0.0); }, "measured[1]", "must be a list of values"},
+    {"MeasuredHugeFirstRow", [](Json& j) { j["measured"] = Json(std::vector<int>(100001, 1)); j["measured"][0] = std::vector<double>(100000, 0.0); }, "measured[1]", "Measured grid, row 2: must be a list of values"},
     // A geometry for which a grid point cannot be solved: the message names r and x.
     {"UnsolvableGridPoint", [](Json& j) { j["axes"] = {{"X", {222.4, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}}; }, "grid", "cannot be solved at the grid point r = 19 mm, x = -70 mm"},
     // Correction options.
@@ -132,9 +149,9 @@ const Rule kRules[] = {
     // A pass history whose shapes do not match its grid or degree (docs/case-format.md, passes).
     {"PassesNotAList", [](Json& j) { j["passes"] = 3; }, "passes", "must be a list of passes"},
     {"PassNotAnObject", [](Json& j) { j["passes"] = {twoPasses()[0], 7}; }, "passes[1]", "must be an object"},
-    {"PassMeasuredTooFewRows", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["measured"] = measuredRows(4, 9); }, "passes[1].measured", "needs grid.radial = 5 rows of grid.axial = 9 values; got 4 x 9"},
-    {"PassMeasuredShortRow", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["measured"][2].erase(8); }, "passes[0].measured[2]", "has 8 values"},
-    {"PassMeasuredBeyond10mm", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["measured"][4][8] = 2e4; }, "passes[1].measured[4][8]", "must lie within ±10000 µm"},
+    {"PassMeasuredTooFewRows", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["measured"] = measuredRows(4, 9); }, "passes[1].measured", "Pass 2, measured grid: needs 5 rows"},
+    {"PassMeasuredShortRow", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0]["measured"][2].erase(8); }, "passes[0].measured[2]", "Pass 1, measured grid, row 3: has 8 values"},
+    {"PassMeasuredBeyond10mm", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["measured"][4][8] = 2e4; }, "passes[1].measured[4][8]", "Pass 2, measured grid, row 5 (r = 40 mm), value 9 (x = 70 mm): must lie within ±10000 µm"},
     {"PassMeasuredMissing", [](Json& j) { j["passes"] = twoPasses(); j["passes"][0].erase("measured"); }, "passes[0].measured", "is missing"},
     // A pass measured at the measuring machine's own points: checked like measuredPoints, named in the pass.
     {"PassMeasuredAndPoints", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["measuredPoints"] = {{30, 0, 1.5}}; }, "passes[1].measuredPoints", "not both"},

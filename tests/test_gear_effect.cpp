@@ -257,9 +257,15 @@ TEST(GearEffect, TheReliefIsTheCamDropOrTheSideReliefAngle) {
   EXPECT_NEAR(reliefPerRadianFromSideAngle(side, 31.25, kAlpha), k, 1e-12);
   HobReliefInput in;
   EXPECT_FALSE(reliefPerRadian(in, 31.25, kAlpha).value);
-  EXPECT_NE(reliefPerRadian(in, 31.25, kAlpha).missing.find("hob.sideReliefAngle"), std::string::npos);
+  // What is missing, in the hob form's words (issue 22), never the case's names (hob.gashes).
+  const std::string none = reliefPerRadian(in, 31.25, kAlpha).missing;
+  EXPECT_NE(none.find("the side relief angle"), std::string::npos) << none;
+  EXPECT_NE(none.find("the number of gashes z and the relief K"), std::string::npos) << none;
+  EXPECT_EQ(none.find("hob."), std::string::npos) << none;
   in.relief = 4.5;
-  EXPECT_NE(reliefPerRadian(in, 31.25, kAlpha).missing.find("hob.gashes"), std::string::npos);
+  const std::string noGashes = reliefPerRadian(in, 31.25, kAlpha).missing;
+  EXPECT_NE(noGashes.find("the number of gashes z"), std::string::npos) << noGashes;
+  EXPECT_EQ(noGashes.find("hob."), std::string::npos) << noGashes;
   in.gashes = 12;
   EXPECT_NEAR(*reliefPerRadian(in, 31.25, kAlpha).value, k, 1e-12);
 }

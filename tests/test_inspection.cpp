@@ -632,6 +632,8 @@ TEST(Inspection, BadGashTopographiesAreRefusedNamingTheGash) {
   bad[2][4] = 2e4;
   j["inspection"]["gashTopographies"] = Json::array({flat, bad});
   EXPECT_EQ(refusal(j).field, "inspection.gashTopographies[1][2][4]");
+  // In words, the gash, row and value counted from 1 (issue 22).
+  EXPECT_EQ(refusal(j).message, "Gash 2's topography, row 3 (r = 29.5 mm), value 5 (x = 0 mm): must lie within ±10000 µm (10 mm); got 20000 µm.");
   j["inspection"]["gashTopographies"] = Json::array({flat, flat});
   j["inspection"]["gashDeviations"] = Json::array({1, 2});
   EXPECT_EQ(refusal(j).field, "inspection.gashTopographies");

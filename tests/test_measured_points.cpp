@@ -107,7 +107,7 @@ TEST(MeasuredPoints, BadPointsAreRefusedNamingThePoint) {
   EXPECT_EQ(between->correction->probes.size(), 45u);
   e = refusal(with(3, Json::array({r, x, 2.0})));  // a second point at the first one's position
   EXPECT_EQ(e.field, "measuredPoints[3]");
-  EXPECT_NE(e.message.find("within 0.001 mm of measuredPoints[0]"), std::string::npos) << e.message;
+  EXPECT_NE(e.message.find("within 0.001 mm of measured point 1:"), std::string::npos) << e.message;
   e = refusal(with(3, Json::array({r + 6e-4, x - 6e-4, 2.0})));  // the same, within the tolerance
   EXPECT_EQ(e.field, "measuredPoints[3]");
   EXPECT_NE(e.message.find("measured twice"), std::string::npos) << e.message;
@@ -127,15 +127,23 @@ TEST(MeasuredPoints, BadPointsAreRefusedNamingThePoint) {
   few["measuredPoints"].erase(few["measuredPoints"].begin() + 20, few["measuredPoints"].end());
   e = refusal(few);
   EXPECT_EQ(e.field, "measuredPoints");
-  EXPECT_NE(e.message.find("20 points, too few for the 25 free coefficients"), std::string::npos) << e.message;
+  EXPECT_EQ(e.message.rfind("Measured points: 20 points are too few for the 25 free coefficients", 0), 0u) << e.message;
   Json both = good;
   both["measured"] = gridCase()["measured"];
   EXPECT_EQ(refusal(both).field, "measuredPoints");
   Json empty = good;
   empty["measuredPoints"] = Json::array();
   EXPECT_EQ(refusal(empty).field, "measuredPoints");
+  // The message names the point in words, counted from 1, never by its path (issue 22).
   const Error m = refusal(with(3, Json::array({10.0, 0.0, 1.0})));
-  EXPECT_EQ(m.message.rfind("measuredPoints[3]: ", 0), 0u) << m.message;
+  EXPECT_EQ(m.message.rfind("Measured point 4: (r, x) = (10, 0) mm is off the rake face", 0), 0u) << m.message;
+  const Error text = refusal(with(3, Json::array({r, "x", 1.0})));
+  EXPECT_EQ(text.message, "Measured point 4: x must be a number; got a string.");
+  for (const Error& any : {m, text, refusal(both), refusal(empty), refusal(few), refusal(with(3, Json::array({r, x})))})
+    EXPECT_EQ(any.message.find("measuredPoints"), std::string::npos) << any.message;
+  // A deviation just beyond the limit is written with the digits that show why (not "10000 µm").
+  EXPECT_EQ(refusal(with(3, Json::array({r, x, 10000.0001}))).message,
+            "Measured point 4: the deviation must lie within ±10000 µm (10 mm); got 10000.0001 µm.");
   // The wheel-profile correction takes a grid: points off it are refused with it, not ignored;
   // at the grid's positions it runs.
   Json wheel = with(3, Json::array({r + 0.5, x, 1.0}));
@@ -298,7 +306,8 @@ TEST(MeasuredPoints, CheckPointsRefusesNonFiniteAndDuplicatesNamingThePoint) {
   e = checkPoints(p, region);
   ASSERT_FALSE(e.ok());
   EXPECT_EQ(e.error().field, "measuredPoints[2]");
-  EXPECT_NE(e.error().message.find("of measuredPoints[1]"), std::string::npos) << e.error().message;
+  EXPECT_EQ(e.error().message.rfind("Measured point 3: ", 0), 0u) << e.error().message;
+  EXPECT_NE(e.error().message.find("of measured point 2:"), std::string::npos) << e.error().message;
   p[1] = {22.0011, 2, 5};  // just beyond it: two points
   EXPECT_TRUE(checkPoints(p, region).ok());
   EXPECT_EQ(checkPoints({}, region).error().field, "measuredPoints");
@@ -312,6 +321,7 @@ TEST(MeasuredPoints, APointTheWheelDoesNotGrindIsNamed) {
   auto f = simulateGroundFace(job.setup, wild, probes, job.grid, Sensitivities::Skip);
   ASSERT_FALSE(f.ok());
   EXPECT_EQ(f.error().field.rfind("measuredPoints[", 0), 0u) << f.error().field;
+  EXPECT_EQ(f.error().message.rfind("Measured point ", 0), 0u) << f.error().message;
 }
 
 // tests/data/points-2000.csv, the benchmark's and the Node tests' measurement: the paper's face

@@ -4,6 +4,7 @@
 
 #include "correction.h"
 #include "face_vectors.h"
+#include "probe_points.h"
 
 namespace hobsharp {
 namespace {
@@ -21,12 +22,12 @@ Outcome<Correction> correctMeasuredPoints(const SharpeningSetup& setup, const Ax
                                           const ProbePoints& probes, const Eigen::VectorXd& measured,
                                           const CorrectionOptions& o) {
   if (measured.size() != static_cast<Eigen::Index>(probes.size()))
-    return refuse("measuredPoints", "holds " + std::to_string(probes.size()) + " points but " +
+    return refusePoints("measuredPoints", std::to_string(probes.size()) + " points but " +
                                         std::to_string(measured.size()) + " deviations.", ErrorCode::Internal);
   int free = 0;
   for (const Coefficient& k : allCoefficients(run.degree())) free += isLocked(k, o) ? 0 : 1;
   if (static_cast<int>(probes.size()) < free)
-    return refuse("measuredPoints", "has " + std::to_string(probes.size()) + " points, too few for the " +
+    return refusePoints("measuredPoints", std::to_string(probes.size()) + " points are too few for the " +
                                         std::to_string(free) + " free coefficients of degree " + std::to_string(run.degree()) +
                                         " (one equation per point): measure at least " + std::to_string(free) +
                                         " points, or lower the degree, or lock coefficients.");

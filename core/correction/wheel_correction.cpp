@@ -23,9 +23,8 @@ std::string verdictOf(const Correction& c, const WheelCorrection& w, const Corre
   const std::string split = "the axes remove " + percentText(w.axesShare) + " of the measured sum of squares, the wheel " +
                             percentText(w.wheelShare);
   if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
-    v << "Correctable with the wheel: run the axes proposed and dress the wheel profile by "
-         "correction.wheelProfileOffset (at most "
-      << largest << " µm); predicted sum of squares " << squaresText(c.after.sse) << " µm², from "
+    v << "Correctable with the wheel: run the axes proposed and dress the wheel by the offset proposed, at most "
+      << largest << " µm (the dresser path); predicted sum of squares " << squaresText(c.after.sse) << " µm², from "
       << squaresText(c.before.sse) << " µm² (" << split << ").";
   } else {
     v << "Partly uncorrectable: " << percentText(c.uncorrectableShare)

@@ -20,10 +20,13 @@ ReliefPerRadian reliefPerRadian(const HobReliefInput& in, double pitchRadius, do
   if (in.sideReliefAngle)
     return {reliefPerRadianFromSideAngle(*in.sideReliefAngle * kRadPerDeg, pitchRadius, normalPressureAngle), ""};
   if (in.relief && in.gashes) return {reliefPerRadianFromCam(*in.relief, *in.gashes), ""};
+  // In the words of the hob's form (web/index.html), never the case's names.
   if (in.relief)
-    return {std::nullopt, "The gear effect needs hob.gashes with hob.relief: the relief is the drop over one gash pitch."};
+    return {std::nullopt, "The gear effect needs the number of gashes z with the relief K: the relief is the drop "
+                          "(the cam rise) over one gash pitch."};
   return {std::nullopt,
-          "No gear effect: the case gives no relief (hob.gashes with hob.relief, or hob.sideReliefAngle)."};
+          "No gear effect: no relief is given. Give the number of gashes z and the relief K (the cam rise over one "
+          "gash pitch, mm), or the side relief angle, in the hob data."};
 }
 
 }  // namespace hobsharp

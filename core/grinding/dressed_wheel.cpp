@@ -68,10 +68,11 @@ Outcome<ProjectedProfile> projectOntoConjugateProfile(const SharpeningSetup& set
       if (d < bestDistance) bestDistance = d, best = k;
     }
     const std::string name = field + "[" + std::to_string(i) + "]";
-    if (best < 0)
-      return refuse(name, "the point (R = " + mmText(R[i]) + ", Z = " + mmText(Z[i]) +
+    if (best < 0)  // the wheel file's point, counted from 1 (as wheel_input.cpp words them)
+      return Error{name, "Wheel file, point " + std::to_string(i + 1) + ": (R = " + mmText(R[i]) + ", Z = " + mmText(Z[i]) +
                               ") has no foot on the wheel's conjugate profile (Eq. 6) between the face radii " +
-                              mmText(rLow) + " and " + mmText(rHigh) + ": it is not a point of this wheel's profile.");
+                              mmText(rLow) + " and " + mmText(rHigh) + ": it is not a point of this wheel's profile.",
+                   ErrorCode::InvalidInput};
     MeridianPoint a = samples[best], b = samples[best + 1];
     double ga = along(a, R[i], Z[i]), gb = along(b, R[i], Z[i]);
     MeridianPoint p = std::abs(ga) < std::abs(gb) ? a : b;

@@ -275,15 +275,27 @@ bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes,
 
 namespace {
 
+// The dressed wheel's fault, not the grid's nor the measurement's: its profile offset curves too
+// sharply for the wheel to envelop the face at `point`. The field is the wheel's (the job names the
+// measured profile instead when the case gives that, evaluation.cpp).
+Error wildWheel(const GridPoint& point) {
+  return Error{kWildWheelField,
+               "Wheel file: the dressed wheel's profile curves too sharply to grind the face near " + where(point) +
+                   ": the wheel no longer envelops the face there (Eq. 11 holds past the envelope's edge). "
+                   "Load a smoother wheel profile, or use the conjugate wheel.",
+               ErrorCode::Unsolvable};
+}
+
 // Newton's method on Eqs. 5, 6, 11 from `guess`; with `startInverse`, the first step is a chord
 // step with it (solveEnvelopePointNear).
 Outcome<EnvelopePoint> solve(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
                              const EnvelopeGuess& guess, const Eigen::Matrix4d* startInverse,
                              Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
-  const auto fail = [&point] {
+  const auto fail = [&point, &setup] {
     return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
                               ": the wheel does not envelop the tooth face there (Eq. 11 has no "
-                              "solution). Check the axis polynomials and the grid.",
+                              "solution). Check the axis polynomials and the grid" +
+                              (setup.wheel.hasOffset() ? std::string(", and the wheel file.") : std::string(".")),
                   ErrorCode::Unsolvable);
   };
   const PointEquations q(setup, axes, point);
@@ -307,11 +319,7 @@ Outcome<EnvelopePoint> solve(const SharpeningSetup& setup, const AxisPolynomials
     e.jacobians = jacobians;
     e.jacobianInverse = inverse;
     if (setup.wheel.hasOffset() && pastEnvelopeEdge(q, v, o.edgeStep(helical)))
-      return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
-                               ": the dressed wheel's profile offset curves too sharply there, so the "
-                               "wheel no longer envelops the face (Eq. 11 holds past the envelope's "
-                               "edge). Check wheel.profileOffset or wheel.measuredProfile.",
-                    ErrorCode::Unsolvable);
+      return wildWheel(point);
     if (sensitivities == Sensitivities::Skip) return e;
     if (!addSensitivities(q, e)) return fail();
     return e;

@@ -70,6 +70,9 @@ struct EnvelopeSolverOptions {
   double edgeStep(bool helical) const { return helical ? helicalEdgeStep : straightEdgeStep; }
 };
 
+// The field of a refusal that blames the dressed wheel (its profile curves past the envelope's edge).
+inline constexpr const char* kWildWheelField = "wheel.profileOffset";
+
 Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
                                           const GridPoint& point, const EnvelopeGuess& guess,
                                           Sensitivities sensitivities = Sensitivities::Compute,

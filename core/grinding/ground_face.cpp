@@ -69,7 +69,7 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
     const bool sameLine = k > 0 && probes[k].r == lastR;
     if (!sameLine) {
       auto w = contactAt(setup, probes[k].r);
-      if (!w) return refuse("measuredPoints[" + std::to_string(k) + "]", w.error().message, w.error().code);
+      if (!w) return refusePoint("measuredPoints", k, w.error().message, w.error().code);
       contactW = *w;
     }
     const EnvelopeGuess guess =
@@ -78,10 +78,11 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
                  : nominalGuess(g, contactW);
     auto e = solveEnvelopePoint(setup, axes, g, guess, sensitivities, options);
     if (!e) {
+      if (e.error().field == kWildWheelField) return e.error();  // the wheel's fault, not the point's
       std::string why = e.error().message;
       const std::string gridWords = "grid: the ground face cannot be solved at the grid point";
       if (why.rfind(gridWords, 0) == 0) why = "the ground face cannot be solved at the point" + why.substr(gridWords.size());
-      return refuse("measuredPoints[" + std::to_string(k) + "]", why, e.error().code);
+      return refusePoint("measuredPoints", k, why, e.error().code);
     }
     lastR = probes[k].r;
     f.points.push_back(g);
@@ -134,9 +135,10 @@ MotionRange motionRange(const GroundFace& face) {
 Outcome<void> addSensitivities(GroundFace& face, const SharpeningSetup& setup, const AxisPolynomials& axes) {
   for (std::size_t k = 0; k < face.envelope.size(); ++k)
     if (!addSensitivities(setup, axes, face.points[k], face.envelope[k]))
-      return refuse(face.atProbes() ? "measuredPoints[" + std::to_string(k) + "]" : std::string("grid"),
-                    "the ground face's sensitivities cannot be formed at a point: the envelope equations are singular there.",
-                    ErrorCode::Unsolvable);
+    {
+      const std::string why = "the ground face's sensitivities cannot be formed at a point: the envelope equations are singular there.";
+      return face.atProbes() ? refusePoint("measuredPoints", k, why, ErrorCode::Unsolvable) : refuse("grid", why, ErrorCode::Unsolvable);
+    }
   if (!addSensitivities(setup, axes, face.meanPoint, face.meanEnvelope))
     return refuse("grid", "the ground face's sensitivities cannot be formed at the grid's mean point.", ErrorCode::Unsolvable);
   return success();

@@ -4,7 +4,11 @@
 // rows are then exactly these points, with nothing interpolated.
 #pragma once
 
+#include <cstddef>
+#include <string>
 #include <vector>
+
+#include "outcome.h"
 
 namespace hobsharp {
 
@@ -13,5 +17,31 @@ struct ProbePoint {
 };
 
 using ProbePoints = std::vector<ProbePoint>;
+
+// Measured points as the engineer names them: "Measured points" for `measuredPoints`, "Pass 2,
+// measured points" for `passes[1].measuredPoints`; one point counted from 1: "Measured point 81"
+// for the point k = 80.
+inline std::string pointsWords(const std::string& field) {
+  if (field.rfind("passes[", 0) == 0) {
+    const std::size_t end = field.find(']');
+    if (end != std::string::npos && end > 7) return "Pass " + std::to_string(std::stoul(field.substr(7, end - 7)) + 1) + ", measured points";
+  }
+  return "Measured points";
+}
+inline std::string pointWords(const std::string& field, std::size_t k) {
+  std::string w = pointsWords(field);
+  return w.substr(0, w.size() - 1) + " " + std::to_string(k + 1);
+}
+
+// A refused point: the field is its path in the case ("measuredPoints[80]", for the page to find
+// the input), the message names it in words ("Measured point 81: ...").
+inline Error refusePoint(const std::string& field, std::size_t k, const std::string& reason,
+                         ErrorCode code = ErrorCode::InvalidInput) {
+  return Error{field + "[" + std::to_string(k) + "]", pointWords(field, k) + ": " + reason, code};
+}
+// A refused list of points: "Measured points: ...".
+inline Error refusePoints(const std::string& field, const std::string& reason, ErrorCode code = ErrorCode::InvalidInput) {
+  return Error{field, pointsWords(field) + ": " + reason, code};
+}
 
 }  // namespace hobsharp

@@ -1,4 +1,5 @@
 #include "gash_spacing.h"
+#include "number_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,10 +32,8 @@ Outcome<void> checkGashDeviations(const std::vector<double>& d, const std::strin
                              std::to_string(d.size()) + ".");
   for (std::size_t k = 0; k < d.size(); ++k) {
     if (!std::isfinite(d[k]) || std::abs(d[k]) > kMaxGashDeviation) {
-      std::ostringstream v;
-      v << d[k];
       return refuse(field + "[" + std::to_string(k) + "]",
-                    "must be a deviation in µm of magnitude at most 10000; got " + v.str() + ".");
+                    "must be a deviation in µm of magnitude at most 10000; got " + exactText(d[k]) + ".");
     }
   }
   return success();

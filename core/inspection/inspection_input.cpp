@@ -24,7 +24,7 @@ Outcome<void> checkInspectionInput(const InspectionInput& in) {
     if (auto r = checkGashDeviations(in.gashDeviations, "inspection.gashDeviations"); !r) return r;
   if (!std::isfinite(in.uncertainty) || in.uncertainty < 0 || in.uncertainty > InspectionInput::kLargestUncertainty)
     return refuse("inspection.uncertainty", "must be the measurement's uncertainty U95 in µm, 0 to 100; got " +
-                                                numberText(in.uncertainty) + " µm.");
+                                                exactText(in.uncertainty) + " µm.");
   if (in.tolerances)
     if (auto r = checkToleranceTable(*in.tolerances, "inspection.tolerances"); !r) return r;
   return success();

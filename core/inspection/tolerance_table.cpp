@@ -54,10 +54,10 @@ Outcome<void> checkToleranceTable(const ToleranceTable& table, const std::string
   for (std::size_t k = 0; k < table.moduleEdges.size(); ++k) {
     const double m = table.moduleEdges[k];
     const std::string cell = edges + "[" + std::to_string(k) + "]";
-    if (!std::isfinite(m) || m <= 0) return refuse(cell, "must be a positive module in mm; got " + numberText(m) + ".");
+    if (!std::isfinite(m) || m <= 0) return refuse(cell, "must be a positive module in mm; got " + exactText(m) + ".");
     if (k > 0 && m <= table.moduleEdges[k - 1])
       return refuse(cell, "must be larger than the edge before it (" + numberText(table.moduleEdges[k - 1]) + " mm); got " +
-                              numberText(m) + " mm.");
+                              exactText(m) + " mm.");
   }
   for (Check check : kChecks) {
     for (ToleranceClass c : kClasses) {
@@ -71,7 +71,7 @@ Outcome<void> checkToleranceTable(const ToleranceTable& table, const std::string
         const std::string cell = row + "[" + std::to_string(b) + "]";
         const double t = *cells[b];
         if (!std::isfinite(t) || t <= 0 || t > kLargestTolerance)
-          return refuse(cell, "must be a tolerance in µm above 0 and at most 10000; got " + numberText(t) + ".");
+          return refuse(cell, "must be a tolerance in µm above 0 and at most 10000; got " + exactText(t) + ".");
         for (int tighter = 0; tighter < static_cast<int>(c); ++tighter) {
           const std::optional<double> u = table.at(check, kClasses[tighter], static_cast<int>(b));
           if (u && *u > t)

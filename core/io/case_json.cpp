@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "number_text.h"
+#include "grid_words.h"
+#include "probe_points.h"
 #include "units.h"
 
 namespace hobsharp {
@@ -243,10 +245,10 @@ Outcome<HobReliefInput> readRelief(const Node& h, const HobInput& hob) {
   const double radius = hob.outerDiameter / 2;
   if (out.relief && (*out.relief <= 0 || *out.relief >= radius))
     return refuse(h.field("relief"), "must be positive and below the hob's outer radius (" + numberText(radius) +
-                                         " mm); got " + numberText(*out.relief) + " mm.");
+                                         " mm); got " + exactText(*out.relief) + " mm.");
   if (out.sideReliefAngle && (*out.sideReliefAngle <= 0 || *out.sideReliefAngle > kMaxSideReliefAngle))
     return refuse(h.field("sideReliefAngle"), "must lie over 0 up to " + numberText(kMaxSideReliefAngle) + " deg; got " +
-                                                  numberText(*out.sideReliefAngle) + " deg.");
+                                                  exactText(*out.sideReliefAngle) + " deg.");
   if (out.relief && out.sideReliefAngle) {
     if (!out.gashes)
       return refuse(h.field("gashes"), "is needed to check hob.relief against hob.sideReliefAngle.");
@@ -257,7 +259,7 @@ Outcome<HobReliefInput> readRelief(const Node& h, const HobInput& hob) {
       if (std::abs(implied - *out.sideReliefAngle) > kSideReliefAgreement)
         return refuse(h.field("sideReliefAngle"), "disagrees with hob.relief and hob.gashes, which give " +
                                                       numberText(implied) + " deg at the pitch diameter; got " +
-                                                      numberText(*out.sideReliefAngle) + " deg.");
+                                                      exactText(*out.sideReliefAngle) + " deg.");
     }
   }
   return out;
@@ -308,25 +310,31 @@ Outcome<AxisPolynomials> readAxes(const Node& a) {
   return axes;
 }
 
-// A grid of measured deviations; `name` is its field ("measured", "passes[1].measured").
+// A grid of measured deviations; `name` is its field ("measured", "passes[1].measured"). A refusal's
+// field is the path; its message names the grid, row and value in words, counted from 1 (grid_words.h).
 Outcome<Eigen::MatrixXd> readMeasured(const Json& m, const std::string& name = "measured") {
-  if (!m.is_array()) return refuse(name, std::string("must be a list of rows; got ") + typeName(m) + ".");
-  if (m.empty()) return refuse(name, "is empty; it needs one row per radial grid line.");
+  const auto refuseGrid = [](const std::string& field, const std::string& words, const std::string& reason) {
+    return Error{field, words + ": " + reason, ErrorCode::InvalidInput};
+  };
+  if (!m.is_array()) return refuseGrid(name, gridWords(name), std::string("must be a list of rows; got ") + typeName(m) + ".");
+  if (m.empty()) return refuseGrid(name, gridWords(name), "the list is empty; it needs one row per radial grid line.");
   const std::size_t cols = m[0].is_array() ? m[0].size() : 0;
   // Every row's shape before the matrix is allocated: its size then follows from the text's.
   for (std::size_t i = 0; i < m.size(); ++i) {
     const std::string row = name + "[" + std::to_string(i) + "]";
-    if (!m[i].is_array()) return refuse(row, std::string("must be a list of values; got ") + typeName(m[i]) + ".");
+    if (!m[i].is_array())
+      return refuseGrid(row, gridRowWords(name, i), std::string("must be a list of values; got ") + typeName(m[i]) + ".");
     if (m[i].size() != cols)
-      return refuse(row, "has " + std::to_string(m[i].size()) + " values; the first row has " + std::to_string(cols) + ".");
+      return refuseGrid(row, gridRowWords(name, i),
+                        "has " + std::to_string(m[i].size()) + " values; the first row has " + std::to_string(cols) + ".");
   }
   Eigen::MatrixXd out(static_cast<Eigen::Index>(m.size()), static_cast<Eigen::Index>(cols));
   for (std::size_t i = 0; i < m.size(); ++i) {
-    const std::string row = name + "[" + std::to_string(i) + "]";
     for (std::size_t j = 0; j < cols; ++j) {
-      double v = 0;
-      HOBSHARP_ASSIGN(v, Node::toNumber(m[i][j], row + "[" + std::to_string(j) + "]"));
-      out(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = v;
+      auto v = Node::toNumber(m[i][j], "");
+      if (!v) return refuseGrid(name + "[" + std::to_string(i) + "][" + std::to_string(j) + "]", gridValueWords(name, i, j),
+                                v.error().message.substr(2));
+      out(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = *v;
     }
   }
   return out;
@@ -545,15 +553,23 @@ Outcome<ToleranceTable> readToleranceTable(const Node& t) {
 // "passes[1].measuredPoints"). Where they lie is resolveJob()'s to check.
 Outcome<std::vector<MeasuredPoint>> readMeasuredPoints(const Json& p, const std::string& field) {
   if (!p.is_array() || p.empty())
-    return refuse(field, "must be a list of points [r, x, deviation] (mm, mm, µm), such as [[19, -70, 1.5], ...].");
+    return refusePoints(field, "must be a list of points [r, x, deviation] (mm, mm, µm), such as [[19, -70, 1.5], ...].");
   std::vector<MeasuredPoint> out;
+  static const char* const kValue[3] = {"r", "x", "the deviation"};
   for (std::size_t k = 0; k < p.size(); ++k) {
-    const std::string name = field + "[" + std::to_string(k) + "]";
     if (!p[k].is_array() || p[k].size() != 3)
-      return refuse(name, std::string("must be a point [r, x, deviation] of three numbers; got ") +
-                              (p[k].is_array() ? std::to_string(p[k].size()) + " values" : typeName(p[k])) + ".");
+      return refusePoint(field, k, std::string("must be a point [r, x, deviation] of three numbers; got ") +
+                                       (p[k].is_array() ? std::to_string(p[k].size()) + " values" : typeName(p[k])) + ".");
     double v[3] = {0, 0, 0};
-    for (std::size_t j = 0; j < 3; ++j) HOBSHARP_ASSIGN(v[j], Node::toNumber(p[k][j], name + "[" + std::to_string(j) + "]"));
+    for (std::size_t j = 0; j < 3; ++j) {
+      auto n = Node::toNumber(p[k][j], "");
+      if (!n) {  // named in words, the point counted from 1; the field stays the path
+        Error e = refusePoint(field, k, std::string(kValue[j]) + " " + n.error().message.substr(2));
+        e.field += "[" + std::to_string(j) + "]";
+        return e;
+      }
+      v[j] = *n;
+    }
     out.push_back(MeasuredPoint{v[0], v[1], v[2]});
   }
   return out;

@@ -60,7 +60,9 @@ void inspectEvaluation(Evaluation& e) {
   e.inspectionAfter = inspect(after, spacingAfter, table, module, u);
 }
 
-Outcome<Evaluation> evaluate(const SharpeningJob& job) {
+namespace {
+
+Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
   Evaluation e;
   e.job = job;
   const SharpeningSetup& s = job.setup;
@@ -106,6 +108,19 @@ Outcome<Evaluation> evaluate(const SharpeningJob& job) {
   }
   inspectEvaluation(e);
   gearEvaluation(e);
+  return e;
+}
+
+}  // namespace
+
+Outcome<Evaluation> evaluate(const SharpeningJob& job) {
+  auto e = evaluateJob(job);
+  // A wheel too wild to grind with is the case's measured profile when it gives one (envelope.h).
+  if (!e && e.error().field == kWildWheelField && job.input.wheelMeasuredProfile) {
+    Error w = e.error();
+    w.field = "wheel.measuredProfile";
+    return w;
+  }
   return e;
 }
 

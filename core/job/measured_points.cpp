@@ -8,6 +8,12 @@
 namespace hobsharp {
 namespace {
 
+// "measured point 1" in a sentence; "Pass 2, measured point 1" keeps its capital.
+std::string lowerFirst(std::string words) {
+  if (words.rfind("Measured", 0) == 0) words[0] = 'm';
+  return words;
+}
+
 // The index of the line within `tolerance` of v, or -1.
 int lineAt(const std::vector<double>& lines, double v, double tolerance) {
   for (std::size_t i = 0; i < lines.size(); ++i)
@@ -18,23 +24,22 @@ int lineAt(const std::vector<double>& lines, double v, double tolerance) {
 }  // namespace
 
 Outcome<void> checkPoints(const std::vector<MeasuredPoint>& points, const PointRegion& region, const std::string& field) {
-  auto pointName = [&](std::size_t k) { return field + "[" + std::to_string(k) + "]"; };
-  if (points.empty()) return refuse(field, "is empty; it needs the measured points [r, x, deviation].");
+  if (points.empty()) return refusePoints(field, "the list is empty; it needs the measured points [r, x, deviation].");
   for (std::size_t k = 0; k < points.size(); ++k) {
     const MeasuredPoint& p = points[k];
     if (!std::isfinite(p.r) || !std::isfinite(p.x) || !std::isfinite(p.deviation))
-      return refuse(pointName(k), "must hold three finite numbers [r, x, deviation].");
+      return refusePoint(field, k, "must hold three finite numbers [r, x, deviation].");
     // Written only for a refusal: formatting it for every point took most of the check's time.
     const auto at = [&p] { return "(r, x) = (" + numberText(p.r, 7) + ", " + numberText(p.x, 7) + ") mm"; };
     if (std::abs(p.deviation) > region.maxDeviation)
-      return refuse(pointName(k), "the deviation must lie within ±" + numberText(region.maxDeviation, 7) + " µm (10 mm); got " +
-                                      numberText(p.deviation, 7) + " µm.");
+      return refusePoint(field, k, "the deviation must lie within ±" + numberText(region.maxDeviation, 7) + " µm (10 mm); got " +
+                                       exactText(p.deviation, 7) + " µm.");
     if (p.r < region.rootRadius - region.tolerance || p.r > region.outerRadius + region.tolerance)
-      return refuse(pointName(k), at() + " is off the rake face, which runs from the gash root (radius " +
+      return refusePoint(field, k, at() + " is off the rake face, which runs from the gash root (radius " +
                                       numberText(region.rootRadius, 7) + " mm) to the outer radius (" + numberText(region.outerRadius, 7) +
                                       " mm).");
     if (std::abs(p.x) > region.axialReach)
-      return refuse(pointName(k), at() + " lies outside the ground region: the face ends at x = ±" +
+      return refusePoint(field, k, at() + " lies outside the ground region: the face ends at x = ±" +
                                       numberText(region.axialReach, 7) + " mm.");
   }
   // Duplicates: sorted by r, each point is compared with those within the tolerance in r after it.
@@ -52,9 +57,9 @@ Outcome<void> checkPoints(const std::vector<MeasuredPoint>& points, const PointR
     }
   if (worst < points.size()) {
     const MeasuredPoint& p = points[worst];
-    return refuse(pointName(worst), "(r, x) = (" + numberText(p.r, 7) + ", " + numberText(p.x, 7) + ") mm is within " +
-                                        numberText(region.tolerance, 7) + " mm of " + pointName(first) +
-                                        ": the same point measured twice; give each point once.");
+    return refusePoint(field, worst, "(r, x) = (" + numberText(p.r, 7) + ", " + numberText(p.x, 7) + ") mm is within " +
+                                         numberText(region.tolerance, 7) + " mm of " + lowerFirst(pointWords(field, first)) +
+                                         ": the same point measured twice; give each point once.");
   }
   return success();
 }

@@ -1,5 +1,7 @@
 #include "sharpening_job.h"
 #include "number_text.h"
+#include "grid_words.h"
+#include "probe_points.h"
 
 #include <cmath>
 #include <sstream>
@@ -16,7 +18,7 @@ namespace {
 
 Outcome<void> positive(const std::string& field, double v, const char* unit) {
   if (!std::isfinite(v)) return refuse(field, "must be a finite number.");
-  if (v <= 0) return refuse(field, "must be positive; got " + numberText(v) + " " + unit + ".");
+  if (v <= 0) return refuse(field, "must be positive; got " + exactText(v) + " " + unit + ".");
   return success();
 }
 
@@ -34,31 +36,31 @@ Outcome<void> checkHob(const HobInput& h) {
     if (auto r = positive(field, v, unit); !r) return r;
   if (auto r = finite("hob.rakeOffset", h.rakeOffset); !r) return r;
   if (!(h.normalPressureAngle > 0 && h.normalPressureAngle < 45))
-    return refuse("hob.normalPressureAngle", "must lie between 0 and 45 deg; got " + numberText(h.normalPressureAngle) + " deg.");
+    return refuse("hob.normalPressureAngle", "must lie between 0 and 45 deg; got " + exactText(h.normalPressureAngle) + " deg.");
   if (h.pitchDiameter >= h.outerDiameter)
     return refuse("hob.pitchDiameter", "must be smaller than hob.outerDiameter (" + numberText(h.outerDiameter) +
-                                           " mm); got " + numberText(h.pitchDiameter) + " mm.");
+                                           " mm); got " + exactText(h.pitchDiameter) + " mm.");
   const double ra = h.outerDiameter / 2, rp = h.pitchDiameter / 2;
   if (h.gashDepth >= ra)
     return refuse("hob.gashDepth", "must be less than the hob radius (" + numberText(ra) + " mm); got " +
-                                       numberText(h.gashDepth) + " mm.");
+                                       exactText(h.gashDepth) + " mm.");
   if (ra - h.gashDepth >= rp)
     return refuse("hob.gashDepth", "the gash must reach below the pitch diameter: the root radius " +
                                        numberText(ra - h.gashDepth) + " mm is not below the pitch radius " +
                                        numberText(rp) + " mm.");
   if (std::abs(h.rakeOffset) >= rp)
     return refuse("hob.rakeOffset", "|e| must be less than the pitch radius (" + numberText(rp) + " mm); got " +
-                                        numberText(h.rakeOffset) + " mm.");
+                                        exactText(h.rakeOffset) + " mm.");
   if (std::abs(h.rakeOffset) >= ra - h.gashDepth)
     return refuse("hob.rakeOffset", "|e| must be less than the gash root radius (" +
-                                        numberText(ra - h.gashDepth) + " mm); got " + numberText(h.rakeOffset) + " mm.");
+                                        numberText(ra - h.gashDepth) + " mm); got " + exactText(h.rakeOffset) + " mm.");
   if (h.gash == GashKind::Helical) {
     if (!h.gashLead && !h.gashHelixAngle)
       return refuse("hob.gashLead", "a helical gash needs hob.gashLead or hob.gashHelixAngle.");
     if (h.gashLead)
       if (auto r = positive("hob.gashLead", *h.gashLead, "mm"); !r) return r;
     if (h.gashHelixAngle && !(*h.gashHelixAngle > 0 && *h.gashHelixAngle < 90))
-      return refuse("hob.gashHelixAngle", "must lie between 0 and 90 deg; got " + numberText(*h.gashHelixAngle) + " deg.");
+      return refuse("hob.gashHelixAngle", "must lie between 0 and 90 deg; got " + exactText(*h.gashHelixAngle) + " deg.");
     if (h.gashLead && h.gashHelixAngle) {
       const double fromLead = helixAngleFromLead(*h.gashLead, rp) * kDegPerRad;
       if (std::abs(fromLead - *h.gashHelixAngle) > kHelixAngleAgreement)
@@ -127,19 +129,24 @@ Outcome<void> checkAxes(const AxisPolynomials& axes, int degree, const std::stri
 }
 
 // A measured grid of the grid's shape, every value finite and within ±kMaxDeviation; `name` is
-// its field ("measured", "passes[1].measured").
+// its field ("measured", "passes[1].measured"). The field of a refused value is its path (for the
+// page to find the input); the message names its row and value from 1, with r and x.
 Outcome<void> checkMeasured(const Eigen::MatrixXd& m, const FaceGrid& grid, const std::string& name) {
   if (m.rows() != grid.rows() || m.cols() != grid.cols())
-    return refuse(name, "needs grid.radial = " + std::to_string(grid.rows()) + " rows of grid.axial = " +
-                            std::to_string(grid.cols()) + " values; got " + std::to_string(m.rows()) + " x " +
-                            std::to_string(m.cols()) + ".");
+    return Error{name, gridWords(name) + ": needs " + std::to_string(grid.rows()) + " rows (the radial grid lines) of " +
+                           std::to_string(grid.cols()) + " values (the axial grid lines); got " + std::to_string(m.rows()) +
+                           " x " + std::to_string(m.cols()) + ".",
+                 ErrorCode::InvalidInput};
   for (int i = 0; i < m.rows(); ++i)
     for (int j = 0; j < m.cols(); ++j)
       if (!std::isfinite(m(i, j)) || std::abs(m(i, j)) > kMaxDeviation)
-        return refuse(name + "[" + std::to_string(i) + "][" + std::to_string(j) + "]",
-                      std::isfinite(m(i, j)) ? "must lie within ±" + numberText(kMaxDeviation) + " µm (10 mm); got " +
-                                                   numberText(m(i, j)) + " µm."
-                                             : "must be a finite number.");
+        return Error{name + "[" + std::to_string(i) + "][" + std::to_string(j) + "]",
+                     gridRowWords(name, i) + " (r = " + numberText(grid.r[i]) + " mm), value " + std::to_string(j + 1) +
+                         " (x = " + numberText(grid.x[j]) + " mm): " +
+                         (std::isfinite(m(i, j)) ? "must lie within ±" + numberText(kMaxDeviation) + " µm (10 mm); got " +
+                                                       exactText(m(i, j)) + " µm."
+                                                 : std::string("must be a finite number.")),
+                     ErrorCode::InvalidInput};
   return success();
 }
 
@@ -156,10 +163,10 @@ Outcome<CorrectionOptions> correctionOptions(const CorrectionInput& c, int degre
     if (!std::isfinite(*c.probeNoise)) return refuse(name + ".probeNoise", "must be a finite number.");
     if (*c.probeNoise <= 0)
       return refuse(name + ".probeNoise", "the probe's standard deviation must be positive; got " +
-                                                 numberText(*c.probeNoise) + " µm.");
+                                                 exactText(*c.probeNoise) + " µm.");
     if (*c.probeNoise > kMaxDeviation)
       return refuse(name + ".probeNoise", "must be at most " + numberText(kMaxDeviation) + " µm (10 mm); got " +
-                                                 numberText(*c.probeNoise) + " µm.");
+                                                 exactText(*c.probeNoise) + " µm.");
     o.probeNoise = *c.probeNoise;
   }
   for (Axis a : kAxes) {
@@ -173,18 +180,18 @@ Outcome<CorrectionOptions> correctionOptions(const CorrectionInput& c, int degre
     const double most = isRotary(a) ? kMostRotaryResolution : kMostLinearResolution;
     if (*r < least || *r > most)
       return refuse(field, "must lie between " + numberText(least) + " and " + numberText(most) + (isRotary(a) ? " deg" : " µm") +
-                               "; got " + numberText(*r) + (isRotary(a) ? " deg." : " µm."));
+                               "; got " + exactText(*r) + (isRotary(a) ? " deg." : " µm."));
     o.resolution.step[static_cast<int>(a)] = *r;
   }
   if (c.truncation) {
     if (!(*c.truncation > 0 && *c.truncation < 1))
-      return refuse(name + ".truncation", "must lie between 0 and 1; got " + numberText(*c.truncation) + ".");
+      return refuse(name + ".truncation", "must lie between 0 and 1; got " + exactText(*c.truncation) + ".");
     o.truncation = *c.truncation;
   }
   if (c.amplification) {
     if (!(*c.amplification >= 1 && std::isfinite(*c.amplification)))
       return refuse(name + ".amplification", "must be a finite number of at least 1; got " +
-                                                    numberText(*c.amplification) + ".");
+                                                    exactText(*c.amplification) + ".");
     o.amplification = *c.amplification;
   }
   for (const Coefficient& k : c.locked)
@@ -206,9 +213,9 @@ Outcome<CorrectionOptions> correctionOptions(const CorrectionInput& c, int degre
 Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   if (auto r = checkHob(in.hob); !r) return r.error();
   if (auto r = positive("wheel.outerDiameter", in.wheelOuterDiameter, "mm"); !r) return r.error();
-  if (!(std::abs(in.tilt) < 90)) return refuse("setup.tilt", "must lie between -90 and 90 deg; got " + numberText(in.tilt) + " deg.");
+  if (!(std::abs(in.tilt) < 90)) return refuse("setup.tilt", "must lie between -90 and 90 deg; got " + exactText(in.tilt) + " deg.");
   if (in.settingAngle && !(std::abs(*in.settingAngle) < 90))
-    return refuse("setup.settingAngle", "must lie between -90 and 90 deg; got " + numberText(*in.settingAngle) + " deg.");
+    return refuse("setup.settingAngle", "must lie between -90 and 90 deg; got " + exactText(*in.settingAngle) + " deg.");
   if (in.centerDistance)
     if (auto r = positive("setup.centerDistance", *in.centerDistance, "mm"); !r) return r.error();
   if (auto r = finite("machine.K1", in.machine.K1); !r) return r.error();
@@ -274,7 +281,7 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
                            in.hob.length / 2 + std::abs(face.axialAt(*pitch)) + kGridTolerance * (1 + in.hob.length),
                            kGridTolerance, kMaxDeviation};
   if (in.measuredPoints) {
-    if (in.measured) return refuse("measuredPoints", "give the measurement as `measured` (a grid) or as `measuredPoints`, not both.");
+    if (in.measured) return refusePoints("measuredPoints", "give the measurement as a grid or as points, not both.");
     if (auto ok = checkPoints(*in.measuredPoints, region); !ok) return ok.error();
     if (auto m = gridFromPoints(*in.measuredPoints, grid, kGridTolerance)) {
       job.input.measured = std::move(m);

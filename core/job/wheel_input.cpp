@@ -19,15 +19,24 @@ constexpr double kRangeTolerance = 1e-3;
 
 std::string at(const std::string& name, size_t i) { return name + "[" + std::to_string(i) + "]"; }
 
+// A wheel's points as the engineer gave them, a wheel file (views/wheel-input.js), its points
+// counted from 1; the field stays the case's path ("wheel.profileOffset.R[0]").
+Error refuseWheel(const std::string& field, const std::string& reason) {
+  return Error{field, "Wheel file: " + reason, ErrorCode::InvalidInput};
+}
+Error refuseWheelPoint(const std::string& field, size_t i, const std::string& reason) {
+  return Error{at(field, i), "Wheel file, point " + std::to_string(i + 1) + ": " + reason, ErrorCode::InvalidInput};
+}
+
 // R strictly increasing, every value finite, at least 2 points.
 Outcome<void> checkRadii(const std::vector<double>& R, const std::string& name) {
   if (R.size() < 2)
-    return refuse(name, "needs at least 2 points for the spline; got " + std::to_string(R.size()) + ".");
+    return refuseWheel(name, "the spline needs at least 2 points; got " + std::to_string(R.size()) + ".");
   for (size_t i = 0; i < R.size(); ++i) {
-    if (!std::isfinite(R[i])) return refuse(at(name, i), "must be a finite number.");
+    if (!std::isfinite(R[i])) return refuseWheelPoint(name, i, "R must be a finite number.");
     if (i > 0 && !(R[i] > R[i - 1]))
-      return refuse(at(name, i), "must be greater than the radius before it (" + numberText(R[i - 1]) + " mm); got " +
-                                     numberText(R[i]) + " mm. Give the radii in increasing order.");
+      return refuseWheelPoint(name, i, "R must be greater than the radius before it (" + numberText(R[i - 1]) + " mm); got " +
+                                           exactText(R[i]) + " mm. Give the radii in increasing order.");
   }
   return success();
 }
@@ -57,12 +66,12 @@ Outcome<WheelSurface> resolveWheelSurface(const CaseInput& in, const SharpeningS
     std::vector<double> y;
     for (size_t i = 0; i < o.R.size(); ++i) {
       if (o.R[i] < range->min - kRangeTolerance || o.R[i] > range->max + kRangeTolerance)
-        return refuse(at(R, i), numberText(o.R[i]) + " mm lies outside the wheel's contact range: the wheel grinds the face "
-                                "from root to tip with the radii R = " + rangeText + ".");
-      if (!std::isfinite(o.values[i])) return refuse(at(offset, i), "must be a finite number.");
+        return refuseWheelPoint(R, i, "R = " + exactText(o.R[i]) + " mm lies outside the wheel's contact range: the wheel grinds "
+                                      "the face from root to tip with the radii R = " + rangeText + ".");
+      if (!std::isfinite(o.values[i])) return refuseWheelPoint(offset, i, "the offset must be a finite number.");
       if (std::abs(o.values[i]) > kMaxWheelOffset)
-        return refuse(at(offset, i), "must lie within ±" + numberText(kMaxWheelOffset) + " µm (10 mm); got " +
-                                         numberText(o.values[i]) + " µm.");
+        return refuseWheelPoint(offset, i, "the offset must lie within ±" + numberText(kMaxWheelOffset) + " µm (10 mm); got " +
+                                               exactText(o.values[i]) + " µm.");
       y.push_back(o.values[i] / kMicrometresPerMm);
     }
     wheel.offset = CubicSpline(o.R, std::move(y));
@@ -75,25 +84,25 @@ Outcome<WheelSurface> resolveWheelSurface(const CaseInput& in, const SharpeningS
   const std::string R = "wheel.measuredProfile.R", Z = "wheel.measuredProfile.Z";
   if (auto r = checkRadii(m.R, R); !r) return r.error();
   for (size_t i = 0; i < m.values.size(); ++i)
-    if (!std::isfinite(m.values[i])) return refuse(at(Z, i), "must be a finite number.");
+    if (!std::isfinite(m.values[i])) return refuseWheelPoint(Z, i, "Z must be a finite number.");
   const double margin = 0.25 * (outerRadius - rootRadius);
   const double rLow = std::max(rootRadius - margin, 0.5 * (rootRadius + std::abs(setup.face.rakeOffset)));
   auto projected = projectOntoConjugateProfile(setup, m.R, m.values, rLow, outerRadius + margin, "wheel.measuredProfile");
-  if (!projected) return projected.error();
+  if (!projected) return projected.error();  // names the point in words
   // The feet's radii in the order of the points, and covering the contact range.
   for (size_t i = 1; i < projected->R.size(); ++i)
     if (!(projected->R[i] > projected->R[i - 1]))
-      return refuse(at(R, i), "projected onto the conjugate profile, this point falls at R = " + numberText(projected->R[i]) +
+      return refuseWheelPoint(R, i, "projected onto the conjugate profile, this point falls at R = " + numberText(projected->R[i]) +
                                   " mm, not beyond the point before it (" + numberText(projected->R[i - 1]) +
                                   " mm): the measured profile folds back.");
   const double lo = projected->R.front(), hi = projected->R.back();
   if (lo > range->min + kRangeTolerance || hi < range->max - kRangeTolerance)
-    return refuse("wheel.measuredProfile", "covers the conjugate wheel radii R = " + numberText(lo) + " to " + numberText(hi) +
+    return refuseWheel("wheel.measuredProfile", "the measured profile covers the conjugate wheel radii R = " + numberText(lo) + " to " + numberText(hi) +
                                                " mm only; the wheel grinds the face with R = " + rangeText +
                                                ". Measure the profile over the whole contact range.");
   for (size_t i = 0; i < projected->offset.size(); ++i)
     if (std::abs(projected->offset[i]) * kMicrometresPerMm > kMaxWheelOffset)
-      return refuse(at(Z, i), "lies " + numberText(projected->offset[i]) + " mm from the conjugate profile, more than " +
+      return refuseWheelPoint(Z, i, "the point lies " + numberText(projected->offset[i]) + " mm from the conjugate profile, more than " +
                                   numberText(kMaxWheelOffset / kMicrometresPerMm) + " mm: not a profile of this wheel.");
   wheel.offset = CubicSpline(projected->R, projected->offset);
   return wheel;

@@ -2,6 +2,7 @@
 // (std::ostream's default notation).
 #pragma once
 
+#include <cstdlib>
 #include <sstream>
 #include <string>
 
@@ -12,6 +13,16 @@ inline std::string numberText(double v, int digits = 6) {
   s.precision(digits);
   s << v;
   return s.str();
+}
+
+// A value as given, in the fewest digits that read back as it (at least `digits`): what a refusal
+// says it got, so that 10000.0001 beyond a limit of 10000 is not written "10000".
+inline std::string exactText(double v, int digits = 6) {
+  for (int d = digits; d < 17; ++d) {
+    std::string t = numberText(v, d);
+    if (std::strtod(t.c_str(), nullptr) == v) return t;
+  }
+  return numberText(v, 17);
 }
 
 // A length in mm, as the messages write it: "12.5 mm".

@@ -43,8 +43,9 @@ test('a link whose measured rows are not lists loads the rest, the grid set asid
   assert.equal(await page.inputValue('[data-field="machine.K1"]'), '120');
   assert.notEqual((await tab2(page, 'nominal')).X, paperX);
   assert.equal(await page.inputValue('#measured-csv'), '[1,2,3,4,5]');
-  assert.match(await page.textContent('#measured-error'), /^measured\[0\]: /);
-  await noticeStays(page, /^The link: the measured grid is set aside, not used: measured\[0\]: /);
+  // In words, the row counted from 1 (issue 22), never the path measured[0].
+  assert.equal(await page.textContent('#measured-error'), 'Measured grid, row 1: must be a list of values; got a number.');
+  await noticeStays(page, /^The link: the measured grid is set aside, not used: Measured grid, row 1: must be a list of values; got a number\. /);
   assert.equal(await page.getAttribute('#verdict', 'data-sse-after'), null);
   await page.context().close();
 });
@@ -75,7 +76,7 @@ test('a case file whose measured grid has the wrong shape: refused once, its tex
   await afterResult(page, () => page.setInputFiles('#load-case', file));
   assert.equal(await page.inputValue('[data-field="machine.K1"]'), '120');
   assert.equal((await page.inputValue('#measured-csv')).split('\n').length, 4, "the user's grid stays in the box");
-  assert.match(await page.textContent('#measured-error'), /^measured: /);
+  assert.match(await page.textContent('#measured-error'), /^Measured grid: needs 5 rows \(the radial grid lines\) of 9 values \(the axial grid lines\); got 4 x 9\.$/);
   await noticeStays(page, /^wrong-shape\.json: the measured grid is set aside/);
   // Later edits are computed, without the refused grid.
   const errors = await count(page, 'errors');

@@ -30,7 +30,8 @@ test('the gear effect: relief in the hob form, figures per flank, the profile an
     { viewport: { width: 1366, height: 1000 } });
   // Without the relief the page says what is missing.
   await page.waitForFunction(() => document.querySelector('#gear-effect-reason').textContent !== '');
-  assert.match(await page.textContent('#gear-effect-reason'), /no relief \(hob\.gashes with hob\.relief, or hob\.sideReliefAngle\)/);
+  assert.match(await page.textContent('#gear-effect-reason'), /no relief is given\. Give the number of gashes z and the relief K \(the cam rise/);
+  assert.doesNotMatch(await page.textContent('#gear-effect-reason'), /hob\./);
   assert.equal(await page.isHidden('#gear-effect'), true);
 
   await afterResult(page, () => page.fill('[data-field="hob.gashes"]', '12'));

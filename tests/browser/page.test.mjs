@@ -143,9 +143,13 @@ test('a bad CSV is refused with a message and the old results stay', async () =>
     writeFileSync(file, text);
     await afterError(page, () => page.setInputFiles('#measured-file', file));
     assert.match(await page.textContent('#measured-error'), messages[name], name);
+    assert.ok((await page.textContent('#measured-error')).startsWith(`${name} is refused: `), 'this file named, not an earlier one');
     assert.equal(await page.isVisible('#measured-error'), true);
     assert.deepEqual(await tab2(page, 'nominal'), shown, 'the old results stay');
-    assert.match(await page.textContent('#status'), /last good input/);
+    // Issue 22: the status names the refused file and what is in use (it read "... from the last
+    // good input" before).
+    assert.equal(await page.getAttribute('#status', 'class'), 'error');
+    assert.match(await page.textContent('#status'), new RegExp(`^${name.replace('.', '\\.')} is refused \\(no measurement in use\\): `));
   }
   await page.locator('#measured-section').screenshot({ path: path.join(shots, 'bad-csv.png') });
 

@@ -83,7 +83,9 @@ test('a points CSV is previewed, corrected as points, and the maps show the grid
   // A file the reader refuses (no units): the message names the line; nothing else changes.
   await page.setInputFiles('#measured-file', file('no-units.csv', 'r,x,deviation\n19,1,2\n'));
   await page.waitForFunction(() => !document.querySelector('#measured-error').hidden);
-  assert.equal(await page.textContent('#measured-error'), 'Line 1, column 1: the column "r" has no unit: write "r (mm)".');
+  // Issue 22: the file named, and what is in use (this read 'Line 1, column 1: ...' alone before).
+  assert.equal(await page.textContent('#measured-error'),
+    'no-units.csv is refused: Line 1, column 1: the column "r" has no unit: write "r (mm)". In use: probe-run.csv (2000 points).');
   assert.equal((await state(page)).sseBefore, s.sseBefore);
   assert.match((await state(page)).title, /^Measured at 2000 points/);
 
@@ -91,7 +93,8 @@ test('a points CSV is previewed, corrected as points, and the maps show the grid
   const lines = pointsCsv.trim().split('\n');
   lines[3] = '5,0,1';
   await afterResult(page, () => page.setInputFiles('#measured-file', file('off-face.csv', lines.join('\n'))));
-  assert.match(await page.textContent('#measured-error'), /^measuredPoints\[2\]: \(r, x\) = \(5, 0\) mm is off the rake face/);
+  // Issue 22: the point in words, counted from 1 (this read `measuredPoints[2]: ...` before).
+  assert.match(await page.textContent('#measured-error'), /^off-face\.csv is refused: Measured point 3: \(r, x\) = \(5, 0\) mm is off the rake face/);
   const after = await state(page);
   assert.equal(after.sseBefore, s.sseBefore, 'the correction shown is the one before');
   assert.match(after.title, /^Measured at 2000 points/);

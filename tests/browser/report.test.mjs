@@ -31,7 +31,9 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
   const noRelief = path.join(out, 'report-no-relief.pdf');
   writeFileSync(noRelief, await page.pdf({ format: 'A4', printBackground: true }));
   const noReliefText = execFileSync('pdftotext', [noRelief, '-'], { encoding: 'utf8' }).replace(/\s+/g, ' ');
-  assert.match(noReliefText, /Effect on the gear .{0,80}no relief/);
+  // Issue 22: in the hob form's words, no JSON name (this assertion read "hob.gashes with hob.relief" before).
+  assert.match(noReliefText, /Effect on the gear .{0,80}no relief is given\. Give the number of gashes z and the\s+relief K/);
+  assert.doesNotMatch(noReliefText, /hob\.gashes|hob\.relief/);
   assert.doesNotMatch(noReliefText, /fHα|arc-min/);
   await page.emulateMedia({ media: 'screen' });
   // The job, typed in its fields; it goes into the case (and so the link) and onto page 1.

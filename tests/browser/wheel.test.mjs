@@ -99,6 +99,9 @@ test('correcting the wheel too: the proposed offset on Fig. 4, the dresser path 
   const sseAfter = Number(await page.getAttribute('#verdict', 'data-sse-after'));
   assert.ok(sseAfter < 0.01 && sseAfter < axesOnly / 10, `with the wheel ${sseAfter} µm², axes only ${axesOnly} µm²`);
   assert.ok(await page.isVisible('#wheel-split'));
+  // Issue 22: the wheel verdict in words (it read "by correction.wheelProfileOffset" before).
+  assert.match(await page.textContent('#verdict'), /^Correctable with the wheel: run the axes proposed and dress the wheel by the offset proposed, at most [\d.]+ µm \(the dresser path\)/);
+  assert.doesNotMatch(await page.evaluate(() => document.body.innerText), /correction\.wheel|wheelProfileOffset|measured\[|measuredPoints/);
   assert.match(await page.textContent('#wheel-share'), /^Of the measured sum of squares, the axes remove [\d.]+ % and the wheel's proposed offset [\d.]+ %; [\d.]+ µm rms is left/);
   for (const id of ['#plot-removed-axes', '#plot-removed-wheel', '#plot-left']) assert.ok(await colours(page, id) > 8, `${id} draws`);
   const traces = await wheelTraces(page);

@@ -17,9 +17,12 @@ const withRelief = (c) => ({ ...c, hob: { ...c.hob, gashes: 12, relief: 4.5 } })
 test('without the relief the result says what is missing, and nothing else', () => {
   const g = hobsharp.evaluate(paper()).gearEffect;
   assert.deepEqual(Object.keys(g), ['reason']);
-  assert.match(g.reason, /no relief \(hob\.gashes with hob\.relief, or hob\.sideReliefAngle\)/);
+  // In the hob form's words, never the case's names (issue 22).
+  assert.equal(g.reason, 'No gear effect: no relief is given. Give the number of gashes z and the relief K (the cam rise over ' +
+    'one gash pitch, mm), or the side relief angle, in the hob data.');
   const onlyRelief = hobsharp.evaluate({ ...paper(), hob: { ...paper().hob, relief: 4.5 } }).gearEffect;
-  assert.match(onlyRelief.reason, /needs hob\.gashes/);
+  assert.match(onlyRelief.reason, /needs the number of gashes z with the relief K/);
+  for (const reason of [g.reason, onlyRelief.reason]) assert.doesNotMatch(reason, /hob\./);
 });
 
 test('a measured radial tilt: fHα plus, the pressure angle smaller, as estimated; the same as native', () => {

@@ -179,8 +179,9 @@ const bad = [
   ['a grid outside the face', (c) => { c.grid.rMin = 10; }, 'grid.rMin', /below the gash root/],
   ['a grid over the size limit', (c) => { c.grid.axial = 1000; }, 'grid.axial', /from 2 to 201/],
   ['axes of the wrong length', (c) => { c.axes = { X: [22.4, 139.5], Y: [39.3, 0, 0, 0, 0], Z: [-116.4, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.22, 0, 0, 0, 0] }; }, 'axes.X', /needs 5 coefficients/],
-  ['measured of the wrong shape', (c) => { c.measured = [[1, 2, 3]]; }, 'measured', /needs grid.radial = 5 rows of grid.axial = 9 values; got 1 x 3/],
-  ['a non-numeric measured cell', (c) => { c.measured = Array.from({ length: 5 }, () => Array(9).fill(0)); c.measured[1][2] = 'n/a'; }, 'measured[1][2]', /must be a number/],
+  ['measured of the wrong shape', (c) => { c.measured = [[1, 2, 3]]; }, 'measured', /^Measured grid: needs 5 rows \(the radial grid lines\) of 9 values \(the axial grid lines\); got 1 x 3\.$/],
+  ['a measured value beyond 10 mm', (c) => { c.measured = Array.from({ length: 5 }, () => Array(9).fill(0)); c.measured[2][3] = 2e4; }, 'measured[2][3]', /^Measured grid, row 3 \(r = 29\.5 mm\), value 4 \(x = -17\.5 mm\): must lie within ±10000 µm \(10 mm\); got 20000 µm\.$/],
+  ['a non-numeric measured cell', (c) => { c.measured = Array.from({ length: 5 }, () => Array(9).fill(0)); c.measured[1][2] = 'n/a'; }, 'measured[1][2]', /^Measured grid, row 2, value 3: must be a number; got a string\.$/],
   ['an unsolvable grid point', (c) => { c.axes = { X: [222.4, 139.5089, 0, 0, 0], Y: [39.3076, 0, 0, 0, 0], Z: [-116.446, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.220365, 0, 0, 0, 0] }; }, 'grid', /r = 19 mm, x = -70 mm/, 'Unsolvable'],
   ['no contact between wheel and face', (c) => { c.setup.settingAngle = -60; c.setup.centerDistance = 69.446; }, 'setup', /no contact between the wheel and the tooth face at radius r = 31.25 mm/, 'Unsolvable'],
   ['no centre distance from the boundary equation', (c) => { c.setup.settingAngle = 85; delete c.setup.centerDistance; }, 'wheel.outerDiameter', /no centre distance solves the boundary equation/, 'Unsolvable'],
@@ -198,7 +199,13 @@ for (const [name, change, field, message, code = 'InvalidInput'] of bad) {
       assert.equal(e.code, code);
       assert.equal(e.field, field);
       assert.match(e.message, message);
-      assert.ok(e.message.startsWith(field), `the message names the field: ${e.message}`);
+      // The message names the field; a measured grid's in words, its row and value from 1 (issue 22).
+      if (/^measured\[\d+\]\[\d+\]$|^measured$/.test(field) && !/Infinity|NaN/.test(e.message)) {
+        assert.ok(e.message.startsWith('Measured grid'), `the message names the grid in words: ${e.message}`);
+        assert.ok(!e.message.includes('measured['), `no JSON path: ${e.message}`);
+      } else {
+        assert.ok(e.message.startsWith(field), `the message names the field: ${e.message}`);
+      }
       return true;
     });
   });

@@ -62,14 +62,15 @@ test('malformed points files and refused points are named on stderr', () => {
   writeFileSync(bad, lines.join('\n'));
   run = cli(paperFile, '--points', bad);
   assert.equal(run.status, 1);
-  assert.match(run.stderr, /bad\.csv: measuredPoints\[2\]: \(r, x\) = \(5, 0\) mm is off the rake face/);
+  // Issue 22: the point in words, counted from 1 (this read measuredPoints[2] before).
+  assert.match(run.stderr, /bad\.csv: Measured point 3: \(r, x\) = \(5, 0\) mm is off the rake face/);
   lines[3] = lines[2];
   writeFileSync(bad, lines.join('\n'));
   run = cli(paperFile, '--points', bad);
-  assert.match(run.stderr, /measuredPoints\[2\]: .* within 0\.001 mm of measuredPoints\[1\]/);
+  assert.match(run.stderr, /Measured point 3: .* within 0\.001 mm of measured point 2: the same point measured twice/);
   writeFileSync(bad, readFileSync(pointsFile, 'utf8').trim().split('\n').slice(0, 11).join('\n'));
   run = cli(paperFile, '--points', bad);
-  assert.match(run.stderr, /measuredPoints: has 10 points, too few for the 25 free coefficients/);
+  assert.match(run.stderr, /Measured points: 10 points are too few for the 25 free coefficients/);
   assert.equal(cli(paperFile, '--points').status, 2, 'a usage error');
   run = cli(paperFile, '--points-out', path.join(dir, 'none'));
   assert.equal(run.status, 1);

@@ -125,7 +125,7 @@ test('a history that does not fit its grid is refused by the calculator, naming 
   const bad = structuredClone(history);
   bad[1].measured.pop();
   assert.throws(() => hobsharp.evaluate({ ...paper, passes: bad }),
-    (e) => e.field === 'passes[1].measured' && /^passes\[1\]\.measured: needs grid\.radial = 5 rows of grid\.axial = 9 values; got 4 x 9/.test(e.message));
+    (e) => e.field === 'passes[1].measured' && /^Pass 2, measured grid: needs 5 rows \(the radial grid lines\) of 9 values \(the axial grid lines\); got 4 x 9\.$/.test(e.message));
   bad[1].measured = grid(0);
   bad[0].axes = { ...axes, B: [0.22] };
   assert.throws(() => hobsharp.evaluate({ ...paper, passes: bad }), (e) => e.field === 'passes[0].axes.B');

@@ -99,3 +99,23 @@ test('a measured grid the calculator refuses is set aside and not sent with late
   assert.equal(calc.calls[2].caseObject.measured, undefined, 'a later edit does not send it again');
   assert.equal(caseOf(store.state).correction, undefined);
 });
+
+// Issue 22: a grid just given that the calculator refuses leaves the measurement in use before in
+// use (views/measured.js puts it back on the refusal); nothing is set aside then.
+test('a refused grid that a view replaces by the grid in use before is not set aside', async () => {
+  const store = createStore();
+  const calc = standIn();
+  startRecompute(store, calc);
+  store.setInputs({ form: form(15), measured: [[1, 2]] });
+  calc.calls[0].resolve({ result: { good: 1 }, ms: 1 });
+  await settle();
+  store.on('refusal', () => store.setInputs({ measured: [[1, 2]] }));  // the view's put-back
+  store.setInputs({ measured: [[3, 2e4]] });
+  const seen = watch(store);
+  calc.calls[1].reject(Object.assign(new Error('Measured grid, row 1, value 2: must lie within ±10000 µm'), { code: 'InvalidInput', field: 'measured[0][1]' }));
+  await settle();
+  assert.equal(seen.filter(([e]) => e === 'aside').length, 0, 'nothing set aside');
+  assert.deepEqual(store.state.measured, [[1, 2]], 'the grid before is in use');
+  assert.equal(calc.calls.length, 3, 'computed again once');
+  assert.deepEqual(calc.calls[2].caseObject.measured, [[1, 2]]);
+});

@@ -34,5 +34,7 @@ export function installHooks(store, calculator) {
       calculator.watchdogMs = watchdogMs;
       calculator.stall().catch(() => {});
     },
+    // The measurement in use as the record keeps it (views/measured.js): {name, what, meta} or null.
+    measuredSource: () => structuredClone(store.state.measuredSource),
   };
 }

@@ -15,16 +15,16 @@ export function startRecompute(store, calculator) {
   let waiting = null;
 
   const refused = (error, caseObject) => {
-    // A measured grid the calculator refuses (say, it no longer fits the grid) is set aside, so
-    // that it is not sent again with every edit; the user's text stays in the CSV box.
-    if (caseObject.measured && refusesMeasured(error) && store.state.measured) {
+    store.refuse(error, caseObject);
+    // A grid just given that the calculator refuses is replaced by the measurement in use before
+    // (views/measured.js, on the refusal). A grid in use that it now refuses (say, it no longer
+    // fits the grid) is set aside, so that it is not sent again with every edit; the user's text
+    // stays in the CSV box.
+    if (caseObject.measured && refusesMeasured(error) && store.state.measured === caseObject.measured) {
       store.state.measured = null;
       store.emit('aside', { error });
-      store.refuse(error, caseObject);
       request();
-      return;
     }
-    store.refuse(error, caseObject);
   };
 
   async function next() {

@@ -22,6 +22,7 @@ export function initialState() {
   return {
     form: { format: CASE_FORMAT },  // the case as the form gives it
     measured: null,          // rows root to tip of values along the gash, µm, or null
+    measuredSource: null,    // the measurement in use as its file gave it: {name, what, meta: {date?, part?, operator?}} (views/measured.js)
     locked: [],              // coefficients kept out of the correction: 'X a0' ...
     lockedAxes: [],          // axes kept out of the correction: 'X' ...
     tuning: {},              // the correction's thresholds a loaded case gave: truncation, amplification

@@ -5,6 +5,7 @@
 // user ticks on the preview (transpose, reverse rows or columns, change sign, mm to µm).
 import { MAX_GRID_VALUES, MAX_MEASURED_BYTES, tooLargeMessage } from './csv.js';
 import { GRID } from '../limits.js';
+import { skippedText, splitPreamble } from './preamble.js';
 
 // The values a grid of measured deviations can plausibly hold, µm: below this largest |value|, the
 // numbers look like mm (a probe resolves about 0.1 µm; 0.05 mm is a plausible deviation).
@@ -56,7 +57,10 @@ const near = (a, b) => Math.abs(a - b) <= POSITION_TOLERANCE;
 const fmtList = (list) => list.map((v) => String(Math.round(v * 1000) / 1000)).join(', ');
 
 // text -> {values: rows of numbers as written, notes: [sentences], warnings: [{kind, text}] (kind:
-// the option that would answer it, 'transpose' or 'mm'), suggest: {transpose, mm}}; throws an Error naming the line and column of what cannot be read.
+// the option that would answer it, 'transpose' or 'mm'), suggest: {transpose, mm}, meta: {date?,
+// part?, operator?} from the lines above the table, skipped: [{line, text}] those lines,
+// skippedText: the sentence saying so, or ''}; throws an Error naming the line and column of what
+// cannot be read.
 // grid: {r: [mm], x: [mm]}, the lines of the face grid now, to recognise and check positions.
 export function readMeasured(text, grid) {
   if (text.length > MAX_MEASURED_BYTES) throw new Error(tooLargeMessage('The text', text.length));
@@ -68,15 +72,20 @@ export function readMeasured(text, grid) {
     if (l !== '' && !l.startsWith('#')) lines.push({ n: i + 1, text: l });
   });
   if (lines.length === 0) throw new Error('The measured grid is empty.');
-  let decimalComma = false;
-  let rows = lines.map(({ n, text: l }) => {
-    const { cells, decimalComma: dc } = cellsOf(l);
-    decimalComma = decimalComma || dc;
-    return { n, cells };
-  });
+  // The lines a measuring machine writes above the table (io/preamble.js): the table begins at a
+  // line of two or more numbers, or at a header just above such a line (as many cells, or one more).
+  const all = lines.map(({ n, text: l }) => ({ n, ...cellsOf(l) }));
+  const numbers = (row) => row.cells.filter((c) => Number.isFinite(toNumber(c))).length;
+  const isHeaderOf = (row, next) => Boolean(next) && row.cells.length >= 2 && numbers(next) >= 2 && numbers(next) === next.cells.length &&
+    (row.cells.length === next.cells.length || row.cells.length === next.cells.length + 1);
+  const startsTable = (i) => numbers(all[i]) >= 2 || (numbers(all[i]) === all[i].cells.length) || isHeaderOf(all[i], all[i + 1]);
+  const { start, skipped, meta } = splitPreamble(lines, startsTable);
+  let rows = start < 0 ? all : all.slice(start);
+  const decimalComma = rows.some((row) => row.decimalComma);
   if (decimalComma) notes.push('semicolons or tabs with decimal commas');
   // A header: a first line whose first cell is not a number ("r \ x", "r_mm", or column names).
   let headerX = null;
+  const headerLine = rows[0].n;
   if (rows.length > 1 && Number.isNaN(toNumber(rows[0].cells[0] || ''))) {
     const rest = rows[0].cells.slice(1).map(toNumber);
     if (rest.length && rest.every(Number.isFinite)) { headerX = rest; notes.push(`a header row of ${rest.length} x positions (mm)`); }
@@ -106,7 +115,7 @@ export function readMeasured(text, grid) {
   }
   if (headerX && headerX.length === grid.x.length) {
     const j = headerX.findIndex((v, k) => !near(v, grid.x[k]));
-    if (j >= 0) throw new Error(`Line ${lines[0].n}, column ${j + 2}: the column is at x = ${fmtList([headerX[j]])} mm, but the grid's axial line ${j + 1} is at x = ${fmtList([grid.x[j]])} mm. Change the grid (Grid in the form) to the measured positions, or give the values without positions.`);
+    if (j >= 0) throw new Error(`Line ${headerLine}, column ${j + 2}: the column is at x = ${fmtList([headerX[j]])} mm, but the grid's axial line ${j + 1} is at x = ${fmtList([grid.x[j]])} mm. Change the grid (Grid in the form) to the measured positions, or give the values without positions.`);
   }
   if (out.length === grid.x.length && out.every((row) => row.length === grid.r.length) && grid.r.length !== grid.x.length) {
     suggest.transpose = true;
@@ -118,7 +127,7 @@ export function readMeasured(text, grid) {
     suggest.mm = true;
     warnings.push({ kind: 'mm', text: `The largest |value| is ${Number(largest.toPrecision(3))} µm, below what a probe resolves: these look like mm. Tick "values in mm" to multiply them by 1000.` });
   }
-  return { values: out, notes, warnings, suggest };
+  return { values: out, notes, warnings, suggest, meta, skipped: skipped.map(({ n, text: t }) => ({ line: n, text: t })), skippedText: skippedText(skipped) };
 }
 
 // The grid after the options ticked, in this order: transpose, reverse the rows (the text went

@@ -17,6 +17,7 @@ export const MAX_POINTS_BYTES = 2 * 1024 * 1024;
 // Below this largest |deviation| (µm) the numbers look like mm (as for a measured grid).
 export const POINTS_MM_SUSPECT_BELOW = 0.05;
 export const POINTS_HEADER = 'r (mm),x (mm),deviation (µm)';
+import { skippedText, splitPreamble } from './preamble.js';
 
 const COLUMNS = [
   { key: 'r', names: ['r', 'radius'], units: { mm: 1 }, unit: 'mm' },
@@ -32,6 +33,12 @@ const toNumber = (cell) => {
 
 // The separator a header line uses: ';', a tab, or ','.
 const separatorOf = (line) => (line.includes(';') ? ';' : line.includes('\t') ? '\t' : ',');
+
+// Whether a line names the r and deviation columns, as a points header does (right or not).
+function looksLikeHeader(line) {
+  const cells = line.split(separatorOf(line)).map((c) => c.trim().toLowerCase());
+  return cells.some((c) => /^(deviation|dev)\b/.test(c)) && cells.some((c) => /^(r|radius)\b/.test(c));
+}
 
 // A header cell -> {column, scale, unit} or a reason it is not one.
 function headerCell(cell) {
@@ -49,7 +56,29 @@ function headerCell(cell) {
   return { column, scale, unit };
 }
 
-// text -> {points: [[r, x, deviation µm]...], notes: [sentences], warnings: [{kind, text}]};
+// A line -> {sep, order: [{column, scale, unit}] per column} when it is the header, else {reason}:
+// the sentence naming the line (and the column) of what is wrong.
+function headerOf({ n, text }, what = 'the first line') {
+  const sep = separatorOf(text);
+  const cells = text.split(sep).map((c) => c.trim());
+  while (cells.length > 3 && cells[cells.length - 1] === '') cells.pop();
+  if (cells.length !== 3 || cells.some((c) => Number.isFinite(toNumber(c.replace(',', '.'))))) {
+    return { reason: `Line ${n}: ${what} must be the header "${POINTS_HEADER}" (the names and units of the ` +
+      `three columns); got ${cells.length} column${cells.length === 1 ? '' : 's'}: "${text.slice(0, 60)}".` };
+  }
+  const order = [];
+  for (let j = 0; j < cells.length; ++j) {
+    const h = headerCell(cells[j]);
+    if (h.reason) return { reason: `Line ${n}, column ${j + 1}: ${h.reason}.` };
+    if (order.some((o) => o.column === h.column)) return { reason: `Line ${n}, column ${j + 1}: the column "${h.column.key}" is given twice.` };
+    order.push(h);
+  }
+  return { sep, order };
+}
+
+// text -> {points: [[r, x, deviation µm]...], notes: [sentences], warnings: [{kind, text}], meta:
+// {date?, part?, operator?} from the lines above the header, skipped: [{line, text}] those lines,
+// skippedText: the sentence saying so, or ''};
 // throws an Error naming the line (and the column) of what cannot be read.
 export function readPoints(text) {
   if (text.length > MAX_POINTS_BYTES) {
@@ -62,22 +91,15 @@ export function readPoints(text) {
     if (l !== '' && !l.startsWith('#')) lines.push({ n: i + 1, text: l });
   });
   if (lines.length === 0) throw new Error('The points file is empty.');
-  const head = lines[0];
-  const sep = separatorOf(head.text);
-  const cells = head.text.split(sep).map((c) => c.trim());
-  while (cells.length > 3 && cells[cells.length - 1] === '') cells.pop();
-  if (cells.length !== 3 || cells.some((c) => Number.isFinite(toNumber(c.replace(',', '.'))))) {
-    throw new Error(`Line ${head.n}: the first line must be the header "${POINTS_HEADER}" (the names and units of the ` +
-      `three columns); got ${cells.length} column${cells.length === 1 ? '' : 's'}: "${head.text.slice(0, 60)}".`);
-  }
-  const order = [];
+  // The table begins at the first line that is the header (io/preamble.js): a measuring machine's
+  // lines above it are skipped, the metadata among them kept. Without one, the line that looks
+  // most like it (else the first) says why it is not.
+  const { start, skipped, meta } = splitPreamble(lines, (i) => !headerOf(lines[i]).reason);
+  const head = start >= 0 ? lines[start] : (lines.find((l) => looksLikeHeader(l.text)) || lines[0]);
+  const { sep, order, reason } = headerOf(head, head === lines[0] ? 'the first line' : 'the line above the points');
+  if (reason) throw new Error(reason);
+  const first = lines.indexOf(head) + 1;  // the first point's line
   const notes = [], warnings = [];
-  cells.forEach((cell, j) => {
-    const h = headerCell(cell);
-    if (h.reason) throw new Error(`Line ${head.n}, column ${j + 1}: ${h.reason}.`);
-    if (order.some((o) => o.column === h.column)) throw new Error(`Line ${head.n}, column ${j + 1}: the column "${h.column.key}" is given twice.`);
-    order.push(h);
-  });
   const at = (key) => order.findIndex((o) => o.column.key === key);
   const ri = at('r'), xi = at('x'), di = at('deviation');
   if (ri !== 0 || xi !== 1 || di !== 2) notes.push(`the columns in the order ${order.map((o) => o.column.key).join(', ')}`);
@@ -85,7 +107,7 @@ export function readPoints(text) {
   const decimalComma = sep !== ',';
   let commas = false;
   const points = [];
-  for (let k = 1; k < lines.length; ++k) {
+  for (let k = first; k < lines.length; ++k) {
     const { n, text: l } = lines[k];
     const row = l.split(sep).map((c) => c.trim());
     while (row.length > 3 && row[row.length - 1] === '') row.pop();  // a trailing separator
@@ -112,17 +134,21 @@ export function readPoints(text) {
   if (largest > 0 && largest < POINTS_MM_SUSPECT_BELOW && order[di].scale === 1) {
     warnings.push({ kind: 'mm', text: `The largest |deviation| is ${Number(largest.toPrecision(3))} µm, below what a probe resolves: these look like mm. Write the header's unit as "deviation (mm)".` });
   }
-  return { points, notes, warnings };
+  return { points, notes, warnings, meta, skipped: skipped.map(({ n, text: t }) => ({ line: n, text: t })), skippedText: skippedText(skipped) };
 }
 
-// True when the text starts (after a BOM, blanks and comments) with a points header: the page
-// reads it as points rather than as a grid.
+// True when the text has a points header before its first line of numbers (after a BOM, blanks,
+// comments and a measuring machine's lines above the table): the page reads it as points rather
+// than as a grid.
 export function looksLikePoints(text) {
-  const first = text.slice(0, 4096).replace(/^\uFEFF/, '').split(/\r\n|\n|\r/).map((l) => l.trim())
-    .find((l) => l !== '' && !l.startsWith('#'));
-  if (!first) return false;
-  const cells = first.split(separatorOf(first)).map((c) => c.trim().toLowerCase());
-  return cells.some((c) => /^(deviation|dev)\b/.test(c)) && cells.some((c) => /^(r|radius)\b/.test(c));
+  const lines = text.slice(0, 4096).replace(/^\uFEFF/, '').split(/\r\n|\n|\r/).map((l) => l.trim())
+    .filter((l) => l !== '' && !l.startsWith('#'));
+  // Above the first line of numbers: a measuring machine's lines, then the header.
+  for (const l of lines) {
+    if (looksLikeHeader(l)) return true;
+    if (l.split(separatorOf(l)).filter((c) => Number.isFinite(toNumber(c.trim().replace(',', '.')))).length >= 2) return false;
+  }
+  return false;
 }
 
 // Points [[r, x, µm]...] as CSV with the header; `decimalComma` writes semicolons and decimal

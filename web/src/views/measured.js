@@ -11,6 +11,7 @@ import { chosenFileText } from '../io/files.js';
 import { tuningFor } from '../probe-noise.js';
 import { OPTION_FIELD } from '../correction-options.js';
 import { mountX3p } from './x3p.js';
+import { metaText } from '../io/preamble.js';
 
 const $ = (selector) => document.querySelector(selector);
 // The grid's and the locks' refusals; the correction's options show theirs at their inputs.
@@ -81,6 +82,42 @@ export function mountMeasured(store) {
   const show = (text) => { message.textContent = text; message.hidden = false; };
   const refuse = (text) => store.refuse({ field: 'measured', message: text });
 
+  // What is in use (issue 22): the measurement the results are from, {name, what, meta, text}, or
+  // null; kept as store.state.measuredSource for the record (the report: its name and the metadata
+  // its file carried, io/preamble.js). attempt: a measurement sent, in use once its result comes.
+  let inUse = null, attempt = null;
+  // A file refused: {note (the message beside the box), status (the status line's, once the
+  // measurement in use is computed again)}; the preview then says its text is the one in use.
+  let refusal = null;
+  const setInUse = (m) => { inUse = m; store.state.measuredSource = m && { name: m.name, what: m.what, meta: m.meta || {} }; };
+  const inUseAfter = (caseObject) => {
+    if (!caseObject.measured && !caseObject.measuredPoints) setInUse(null);
+    else if (attempt) setInUse(attempt);
+    else if (!inUse) {
+      setInUse(caseObject.measured
+        ? { name: 'the measured grid', what: `${caseObject.measured.length} × ${(caseObject.measured[0] || []).length} values`, text: box.value }
+        : { name: 'the measured points', what: `${caseObject.measuredPoints.length} points`, text: box.value });
+    }
+    attempt = null;
+  };
+  const inUseText = () => (inUse ? `In use: ${inUse.name} (${inUse.what}).` : 'In use: no measurement (the face simulated for the axes run).');
+  // A file the page or the calculator refused: the box gets back what it held before (the preview
+  // then shows what is in use), the message and the status say what was refused, why, and what is in use.
+  const refusedFile = (name, reason, boxBefore) => {
+    const lead = name.replace(/^the /, 'The ');  // a file's name as it is; "The grid in the box"
+    const note = `${lead} is refused: ${reason} ${inUseText()}`;
+    refusal = { note, status: `${lead} is refused (${inUse ? `${inUse.name} stays in use` : 'no measurement in use'}): ${reason}` };
+    if (boxBefore !== undefined && box.value !== boxBefore) {
+      box.value = boxBefore;
+      preview();
+    }
+  };
+  // The preview's lead when its text is the measurement in use beside a refusal ("In use, a.csv: ").
+  const lf = (text) => String(text).replace(/\r\n?/g, '\n');  // as the box keeps it
+  const inUseLabel = (text) => (refusal && inUse && lf(inUse.text) === lf(text) ? `In use, ${inUse.name}: ` : '');
+  // The record the file carried above its table, and what was skipped (io/preamble.js).
+  const recordOf = (read) => [metaText(read.meta), read.skippedText].filter(Boolean).map((t) => ` ${t}`).join('');
+
   const options = () => Object.fromEntries(ORIENT_OPTIONS.map((o) => [o, $(`[data-orient="${o}"]`).checked]));
   // The grid the text gives with the options ticked, checked against the grid now; throws.
   const gridOf = (text, t) => {
@@ -111,7 +148,7 @@ export function mountMeasured(store) {
     const ticked = options();
     const size = g ? `${g.length} × ${(g[0] || []).length} values` : '';
     $('#measured-read').textContent = read
-      ? `Read ${size}${read.notes.length ? `, with ${read.notes.join(', ')}` : ''}.${problem ? '' : ` Preview (µm, as it would be used${
+      ? `${inUseLabel(text)}Read ${size}${read.notes.length ? `, with ${read.notes.join(', ')}` : ''}.${recordOf(read)}${problem ? '' : ` Preview (µm, as it would be used${
         ticked.mm ? ', the values in mm multiplied by 1000' : ''}):`}`
       : '';
     if (!showWarnings(read, problem, ticked)) return;
@@ -133,7 +170,7 @@ export function mountMeasured(store) {
     const ticked = options();
     const used = read ? pointsOriented(read.points) : [];
     $('#measured-read').textContent = read
-      ? `Read a points file: ${read.notes.join(', ')}. Preview (r and x in mm, deviation in µm, as it would be used${
+      ? `${inUseLabel(text)}Read a points file: ${read.notes.join(', ')}.${recordOf(read)} Preview (r and x in mm, deviation in µm, as it would be used${
         ticked.mm ? ', the deviations in mm multiplied by 1000' : ''}):`
       : '';
     if (!showWarnings(read, problem, ticked)) return;
@@ -149,45 +186,70 @@ export function mountMeasured(store) {
   };
   let pending = null;
   const previewSoon = () => { clearTimeout(pending); pending = setTimeout(preview, 150); };
-  box.addEventListener('input', previewSoon);
+  box.addEventListener('input', () => { refusal = null; previewSoon(); });
   $('#measured-preview').addEventListener('change', preview);
   store.on('result', () => { if (!$('#measured-preview').hidden || box.value.trim() !== '') preview(); });
 
-  // The inputs before a points file was used: put back if the calculator refuses the points, so
-  // that nothing on screen is lost.
-  let beforePoints = null;
+  // The inputs before a measurement (points or grid) was used: put back if the calculator refuses
+  // it, so that the measurement in use stays in use and nothing on screen is lost.
+  let before = null;
   const withoutPoints = (extra) => {
     const { measuredPoints, ...rest } = extra || {};
     return rest;
   };
-  const use = (text) => {
+  const inputsBefore = (boxBefore) => ({ measured: store.state.measured, extra: structuredClone(store.state.extra), tuning: store.state.tuning, box: boxBefore });
+  // name: the file's, or undefined for the box's text; boxBefore: what the box held before the
+  // file, put back if the file is refused (the preview then shows what is in use).
+  const use = (text, name, boxBefore) => {
     const r = store.state.result;
     if (!r) { refuse('Compute a setup first, so that the grid is known.'); return; }
+    refusal = null;
     try {
       if (looksLikePoints(text)) {
-        const measuredPoints = pointsOriented(readPoints(text).points);
+        const read = readPoints(text);
+        const measuredPoints = pointsOriented(read.points);
         message.hidden = true;
-        beforePoints = { measured: store.state.measured, extra: structuredClone(store.state.extra), tuning: store.state.tuning };
+        attempt = { name: name || 'the points in the box', what: `${measuredPoints.length} points`, meta: read.meta, text };
+        before = inputsBefore(boxBefore);
         store.setInputs({ measured: null, extra: { ...store.state.extra, measuredPoints }, tuning: tuningFor(store.state.tuning, false) },
           { source: 'measured', force: true });
         store.emit('commit');
         return;
       }
-      const measured = gridOf(text, r.topography).grid;
+      const { read, grid: measured } = gridOf(text, r.topography);
       message.hidden = true;
+      attempt = { name: name || 'the grid in the box', what: `${measured.length} × ${(measured[0] || []).length} values`, meta: read.meta, text };
+      before = inputsBefore(boxBefore);
       store.setInputs({ measured, extra: withoutPoints(store.state.extra), tuning: tuningFor(store.state.tuning, false) },
         { source: 'measured', force: true });
       store.emit('commit');
     } catch (e) {
-      refuse(e.message);
+      if (name === undefined) { refuse(e.message); return; }
+      refuseNow(name, e.message, boxBefore);
     }
   };
+  // A file refused before anything is computed: the message and the status say so at once.
+  const refuseNow = (name, reason, boxBefore) => {
+    refusedFile(name, reason, boxBefore);
+    refuse(refusal.note);
+    store.setStatus(refusal.status, 'error');
+    refusal.status = null;
+  };
   let keepMessage = false;
+  // The calculator refused the measurement just sent (its points, or its grid: say, a value beyond
+  // 10 mm): the inputs before are computed again (recompute.js then sets no grid aside).
   store.on('refusal', ({ error, caseObject }) => {
-    if (!beforePoints || !caseObject || !caseObject.measuredPoints || !/^measuredPoints/.test(error.field || '')) return;
-    const back = beforePoints;
-    beforePoints = null;
+    if (!before || !caseObject) return;
+    const field = error.field || '';
+    const points = Boolean(caseObject.measuredPoints) && /^measuredPoints/.test(field);
+    const grid = Boolean(caseObject.measured) && /^measured(\[|$)/.test(field);
+    if (!points && !grid) return;
+    const { box: boxBefore, ...back } = before;
+    before = null;
     keepMessage = true;  // the refusal stays in view while the inputs before are computed again
+    refusedFile(attempt ? attempt.name : points ? 'the points in the box' : 'the grid in the box', error.message, boxBefore);
+    refusal.error = error;
+    attempt = null;
     store.setInputs(back, { source: 'measured', force: true });
   });
 
@@ -196,6 +258,7 @@ export function mountMeasured(store) {
   mountX3p(store, { take: (text) => { box.value = text; preview(); use(text); }, refuse });
   $('#use-measured').addEventListener('click', () => use(box.value));
   $('#clear-measured').addEventListener('click', () => {
+    refusal = null;
     box.value = '';
     message.hidden = true;
     preview();
@@ -203,36 +266,50 @@ export function mountMeasured(store) {
     store.emit('commit');
   });
   $('#measured-file').addEventListener('change', async (e) => {
+    const chosen = e.target.files[0];
     let file;
     try {
       file = await chosenFileText(e.target, MAX_MEASURED_BYTES, tooLargeMessage);
     } catch (err) {
-      refuse(err.message);
+      // Empty or too large: refused as a file (never an earlier file's note); "The file is empty."
+      const name = chosen.name;
+      refuseNow(name, err.message.startsWith(`${name} `) ? `The file ${err.message.slice(name.length + 1)}` : err.message);
       return;
     }
     if (!file) return;
+    // Too many values: refused as a file, before the text goes into the box (issue 22, item 4).
     const many = tooManyValues(file.text);
-    if (many) { refuse(`${file.name}: ${many}`); return; }
+    if (many) { refuseNow(file.name, many); return; }
+    const boxBefore = box.value;
     box.value = file.text;
     preview();
-    use(file.text);
+    use(file.text, file.name, boxBefore);
   });
 
-  store.on('refusal', ({ error }) => { if (isMeasuredField(error.field)) show(error.message); });
+  // A refused file's note where the refusal is that file's (the calculator's, or the note itself);
+  // any other refusal as it comes, never an earlier file's note.
+  store.on('refusal', ({ error }) => {
+    if (!isMeasuredField(error.field)) return;
+    show(refusal && (refusal.error === error || refusal.note === error.message) ? refusal.note : error.message);
+  });
   // An undo step puts its grid into the box, if it has another grid than the one used now.
   let used = null;
   store.on('inputs', (_, state) => { used = state.measured; });
   store.on('restore', (_, state) => {
     if (JSON.stringify(state.measured) !== JSON.stringify(used)) {
+      setInUse(null);  // named again by the result (inUseAfter)
       box.value = state.measured ? measuredText(state.measured) : '';
       message.hidden = true;
     }
     used = state.measured;
   });
   store.on('result', ({ result, caseObject }) => {
-    if (caseObject.measuredPoints) beforePoints = null;
-    if ((caseObject.measured || caseObject.measuredPoints) && !keepMessage) message.hidden = true;
+    if (caseObject.measured || caseObject.measuredPoints) before = null;
+    if ((caseObject.measured || caseObject.measuredPoints) && !keepMessage) { message.hidden = true; refusal = null; }
     keepMessage = false;
+    inUseAfter(caseObject);
+    // A refused file: the status says so over the "Updated" of the measurement in use computed again.
+    if (refusal && refusal.status) { store.setStatus(refusal.status, 'error'); refusal.status = null; }
     $('#grid-shape').textContent = `${result.topography.r.length} rows × ${result.topography.x.length} values`;
     renderVerdict(result);
   });

@@ -22,7 +22,7 @@ export function mountStatus(store) {
   const kept = () => (store.state.result ? ' The results below are from the last good input.' : '');
   store.on('result', ({ ms }) => store.setStatus(updatedText(ms), 'ok'));
   store.on('refusal', ({ error, caseObject }) => {
-    const what = caseObject ? 'Not computed' : 'Measured grid not used';
+    const what = caseObject ? 'Not computed' : 'Measurement not used';
     store.setStatus(`${what}: ${worded(error).text}${kept()}`, 'error');
     if (error.code === 'Timeout') store.setNotice(`${error.message}${kept()} Change an input to compute again.`);
   });

@@ -40,6 +40,8 @@ export function mountWheelInput(store) {
       if (!chosen) return;
       imported = readWheelCsv(chosen.text);
     } catch (e) {
+      // An earlier file's "Read ..." note would seem to be this file's: gone (#wheel-source says what is in use).
+      $('#wheel-read').textContent = '';
       setError(`${chosen ? `${chosen.name}: ` : ''}${e.message} The wheel in use is unchanged.`);
       return;
     }
