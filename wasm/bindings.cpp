@@ -223,6 +223,7 @@ val limits() {
   grid.set("axial", kDefaultGridAxial);
   o.set("defaultGrid", grid);
   o.set("wheelProfilePoints", kWheelProfilePoints);
+  o.set("maxWheelPoints", kMaxWheelPoints);
   val axes = val::array();
   for (Axis a : kAxes) {
     val x = val::object();

@@ -403,6 +403,9 @@ Outcome<std::optional<WheelPointsInput>> readWheelPoints(const Node& wheel, cons
     if (!v) return refuse(o->field(name), "is missing.");
     HOBSHARP_ASSIGN(*target, readNumbers(*v, o->field(name)));
   }
+  if (in.R.size() > static_cast<size_t>(kMaxWheelPoints))
+    return refuse(o->field("R"), "has " + std::to_string(in.R.size()) + " points; at most " +
+                                     std::to_string(kMaxWheelPoints) + " are taken (a dressed wheel's profile has a few hundred).");
   if (in.values.size() != in.R.size())
     return refuse(o->field(values), "needs one value per radius in " + o->field("R") + " (" +
                                         std::to_string(in.R.size()) + "); got " + std::to_string(in.values.size()) + ".");

@@ -21,7 +21,7 @@ function refused(c, field, message) {
 
 test('limits() has the documented form, every value from the module', () => {
   assert.deepEqual(Object.keys(limits), ['format', 'maxGridLines', 'gridTolerance', 'degree', 'defaultGrid',
-    'wheelProfilePoints', 'axes', 'motionUnits', 'correction', 'inspection']);
+    'wheelProfilePoints', 'maxWheelPoints', 'axes', 'motionUnits', 'correction', 'inspection']);
   assert.equal(limits.format, paper().format);
   assert.equal(limits.maxGridLines, 201);
   assert.deepEqual(limits.degree, { min: 1, max: 6, default: 4 });
@@ -45,6 +45,29 @@ test('maxGridLines lines are taken in each direction, one more is refused', () =
     c.grid[dir] = n + 1;
     refused(c, `grid.${dir}`, new RegExp(`from 2 to ${n}; got ${n + 1}`));
   }
+});
+
+// A wheel's profile of maxWheelPoints points is read; one more is refused before the wheel is
+// fitted (it would take seconds, and near 12,000 points more memory than the module has). The
+// page's wheel-file reader counts against the same number.
+test('maxWheelPoints points of a wheel are read, one more is refused; the page reads the same limit', async () => {
+  const { MAX_WHEEL_POINTS } = await import('../../web/src/io/wheel-import.js');
+  assert.equal(limits.maxWheelPoints, 2000);
+  assert.equal(MAX_WHEEL_POINTS, limits.maxWheelPoints);
+  const wheel = (n) => {
+    const c = paper();
+    const R = Array.from({ length: n }, (_, i) => 30 + 20 * i / (n - 1));
+    c.wheel = { ...c.wheel, profileOffset: { R, offset: R.map(() => 0) } };
+    return c;
+  };
+  refused(wheel(limits.maxWheelPoints + 1), 'wheel.profileOffset.R', /has 2001 points; at most 2000 are taken/);
+  let message = '';
+  try {
+    hobsharp.evaluate(wheel(limits.maxWheelPoints));
+  } catch (e) {
+    message = e.message;  // the contact range, say: anything but the count
+  }
+  assert.doesNotMatch(message, /are taken/);
 });
 
 test('a grid may reach gridTolerance past the gash root, no further', () => {
