@@ -23,18 +23,25 @@ async function startClock(page, selector) {
 }
 const sinceChosen = (page) => page.evaluate(() => performance.now() - window.chosenAt);
 
-// The page's own time from a click on Cancel to the page saying the computation was cancelled
-// (the status or the notice), ms.
-async function clickCancel(page) {
+// Cancel, clicked in the page the moment it shows (a computation of a second shows it for a few
+// hundred ms, which Playwright's polling can miss), during `action`: the page's own time from the
+// click to the page saying the computation was cancelled (the status or the notice), ms.
+async function cancelWhenShown(page, action) {
   await page.evaluate(() => {
     window.cancelClickedAt = undefined; window.cancelSaidAt = undefined;
-    document.querySelector('#cancel-computation').addEventListener('click', () => { window.cancelClickedAt = performance.now(); }, { capture: true, once: true });
+    const button = document.querySelector('#cancel-computation');
     const said = () => /cancelled/i.test(document.querySelector('#status').textContent + document.querySelector('#notice-text').textContent);
-    const observer = new MutationObserver(() => { if (window.cancelClickedAt !== undefined && said()) { window.cancelSaidAt = performance.now(); observer.disconnect(); } });
-    observer.observe(document.querySelector('#status-bar'), { subtree: true, childList: true, characterData: true });
+    const observer = new MutationObserver(() => {
+      if (window.cancelClickedAt === undefined && !button.hidden) {
+        window.cancelClickedAt = performance.now();
+        button.click();
+      }
+      if (window.cancelClickedAt !== undefined && said()) { window.cancelSaidAt = performance.now(); observer.disconnect(); }
+    });
+    observer.observe(document.body, { subtree: true, childList: true, characterData: true, attributes: true, attributeFilter: ['hidden'] });
   });
-  await page.click('#cancel-computation');
-  await page.waitForFunction(() => window.cancelSaidAt !== undefined);
+  await action();
+  await page.waitForFunction(() => window.cancelSaidAt !== undefined, null, { timeout: 10000 });
   return page.evaluate(() => window.cancelSaidAt - window.cancelClickedAt);
 }
 
@@ -97,7 +104,8 @@ test('a grid CSV of 990,000 rows is refused at once naming the line and the limi
   await afterError(page, () => page.setInputFiles('#measured-file', file('long.csv', longGridCsv(990000))));
   const ms = await sinceChosen(page);
   assert.equal(await page.inputValue('#measured-csv'), '', 'the text did not go into the box');
-  assert.match(await page.textContent('#measured-error'), /^long\.csv: Line 50,001: the text holds more than 50,000 values; a measured grid has at most 201 × 201, 40,804 with its positions\. Is this the right file\?$/);
+  // Refused as a file, as every refused measurement file is (issue 22, item 3): its name, why, and what stays in use.
+  assert.match(await page.textContent('#measured-error'), /^long\.csv is refused: Line 50,001: the text holds more than 50,000 values; a measured grid has at most 201 × 201, 40,804 with its positions\. Is this the right file\? In use: no measurement/);
   assert.ok(ms < 2000, `refused after ${ms} ms`);
   assert.ok(await longestTask(page) < 1000, `the page's thread was busy ${await longestTask(page)} ms at a stretch`);
   // Pasted into the box: refused the same, nothing inserted.
@@ -189,18 +197,17 @@ test('a loaded case is evaluated once; a slow computation shows Cancel, which re
   const before = await count(page, 'evaluations');
   await afterResult(page, () => page.setInputFiles('#load-case', file('job.json', JSON.stringify(c))));
   assert.equal(await count(page, 'evaluations') - before, 1, 'one evaluation per load');
-  // A slow case: a measured 201 x 201 grid at degree 6 (3 s in Node).
+  // A slow case: a measured 201 x 201 grid at degree 6 with the wheel corrected too (1 to 3 s in
+  // Node, with the machine's load).
   const slow = structuredClone(paper);
   slow.degree = 6;
+  slow.correction = { ...slow.correction, wheel: true };
   slow.grid = { ...slow.grid, radial: 201, axial: 201 };
   const axes = hobsharp.evaluate(slow).axes;
   axes.Z[0] += 0.01;
   slow.measured = hobsharp.evaluate({ ...slow, axes }).topography.normal;
   // Cancelled while the loaded case is checked: nothing changes.
-  await page.setInputFiles('#load-case', file('slow.json', JSON.stringify(slow)));
-  await page.waitForSelector('#cancel-computation', { state: 'visible', timeout: 5000 });
-  await page.screenshot({ path: path.join(shots, 'cancel-visible.png') });
-  const firstCancelMs = await clickCancel(page);
+  const firstCancelMs = await cancelWhenShown(page, () => page.setInputFiles('#load-case', file('slow.json', JSON.stringify(slow))));
   assert.ok(firstCancelMs < 1000, `cancelled after ${firstCancelMs} ms`);
   assert.equal(await page.textContent('#notice-text'), 'slow.json: The computation was cancelled. Nothing was changed.');
   assert.ok(await page.isHidden('#cancel-computation'));
@@ -215,9 +222,7 @@ test('a loaded case is evaluated once; a slow computation shows Cancel, which re
   // Cancelled while an edit computes: the last result stays, and the status says so.
   const results = await count(page, 'results');
   evaluations = await count(page, 'evaluations');
-  await page.fill('[data-field="setup.tilt"]', '15.75');
-  await page.waitForSelector('#cancel-computation', { state: 'visible', timeout: 5000 });
-  const cancelMs = await clickCancel(page);
+  const cancelMs = await cancelWhenShown(page, () => page.fill('[data-field="setup.tilt"]', '15.75'));
   assert.equal(await count(page, 'cancelled'), 1);
   assert.ok(cancelMs < 1000, `cancelled after ${cancelMs} ms`);
   assert.equal(await count(page, 'results'), results, 'no result for the cancelled inputs');

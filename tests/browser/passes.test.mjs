@@ -156,7 +156,7 @@ test('a saved history that no longer fits the grid is left out, the rest loads, 
   const axes = { X: [22.4003, 139.5089, 0, 0, 0], Y: [39.3076, 0, 0, 0, 0], Z: [-116.446, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.220365, 0, 0, 0, 0] };
   const c = { ...paper, axes, passes: [{ axes, measured: Array.from({ length: 4 }, () => Array(9).fill(1)) }] };
   const page = await openPage(`${base}#case=${encodeURIComponent(JSON.stringify(c))}`, desk);
-  assert.match(await page.textContent('#notice-text'), /history of grinding passes is left out: passes\[0\]\.measured: needs grid\.radial = 5 rows/);
+  assert.match(await page.textContent('#notice-text'), /history of grinding passes is left out: Pass 1, measured grid: needs 5 rows/);
   assert.equal(await page.isVisible('#run-axes'), true, 'the rest of the case is loaded');
   assert.equal(await page.isHidden('#pass-history'), true);
   await page.context().close();
