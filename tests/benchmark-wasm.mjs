@@ -6,7 +6,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { loadHobSharp } from '../wasm/hobsharp.mjs';
-import { readPoints } from '../web/src/io/points-import.js';
+import { readPoints } from '../wasm/lib/points-csv.js';
 
 const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..');
 const nativeFile = process.argv[2];
@@ -53,7 +53,7 @@ const gearCase = { ...inspectionCase, hob: { ...inspectionCase.hob, gashes: 12, 
 
 const best = (f, runs, repeats = 5) => Math.min(...Array.from({ length: repeats }, () => f(runs)));
 // Reading and correcting 2,000 measured points (docs/measured-points.md): the page's and the
-// CLI's reader (web/src/io/points-import.js) on tests/data/points-2000.csv, plus evaluate() in the module.
+// CLI's reader (wasm/lib/points-csv.js) on tests/data/points-2000.csv, plus evaluate() in the module.
 const pointsCsv = readFileSync(path.join(root, 'tests', 'data', 'points-2000.csv'), 'utf8');
 const pointsCase = { ...paper, measuredPoints: readPoints(pointsCsv).points };
 const readPointsMs = best((n) => {

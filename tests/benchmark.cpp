@@ -130,7 +130,7 @@ void InspectionPaperCase(benchmark::State& state) {
 
 // Reading and correcting a 2,000-point measurement (docs/measured-points.md): the points CSV
 // tests/data/points-2000.csv read (a plain reader here: the page's and the CLI's reader is
-// web/src/io/points-import.js, timed in the wasm benchmark), the job resolved, and evaluated: the
+// wasm/lib/points-csv.js, timed in the wasm benchmark), the job resolved, and evaluated: the
 // face simulated at the points, the default correction, the grid views re-simulated.
 std::vector<MeasuredPoint> readPointsCsv(const std::string& text) {
   std::vector<MeasuredPoint> out;

@@ -1,10 +1,10 @@
-// The command line's X3P options (wasm/cli.mjs; the container is web/src/io/x3p.js):
+// The command line's X3P options (wasm/cli.mjs; the container is wasm/lib/x3p.js):
 //   --measured-x3p FILE   the measured grid read from an ISO 5436-2 .x3p into the case (it takes
 //                         the place of the case's `measured`), checked against the case's grid;
 //   --x3p-out PREFIX      the result's topographies written as PREFIX-measured.x3p and
 //                         PREFIX-predicted.x3p (with a measurement), or PREFIX-simulated.x3p.
 import { readFileSync, writeFileSync } from 'node:fs';
-import { readX3p, writeX3p, x3pOnGrid, x3pTopographies } from '../web/src/io/x3p.js';
+import { readX3p, writeX3p, x3pOnGrid, x3pTopographies } from './lib/x3p.js';
 
 export const X3P_USAGE = '[--measured-x3p file.x3p] [--x3p-out prefix]';
 

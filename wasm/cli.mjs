@@ -3,7 +3,7 @@
 // exactly as the C++ writer wrote it (core/result_model.h). On bad input it prints the message on
 // stderr and exits with 1 (2 for a usage error).
 //   --points file.csv    the measurement as the measuring machine's points (docs/measured-points.md;
-//                        web/src/io/points-import.js): replaces the case's `measured` and
+//                        wasm/lib/points-csv.js): replaces the case's `measured` and
 //                        `measuredPoints`
 //   --points-out prefix  writes prefix-measured.csv and prefix-predicted.csv: the measured points
 //                        and the face predicted after the correction at them (needs --points or
@@ -15,11 +15,11 @@
 // topographies as .x3p files.
 import { readFileSync, writeFileSync } from 'node:fs';
 import { loadHobSharp } from './hobsharp.mjs';
-import { pointsToCsv, readPoints } from '../web/src/io/points-import.js';
+import { pointsToCsv, readPoints } from './lib/points-csv.js';
 import { X3P_USAGE, caseWithMeasuredX3p, takeX3pOptions, writeResultX3p } from './cli-x3p.mjs';
 import { NC_DIALECTS } from './lib/nc-program.js';
-import { setModuleLimits } from '../web/src/limits.js';
-import { programFor } from '../web/src/machine-axes.js';
+import { setModuleLimits } from './lib/limits.js';
+import { programFor } from './lib/axes-to-run.js';
 
 const usage = (why = '') => {
   process.stderr.write(`${why}usage: node wasm/cli.mjs case.json [--points points.csv] [--points-out prefix] [--nc ${NC_DIALECTS.join('|')}] ${X3P_USAGE}\n`);
@@ -92,7 +92,7 @@ try {
   }
   writeResultX3p(JSON.parse(json), caseText, x3p).forEach((f) => process.stderr.write(`wrote ${f}\n`));
   if (nc) {
-    // The program of the axes the page shows under "Axes to run" (web/src/machine-axes.js).
+    // The program of the axes the page shows under "Axes to run" (wasm/lib/axes-to-run.js).
     const limits = hobsharp.limits();
     setModuleLimits(limits);
     const program = programFor(JSON.parse(json), JSON.parse(caseText), nc, { digits: limits.correction.coefficientDigits });

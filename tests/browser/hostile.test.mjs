@@ -8,7 +8,7 @@ import path from 'node:path';
 import { unzipSync } from 'fflate';
 import { afterError, afterResult, base, count, openPage, plotted, root, shots, useBrowser } from './support.mjs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
-import { writeX3p } from '../../web/src/io/x3p.js';
+import { writeX3p } from '../../wasm/lib/x3p.js';
 import { longGridCsv, runOnX3p, wheelCsv } from '../js/hostile-files.mjs';
 
 useBrowser();

@@ -7,7 +7,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { afterError, afterResult, base, colours, openPage, plotted, root, shots, useBrowser } from './support.mjs';
-import { readWheelCsv } from '../../web/src/io/wheel-import.js';
+import { readWheelCsv } from '../../wasm/lib/wheel-csv.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 
 useBrowser();

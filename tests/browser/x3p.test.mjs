@@ -1,4 +1,4 @@
-// The topography as an ISO 5436-2 X3P file in the page (views/x3p.js, io/x3p.js): export the
+// The topography as an ISO 5436-2 X3P file in the page (views/x3p.js, wasm/lib/x3p.js): export the
 // measured and the predicted topography, read the measured one back through the preview, and a
 // refused file (a wrong MD5, garbage, an XML bomb, a zip without main.xml, another grid) leaves the
 // box, the results and the verdict as they were.
@@ -10,7 +10,7 @@ import { createHash } from 'node:crypto';
 import { unzipSync, zipSync, strToU8, strFromU8 } from 'fflate';
 import { afterError, afterResult, base, openPage, root, shots, useBrowser } from './support.mjs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
-import { readX3p, writeX3p } from '../../web/src/io/x3p.js';
+import { readX3p, writeX3p } from '../../wasm/lib/x3p.js';
 
 useBrowser();
 

@@ -51,7 +51,7 @@ test('maxGridLines lines are taken in each direction, one more is refused', () =
 // fitted (it would take seconds, and near 12,000 points more memory than the module has). The
 // page's wheel-file reader counts against the same number.
 test('maxWheelPoints points of a wheel are read, one more is refused; the page reads the same limit', async () => {
-  const { MAX_WHEEL_POINTS } = await import('../../web/src/io/wheel-import.js');
+  const { MAX_WHEEL_POINTS } = await import('../../wasm/lib/wheel-csv.js');
   assert.equal(limits.maxWheelPoints, 2000);
   assert.equal(MAX_WHEEL_POINTS, limits.maxWheelPoints);
   const wheel = (n) => {

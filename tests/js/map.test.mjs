@@ -1,7 +1,7 @@
 // The maps hold: every file or folder that README.md, core/README.md and docs/*.md name exists,
 // and every relative link in them reaches a file (and, for a heading, that heading).
 // Checked: links [text](path#anchor) and ![alt](path), relative to the page; and paths in
-// backticks, `core/gear/` or `web/src/io/x3p.js`, relative to the repository when their first
+// backticks, `core/gear/` or `wasm/lib/x3p.js`, relative to the repository when their first
 // folder is one of the repository's, or, as the pages name them for short, under the page's own
 // folder (`inspection/indicator.py` in docs/), web/src/ (`views/report.js`) or core/
 // (`grinding/envelope.h`).

@@ -10,9 +10,10 @@ import { readFileSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
-import { setModuleLimits } from '../../web/src/limits.js';
+import { setModuleLimits } from '../../wasm/lib/limits.js';
 import { NC_DIALECTS, heidenhainK, ncProgram, sinumerikReal } from '../../wasm/lib/nc-program.js';
-import { axesToRun, coefficientsText, machineCoefficients, positionsCsv, programFor, programNote } from '../../web/src/machine-axes.js';
+import { coefficientsText, positionsCsv, programNote } from '../../web/src/machine-axes.js';
+import { axesToRun, machineCoefficients, programFor } from '../../wasm/lib/axes-to-run.js';
 import { AXES, readHeidenhain, readSinumerik } from './nc-interpreter.mjs';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));

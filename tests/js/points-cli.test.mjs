@@ -9,7 +9,7 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
-import { readPoints } from '../../web/src/io/points-import.js';
+import { readPoints } from '../../wasm/lib/points-csv.js';
 
 const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const paperFile = path.join(root, 'tests', 'data', 'tab1.json');

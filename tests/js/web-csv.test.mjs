@@ -1,9 +1,9 @@
-// Measured grids as CSV (web/src/io/csv.js): what the paste box and the upload accept and refuse.
+// Measured grids as CSV (wasm/lib/csv.js): what the paste box and the upload accept and refuse.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { MAX_MEASURED_BYTES, gridToCsv, measuredText } from '../../web/src/io/csv.js';
-import { parseMeasuredCsv } from '../../web/src/io/measured-import.js';
-import { nestingDepth } from '../../web/src/io/nesting.js';
+import { MAX_MEASURED_BYTES, gridToCsv, measuredText } from '../../wasm/lib/csv.js';
+import { parseMeasuredCsv } from '../../wasm/lib/measured-grid.js';
+import { nestingDepth } from '../../wasm/lib/nesting.js';
 
 const grid = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (_, j) => Math.round((i - 2) * (j - 4) * 1000) / 1000 + 0.125));
 

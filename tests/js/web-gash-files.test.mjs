@@ -1,8 +1,8 @@
-// One CSV file per gash (web/src/io/gash-files.js): gash order by file name, each a measured grid
+// One CSV file per gash (wasm/lib/gash-files.js): gash order by file name, each a measured grid
 // of the grid's shape, a file that does not fit named.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readGashTopographies } from '../../web/src/io/gash-files.js';
+import { readGashTopographies } from '../../wasm/lib/gash-files.js';
 
 const grid = { r: [20, 30], x: [-10, 0, 10] };
 const csv = (d) => `${d}, ${d}, ${d}\n${d + 1}, ${d + 1}, ${d + 1}\n`;

@@ -3,10 +3,10 @@
 // some 100,000 arguments before the stack overflows).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { MAX_WHEEL_POINTS, readWheelCsv, wheelSource } from '../../web/src/io/wheel-import.js';
-import { MAX_GRID_VALUES } from '../../web/src/io/csv.js';
-import { readMeasured } from '../../web/src/io/measured-import.js';
-import { setModuleLimits } from '../../web/src/limits.js';
+import { MAX_WHEEL_POINTS, readWheelCsv, wheelSource } from '../../wasm/lib/wheel-csv.js';
+import { MAX_GRID_VALUES } from '../../wasm/lib/csv.js';
+import { readMeasured } from '../../wasm/lib/measured-grid.js';
+import { setModuleLimits } from '../../wasm/lib/limits.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { longGridCsv, wheelCsv } from './hostile-files.mjs';
 
@@ -51,7 +51,7 @@ test('a grid CSV of 990,000 rows is refused naming the line where the values run
 });
 
 test('101 per-gash files are refused by their count, naming it and the most the calculator takes, before any is read', async () => {
-  const { readGashTopographies, checkGashFileCount } = await import('../../web/src/io/gash-files.js');
+  const { readGashTopographies, checkGashFileCount } = await import('../../wasm/lib/gash-files.js');
   const files = Array.from({ length: 101 }, (_, k) => ({ name: `gash-${k + 1}.csv`, get text() { throw new Error('read'); } }));
   const small = { r: [20, 30], x: [-10, 0, 10] };
   assert.throws(() => readGashTopographies(files, small), /^Error: 101 files chosen, one per gash; a hob has at most 100 gashes\.$/);

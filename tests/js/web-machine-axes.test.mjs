@@ -6,7 +6,8 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { setModuleLimits } from '../../web/src/limits.js';
-import { axisPositions, coefficientsText, machineCoefficients, machineUnit, positionsCsv, programmed, roundedFiguresText } from '../../web/src/machine-axes.js';
+import { axisPositions, coefficientsText, machineUnit, positionsCsv, programmed, roundedFiguresText } from '../../web/src/machine-axes.js';
+import { machineCoefficients } from '../../wasm/lib/axes-to-run.js';
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
 const hobsharp = await loadHobSharp();

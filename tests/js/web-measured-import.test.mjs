@@ -1,9 +1,9 @@
-// A measured grid as real files bring it (web/src/io/measured-import.js): the page's own export
+// A measured grid as real files bring it (wasm/lib/measured-grid.js): the page's own export
 // with its positions, semicolons with decimal commas, values in mm by mistake, a transposed grid,
 // and the orientation options of the preview.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { orient, readMeasured, checkShape } from '../../web/src/io/measured-import.js';
+import { orient, readMeasured, checkShape } from '../../wasm/lib/measured-grid.js';
 import { resultsCsv } from '../../web/src/io/results-csv.js';
 import { setModuleLimits } from '../../web/src/limits.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';

@@ -1,9 +1,9 @@
-// A measurement at the measuring machine's points as CSV (web/src/io/points-import.js): the header
+// A measurement at the measuring machine's points as CSV (wasm/lib/points-csv.js): the header
 // with units, the accepted spellings, semicolons with decimal commas, a BOM; malformed files
 // refused naming the line; the written CSV reads back to the same points.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { POINTS_HEADER, looksLikePoints, pointsToCsv, readPoints } from '../../web/src/io/points-import.js';
+import { POINTS_HEADER, looksLikePoints, pointsToCsv, readPoints } from '../../wasm/lib/points-csv.js';
 
 const points = [[19.125, -70.5, 1.25], [20, 0, -2.5e-3], [33.333333333333336, 12.0625, 0.1 + 0.2], [25, -1e-9, 1234.5]];
 

@@ -1,15 +1,15 @@
 // A measuring machine's files with lines above the table (issue 22, item 3): the grid and points
 // readers find the table, keep the date, part and operator they recognise (English and German) and
-// say what they skipped; the CLI reads the same points file (it shares web/src/io/points-import.js).
+// say what they skipped; the CLI reads the same points file (it shares wasm/lib/points-csv.js).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { metaOf, metaText, skippedText } from '../../web/src/io/preamble.js';
-import { looksLikePoints, readPoints } from '../../web/src/io/points-import.js';
-import { readMeasured } from '../../web/src/io/measured-import.js';
+import { metaOf, metaText, skippedText } from '../../wasm/lib/preamble.js';
+import { looksLikePoints, readPoints } from '../../wasm/lib/points-csv.js';
+import { readMeasured } from '../../wasm/lib/measured-grid.js';
 
 const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 const data = (name) => readFileSync(path.join(root, 'tests', 'data', name), 'utf8');

@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { profileCsv, resultsCsv, resultsFileName } from '../../web/src/io/results-csv.js';
-import { readMeasured } from '../../web/src/io/measured-import.js';
+import { readMeasured } from '../../wasm/lib/measured-grid.js';
 import { setModuleLimits } from '../../web/src/limits.js';
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));

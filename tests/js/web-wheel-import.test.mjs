@@ -1,8 +1,8 @@
-// A wheel's points as files come (web/src/io/wheel-import.js), the dresser path the page writes
+// A wheel's points as files come (wasm/lib/wheel-csv.js), the dresser path the page writes
 // (io/results-csv.js dresserCsv), and the offsets Fig. 4 shows on its µm scale (wheel-offsets.js).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readWheelCsv, wheelSource, withWheelPoints } from '../../web/src/io/wheel-import.js';
+import { readWheelCsv, wheelSource, withWheelPoints } from '../../wasm/lib/wheel-csv.js';
 import { dresserCsv, profileCsv } from '../../web/src/io/results-csv.js';
 import { offsetRange, wheelOffsetCurves } from '../../web/src/wheel-offsets.js';
 

@@ -10,7 +10,7 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { unzipSync, zipSync, strToU8 } from 'fflate';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
-import { readX3p } from '../../web/src/io/x3p.js';
+import { readX3p } from '../../wasm/lib/x3p.js';
 import { runOnX3p } from './hostile-files.mjs';
 
 const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');

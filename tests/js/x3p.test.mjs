@@ -1,4 +1,4 @@
-// The topography as an ISO 5436-2 X3P container (web/src/io/x3p.js): the round trip, the
+// The topography as an ISO 5436-2 X3P container (wasm/lib/x3p.js): the round trip, the
 // container as md5sum and the openGPS schema's element names have it, and every malformed file
 // refused with a message naming the file or element.
 import { test } from 'node:test';
@@ -9,8 +9,8 @@ import { unzipSync, zipSync, strToU8, strFromU8 } from 'fflate';
 import {
   readX3p, writeX3p, x3pOnGrid, x3pGridCsv, x3pTopographies, metresToMicrons, md5Hex,
   MAIN_FILE, DATA_FILE, CHECKSUM_FILE, X3P_NAMESPACE,
-} from '../../web/src/io/x3p.js';
-import { readMeasured } from '../../web/src/io/measured-import.js';
+} from '../../wasm/lib/x3p.js';
+import { readMeasured } from '../../wasm/lib/measured-grid.js';
 import { runOnX3p, zipWithStream } from './hostile-files.mjs';
 
 const grid = { r: [19, 24.25, 29.5, 34.75, 40], x: [-70, -52.5, -35, -17.5, 0, 17.5, 35, 52.5, 70] };

@@ -1,5 +1,6 @@
 // Formatting: every number on the page goes through these; nothing that is not finite is shown.
 import { superscript } from './limits.js';
+import { fixed } from '../../wasm/lib/number-text.js';
 
 export function fmt(v, significant = 7) {
   if (typeof v !== 'number' || !Number.isFinite(v)) return '—';
@@ -9,12 +10,8 @@ export function fmt(v, significant = 7) {
   return String(Number(v.toPrecision(significant)));
 }
 
-// v with `digits` decimals; a value that rounds to zero is "0.000", never "-0.000".
-export function fixed(v, digits) {
-  if (typeof v !== 'number' || !Number.isFinite(v)) return '—';
-  const text = v.toFixed(digits);
-  return Number(text) === 0 ? (0).toFixed(digits) : text;
-}
+// v with `digits` decimals, never "-0.000" (wasm/lib/number-text.js, shared with the file writers).
+export { fixed };
 
 // The same with a + on a positive value (one that does not round to zero).
 export function signed(v, digits) {

@@ -6,8 +6,8 @@
 // thresholds, the grinding passes, the what-if offsets of its page member. A pass history that
 // alone is refused (it no longer fits the grid, say) is left out the same way.
 import { CASE_FORMAT } from './limits.js';
-import { measuredText } from './io/csv.js';
-import { MAX_CASE_DEPTH, nestingDepth } from './io/nesting.js';
+import { measuredText } from '../../wasm/lib/csv.js';
+import { MAX_CASE_DEPTH, nestingDepth } from '../../wasm/lib/nesting.js';
 import { calculatorCase, inputsFromCase, readPage } from './io/case-state.js';
 import { caseOf } from './store.js';
 import { canonicalJson } from './client.js';

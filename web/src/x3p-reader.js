@@ -1,8 +1,8 @@
 // An .x3p read off the page's thread (x3p-worker.js), checked against the face grid: resolves to
-// {notes, values} (io/x3p.js readX3p and x3pOnGrid), rejects with the reader's Error. Each file
+// {notes, values} (wasm/lib/x3p.js readX3p and x3pOnGrid), rejects with the reader's Error. Each file
 // gets a worker of its own, ended when it answers. A page opened from disk may not start a worker
 // from a file, and reads there (the reader stops a runaway file at its declared size).
-import { readX3p, x3pOnGrid } from './io/x3p.js';
+import { readX3p, x3pOnGrid } from '../../wasm/lib/x3p.js';
 
 export function readX3pOffPage(bytes, grid) {
   if (location.protocol === 'file:') {

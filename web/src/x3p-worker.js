@@ -1,7 +1,7 @@
 // The X3P reader's worker (bundled by esbuild as x3p-worker.js beside app.js): an .x3p is read
 // here, off the page's thread, so that a large or hostile file never freezes the page
 // (x3p-reader.js starts one per file). Posts {ok, notes, values} or {ok: false, message}.
-import { readX3p, x3pOnGrid } from './io/x3p.js';
+import { readX3p, x3pOnGrid } from '../../wasm/lib/x3p.js';
 
 self.onmessage = ({ data: { bytes, grid } }) => {
   try {

@@ -80,7 +80,7 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   grid('simulated circular deviation (µm at the mean radius)', r.topography.circular);
   if (c) grid('predicted normal deviation after correction (µm)', c.residual);
   // At the measuring machine's points (docs/measured-points.md): each block reads back as a
-  // points CSV (io/points-import.js), its title line a comment.
+  // points CSV (wasm/lib/points-csv.js), its title line a comment.
   const points = (title, list) => {
     lines.push('', `# ${title}`, row('r (mm)', 'x (mm)', 'deviation (µm)'));
     for (const p of list) lines.push(row(...p));
@@ -101,7 +101,7 @@ export function profileCsv(r) {
 }
 
 // The dresser path: the wheel's axial profile after the proposed offset (correction.dresserPath),
-// in the frame of the profile points; read back by io/wheel-import.js as a measured wheel.
+// in the frame of the profile points; read back by wasm/lib/wheel-csv.js as a measured wheel.
 export function dresserCsv(r) {
   const d = r.correction.dresserPath;
   const rows = ['# dresser path: the wheel axial profile with the proposed offset dressed (HobSharp correction.dresserPath)',

@@ -6,7 +6,8 @@
 import { AXES, CORRECTION } from '../limits.js';
 import { fieldUnit } from '../result-fields.js';
 import { download } from '../io/files.js';
-import { axesToRun, axisPositions, coefficientsText, machineCoefficients, machineUnit, positionsCsv, programFor, programNote, programmed, roundedFiguresText } from '../machine-axes.js';
+import { axisPositions, coefficientsText, machineUnit, positionsCsv, programNote, programmed, roundedFiguresText } from '../machine-axes.js';
+import { axesToRun, machineCoefficients, programFor } from '../../../wasm/lib/axes-to-run.js';
 
 const $ = (selector) => document.querySelector(selector);
 

@@ -3,15 +3,15 @@
 // the probe's noise (web/src/probe-noise.js).
 import { predictionText, verdictText } from '../words.js';
 import { fieldMeaning, fieldUnit } from '../result-fields.js';
-import { MAX_MEASURED_BYTES, measuredText, tooLargeMessage } from '../io/csv.js';
-import { ORIENT_OPTIONS, checkGridValueCount, checkShape, orient, readMeasured } from '../io/measured-import.js';
-import { looksLikePoints, readPoints } from '../io/points-import.js';
+import { MAX_MEASURED_BYTES, measuredText, tooLargeMessage } from '../../../wasm/lib/csv.js';
+import { ORIENT_OPTIONS, checkGridValueCount, checkShape, orient, readMeasured } from '../../../wasm/lib/measured-grid.js';
+import { looksLikePoints, readPoints } from '../../../wasm/lib/points-csv.js';
 import { escapeHtml, fixed } from '../format.js';
 import { chosenFileText } from '../io/files.js';
 import { tuningFor } from '../probe-noise.js';
 import { OPTION_FIELD } from '../correction-options.js';
 import { mountX3p } from './x3p.js';
-import { metaText } from '../io/preamble.js';
+import { metaText } from '../../../wasm/lib/preamble.js';
 
 const $ = (selector) => document.querySelector(selector);
 // The grid's and the locks' refusals; the correction's options show theirs at their inputs.
@@ -84,7 +84,7 @@ export function mountMeasured(store) {
 
   // What is in use (issue 22): the measurement the results are from, {name, what, meta, text}, or
   // null; kept as store.state.measuredSource for the record (the report: its name and the metadata
-  // its file carried, io/preamble.js). attempt: a measurement sent, in use once its result comes.
+  // its file carried, wasm/lib/preamble.js). attempt: a measurement sent, in use once its result comes.
   let inUse = null, attempt = null;
   // A file refused: {note (the message beside the box), status (the status line's, once the
   // measurement in use is computed again)}; the preview then says its text is the one in use.
@@ -115,7 +115,7 @@ export function mountMeasured(store) {
   // The preview's lead when its text is the measurement in use beside a refusal ("In use, a.csv: ").
   const lf = (text) => String(text).replace(/\r\n?/g, '\n');  // as the box keeps it
   const inUseLabel = (text) => (refusal && inUse && lf(inUse.text) === lf(text) ? `In use, ${inUse.name}: ` : '');
-  // The record the file carried above its table, and what was skipped (io/preamble.js).
+  // The record the file carried above its table, and what was skipped (wasm/lib/preamble.js).
   const recordOf = (read) => [metaText(read.meta), read.skippedText].filter(Boolean).map((t) => ` ${t}`).join('');
 
   const options = () => Object.fromEntries(ORIENT_OPTIONS.map((o) => [o, $(`[data-orient="${o}"]`).checked]));

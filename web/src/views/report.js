@@ -2,7 +2,7 @@
 // first page, which only print shows: the verdict in one line (report-lines.js), the date, the
 // rake face's class with its conformity and proven class, the job, the inputs with their labels
 // and units (the form's own), and the case link as a QR code (npm "qrcode"). Then "Program
-// this": the axes to run in the control's units (the page's "Axes to run": machine-axes.js's axesToRun)
+// this": the axes to run in the control's units (the page's "Axes to run": wasm/lib/axes-to-run.js's axesToRun)
 // with the NC program they belong to (the one offered beside them, event 'ncProgram'). The views the record
 // needs follow, each kept whole on a page; the exact polynomials (Tab. 2) close it as an
 // appendix. For print the plots are redrawn to the printable width, and back after.
@@ -10,7 +10,8 @@ import QRCode from 'qrcode';
 import { AXES, CORRECTION } from '../limits.js';
 import { escapeHtml } from '../format.js';
 import { fieldUnit } from '../result-fields.js';
-import { axesToRun, machineCoefficients, machineUnit, programmed, roundedFiguresText } from '../machine-axes.js';
+import { machineUnit, programmed, roundedFiguresText } from '../machine-axes.js';
+import { axesToRun, machineCoefficients } from '../../../wasm/lib/axes-to-run.js';
 import { LINK_TOO_LONG, QR_MOST_BYTES, jobRows, linkBytes, reportDateLine, reportInputRows, reportInspectionLine, verdictLine } from '../report-lines.js';
 import { fieldNames } from './field-names.js';
 

@@ -10,8 +10,8 @@ import { escapeHtml, fmt } from '../format.js';
 import { fieldUnit } from '../result-fields.js';
 import { cellConfidence, cellTexts, gashText, gashTopographyCount, isEdited, parseGashDeviations, tableInUse, uncertaintyText, withCell,
   withDefaultTable, withGashDeviations, withGashTopographies, withUncertainty } from '../tolerance-edit.js';
-import { checkGashFileCount, readGashTopographies } from '../io/gash-files.js';
-import { MAX_MEASURED_BYTES } from '../io/csv.js';
+import { checkGashFileCount, readGashTopographies } from '../../../wasm/lib/gash-files.js';
+import { MAX_MEASURED_BYTES } from '../../../wasm/lib/csv.js';
 
 const $ = (selector) => document.querySelector(selector);
 export const isInspectionField = (field) => /^inspection\b/.test(field || '');

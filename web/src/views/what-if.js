@@ -4,7 +4,7 @@
 // ground is noise-free, and the correction is told so (web/src/probe-noise.js).
 import { AXES, coefficientUnit } from '../limits.js';
 import { motionUnit } from '../format.js';
-import { gridToCsv } from '../io/csv.js';
+import { gridToCsv } from '../../../wasm/lib/csv.js';
 import { tuningFor } from '../probe-noise.js';
 
 const $ = (selector) => document.querySelector(selector);

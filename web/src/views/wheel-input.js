@@ -1,10 +1,10 @@
 // The wheel as dressed: the conjugate wheel of Eqs. 3-6, a dressed wheel's offset or a measured
-// wheel's axial profile loaded from a CSV file (io/wheel-import.js), kept in the case as
+// wheel's axial profile loaded from a CSV file (wasm/lib/wheel-csv.js), kept in the case as
 // wheel.profileOffset or wheel.measuredProfile. A file the page cannot read changes nothing; a
 // wheel the calculator refuses is named here and stays, so that it can be replaced or removed.
-import { MAX_MEASURED_BYTES } from '../io/csv.js';
+import { MAX_MEASURED_BYTES } from '../../../wasm/lib/csv.js';
 import { chosenFileText } from '../io/files.js';
-import { readWheelCsv, wheelSource, withWheelPoints } from '../io/wheel-import.js';
+import { readWheelCsv, wheelSource, withWheelPoints } from '../../../wasm/lib/wheel-csv.js';
 
 const $ = (selector) => document.querySelector(selector);
 export const isWheelField = (field) => /^wheel\.(profileOffset|measuredProfile)/.test(field || '');

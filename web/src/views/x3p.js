@@ -1,10 +1,10 @@
-// The topography as an ISO 5436-2 X3P file (io/x3p.js), beside the measured grid's CSV box:
+// The topography as an ISO 5436-2 X3P file (wasm/lib/x3p.js), beside the measured grid's CSV box:
 // "Upload X3P…" reads a measured topography, checks its positions against the grid, and puts it
 // into the box as CSV with its positions, so that the preview and "Use this grid" take it as
 // they take a CSV; "Export topography (X3P)" writes the measured, the predicted (after the
 // correction) or the simulated topography of the result on screen. A refused file leaves the box
 // and the results as they were. The file is read off the page's thread (x3p-reader.js).
-import { MAX_X3P_BYTES, writeX3p, x3pFileName, x3pGridCsv, x3pTopographies } from '../io/x3p.js';
+import { MAX_X3P_BYTES, writeX3p, x3pFileName, x3pGridCsv, x3pTopographies } from '../../../wasm/lib/x3p.js';
 import { readX3pOffPage } from '../x3p-reader.js';
 import { download } from '../io/files.js';
 

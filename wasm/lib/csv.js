@@ -1,7 +1,7 @@
 // Measured grids as CSV text: rows root to tip, values along the gash, µm. Reading one, with what
-// real files hold: io/measured-import.js.
-import { GRID } from '../limits.js';
-import { fixed } from '../format.js';
+// real files hold: measured-grid.js.
+import { GRID } from './limits.js';
+import { fixed } from './number-text.js';
 import { MAX_CASE_DEPTH, nestingDepth } from './nesting.js';
 
 // The largest measured text the page takes, pasted or uploaded: a grid of at most 201 x 201

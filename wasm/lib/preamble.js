@@ -1,6 +1,6 @@
 // The lines a measuring machine writes above its table (a report head: "Datum;26.11.2026",
 // "Part: hob 4711", "Operator;Meier", blank lines), as the grid and points readers find them
-// (io/measured-import.js, io/points-import.js). Pure, with Node tests. The metadata recognised
+// (measured-grid.js, points-csv.js). Pure, with Node tests. The metadata recognised
 // (the date, the part, the operator; English and German) is kept for the record; every other
 // line above the table is skipped and said so.
 

@@ -91,7 +91,7 @@ export function readPoints(text) {
     if (l !== '' && !l.startsWith('#')) lines.push({ n: i + 1, text: l });
   });
   if (lines.length === 0) throw new Error('The points file is empty.');
-  // The table begins at the first line that is the header (io/preamble.js): a measuring machine's
+  // The table begins at the first line that is the header (preamble.js): a measuring machine's
   // lines above it are skipped, the metadata among them kept. Without one, the line that looks
   // most like it (else the first) says why it is not.
   const { start, skipped, meta } = splitPreamble(lines, (i) => !headerOf(lines[i]).reason);

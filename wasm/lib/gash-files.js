@@ -1,9 +1,9 @@
 // One measured topography per gash, from one CSV file per gash (pure, with Node tests): each file
-// read as a measured grid is (io/measured-import.js: the page's export, decimal commas, a BOM),
+// read as a measured grid is (measured-grid.js: the page's export, decimal commas, a BOM),
 // in gash order by file name (gash-2 before gash-10), each of the grid's shape. Throws an Error
 // naming the file.
-import { checkShape, readMeasured } from './measured-import.js';
-import { INSPECTION } from '../limits.js';
+import { checkShape, readMeasured } from './measured-grid.js';
+import { INSPECTION } from './limits.js';
 
 // Throws when n files cannot be one per gash: fewer than 2, or more than the calculator's most
 // gashes (limits().inspection.maxGashes), checked before any file is read.

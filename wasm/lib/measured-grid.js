@@ -4,7 +4,7 @@
 // readMeasured() says what it recognised and what looks wrong; orient() applies the options the
 // user ticks on the preview (transpose, reverse rows or columns, change sign, mm to µm).
 import { MAX_GRID_VALUES, MAX_MEASURED_BYTES, tooLargeMessage } from './csv.js';
-import { GRID } from '../limits.js';
+import { GRID } from './limits.js';
 import { skippedText, splitPreamble } from './preamble.js';
 
 // The values a grid of measured deviations can plausibly hold, µm: below this largest |value|, the
@@ -72,7 +72,7 @@ export function readMeasured(text, grid) {
     if (l !== '' && !l.startsWith('#')) lines.push({ n: i + 1, text: l });
   });
   if (lines.length === 0) throw new Error('The measured grid is empty.');
-  // The lines a measuring machine writes above the table (io/preamble.js): the table begins at a
+  // The lines a measuring machine writes above the table (preamble.js): the table begins at a
   // line of two or more numbers, or at a header just above such a line (as many cells, or one more).
   const all = lines.map(({ n, text: l }) => ({ n, ...cellsOf(l) }));
   const numbers = (row) => row.cells.filter((c) => Number.isFinite(toNumber(c))).length;
