@@ -10,6 +10,13 @@ export function fmt(v, significant = 7) {
   return String(Number(v.toPrecision(significant)));
 }
 
+// A face figure to `significant` digits; a non-zero one below `least` (what no probe tells apart
+// from zero: 0.001 µm, 1e-6 µm² of sum of squares) as "below 0.001", never a solver's 2e-11.
+export function faceFigure(v, least, significant = 3) {
+  if (typeof v === 'number' && v !== 0 && Math.abs(v) < least) return `below ${least}`;
+  return fmt(v, significant);
+}
+
 // v with `digits` decimals, never "-0.000" (wasm/lib/number-text.js, shared with the file writers).
 export { fixed };
 

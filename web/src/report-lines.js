@@ -4,14 +4,14 @@
 // labels and units of the inputs from the caller (the form's own, views/field-names.js), so that
 // nothing here types a unit or shows a case's field path.
 import { classLead } from './inspection-table.js';
-import { fmt } from './format.js';
+import { faceFigure, fmt } from './format.js';
 import { inputRows } from './io/input-rows.js';
 
 const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
 // An rms to 3 significant digits; below a nanometre, what no measurement tells apart from zero, as
 // such ("below 0.001 µm"), not as a solver's 2e-11.
 const LEAST = 0.001;
-const figure = (v, unit) => (Math.abs(v) < LEAST && v !== 0 ? `below ${LEAST}` : fmt(v, 3)) + (unit ? ` ${unit}` : '');
+const figure = (v, unit) => faceFigure(v, LEAST) + (unit ? ` ${unit}` : '');
 
 // The report's first line: the day, and what was measured (a grid, the machine's points, or nothing).
 export function reportDateLine(caseObject, date = new Date()) {

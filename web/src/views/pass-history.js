@@ -3,7 +3,7 @@
 // says which figures). A kept pass's figures come from the calculator: its case (the form, its
 // axes and grid) is evaluated once and the figures kept; a pass the calculator refuses (the grid
 // changed since) shows why in its row.
-import { fixed, fmt, signed, escapeHtml } from '../format.js';
+import { escapeHtml, faceFigure, fixed, signed } from '../format.js';
 import { STOP_WHY, historyRows, historySeries, nextRunInputs, passCase, resultFigures } from '../pass-history.js';
 import { drawPassHistory } from '../plots/pass-history.js';
 import { loadPlotly } from '../plots/passes.js';
@@ -18,11 +18,15 @@ const units = () => {
     thickness: of('correction.thicknessBefore', 'µm') };
 };
 
+// The figures on the scale a probe reads (issue 22): an rms below 0.001 µm and a sum of squares
+// below 1e-6 µm² are "below" that, not the solver's 3e-11.
+const LEAST_RMS = 0.001, LEAST_SSE = 1e-6;
 // The rms predicted with its bound: "0.012 (at most 0.446)".
-const rmsCell = (f) => (f.rms !== null && typeof f.rmsHigh === 'number' ? `${fmt(f.rms, 3)} (at most ${fmt(f.rmsHigh, 3)})` : fmt(f.rms, 4));
+const rmsCell = (f) => (f.rms !== null && typeof f.rmsHigh === 'number'
+  ? `${faceFigure(f.rms, LEAST_RMS)} (at most ${faceFigure(f.rmsHigh, LEAST_RMS)})` : faceFigure(f.rms, LEAST_RMS, 4));
 
 const cells = (f, set) => (f
-  ? `<td class="num" data-${set}="rms">${rmsCell(f)}</td><td class="num" data-${set}="sse">${fmt(f.sse, 6)}</td>` +
+  ? `<td class="num" data-${set}="rms">${rmsCell(f)}</td><td class="num" data-${set}="sse">${faceFigure(f.sse, LEAST_SSE, 6)}</td>` +
     `<td class="num" data-${set}="max">${fixed(f.max, 3)}</td><td class="num" data-${set}="thickness">${signed(f.thickness, 3)}</td>`
   : '<td class="num">—</td><td class="num">—</td><td class="num">—</td><td class="num">—</td>');
 
