@@ -52,6 +52,12 @@ const char* confidenceName(Confidence c) {
   return "";
 }
 
+std::optional<Confidence> confidenceNamed(const std::string& name) {
+  for (Confidence c : {Confidence::Printed, Confidence::Series, Confidence::Entered})
+    if (name == confidenceName(c)) return c;
+  return std::nullopt;
+}
+
 const char* conformityName(Conformity c) {
   switch (c) {
     case Conformity::Conforms: return "conforms";

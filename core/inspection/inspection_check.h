@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <optional>
+#include <string>
 
 namespace hobsharp {
 
@@ -36,6 +38,7 @@ const char* className(ToleranceClass c);  // "AA" .. "D"
 const char* checkWords(Check check);      // "cutting-face form" .. "pitch jump", as the engineer says it
 const char* gradeName(Grade g);           // "AA" .. "D", "outside D", "not graded"
 const char* confidenceName(Confidence c);  // "printed", "series", "entered"
+std::optional<Confidence> confidenceNamed(const std::string& name);  // confidenceName's inverse
 const char* conformityName(Conformity c);  // "conforms", "does not conform", "undecided", "not graded"
 inline Grade gradeOf(ToleranceClass c) { return static_cast<Grade>(static_cast<int>(c)); }
 

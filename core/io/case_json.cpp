@@ -481,11 +481,9 @@ Outcome<void> readConfidence(const Node& check, std::array<std::vector<Confidenc
     if (!row->is_array()) return refuse(field, std::string("must be a list of \"printed\", \"series\" or \"entered\", one per module band; got ") + typeName(*row) + ".");
     for (std::size_t b = 0; b < row->size(); ++b) {
       const Json& w = (*row)[b];
-      const std::string word = w.is_string() ? w.get<std::string>() : "";
-      if (word == "printed") out[static_cast<int>(k)].push_back(Confidence::Printed);
-      else if (word == "series") out[static_cast<int>(k)].push_back(Confidence::Series);
-      else if (word == "entered") out[static_cast<int>(k)].push_back(Confidence::Entered);
-      else return refuse(field + "[" + std::to_string(b) + "]", "must be \"printed\", \"series\" or \"entered\".");
+      const std::optional<Confidence> confidence = confidenceNamed(w.is_string() ? w.get<std::string>() : "");
+      if (!confidence) return refuse(field + "[" + std::to_string(b) + "]", "must be \"printed\", \"series\" or \"entered\".");
+      out[static_cast<int>(k)].push_back(*confidence);
     }
   }
   return success();
