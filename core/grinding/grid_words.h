@@ -1,6 +1,6 @@
 // A measured grid as the engineer names it (issue 22: never a JSON path in a message): "Measured
 // grid" for `measured`, "Pass 2, measured grid" for `passes[1].measured` (the pass counted from 1,
-// as pointsWords does), "Gash 2's topography" for `inspection.gashTopographies[1]`; a row and a
+// measuredWords), "Gash 2's topography" for `inspection.gashTopographies[1]`; a row and a
 // value within it counted from 1. The field of a refusal stays the path, for the page to find it.
 #pragma once
 
@@ -14,8 +14,7 @@ namespace hobsharp {
 inline std::string gridWords(const std::string& name) {
   const std::string gash = "inspection.gashTopographies[";
   if (name.rfind(gash, 0) == 0) return "Gash " + std::to_string(std::stoul(name.substr(gash.size())) + 1) + "'s topography";
-  const std::string points = pointsWords(name + "Points");
-  return points.substr(0, points.size() - std::string("points").size()) + "grid";
+  return measuredWords(name) + " grid";
 }
 inline std::string gridRowWords(const std::string& name, std::size_t i) { return gridWords(name) + ", row " + std::to_string(i + 1); }
 inline std::string gridValueWords(const std::string& name, std::size_t i, std::size_t j) {

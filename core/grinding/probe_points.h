@@ -18,16 +18,17 @@ struct ProbePoint {
 
 using ProbePoints = std::vector<ProbePoint>;
 
-// Measured points as the engineer names them: "Measured points" for `measuredPoints`, "Pass 2,
-// measured points" for `passes[1].measuredPoints`; one point counted from 1: "Measured point 81"
-// for the point k = 80.
-inline std::string pointsWords(const std::string& field) {
+// A measurement as the engineer names it: "Measured" for the case's own, "Pass 2, measured" for
+// `passes[1]`'s (the pass counted from 1); "Measured points", "Pass 2, measured points" for its
+// points; one point counted from 1: "Measured point 81" for the point k = 80.
+inline std::string measuredWords(const std::string& field) {
   if (field.rfind("passes[", 0) == 0) {
     const std::size_t end = field.find(']');
-    if (end != std::string::npos && end > 7) return "Pass " + std::to_string(std::stoul(field.substr(7, end - 7)) + 1) + ", measured points";
+    if (end != std::string::npos && end > 7) return "Pass " + std::to_string(std::stoul(field.substr(7, end - 7)) + 1) + ", measured";
   }
-  return "Measured points";
+  return "Measured";
 }
+inline std::string pointsWords(const std::string& field) { return measuredWords(field) + " points"; }
 inline std::string pointWords(const std::string& field, std::size_t k) {
   std::string w = pointsWords(field);
   return w.substr(0, w.size() - 1) + " " + std::to_string(k + 1);
