@@ -18,6 +18,8 @@
 // as keep each piece within SPLIT_TOLERANCE of the axes; the program's deviation from the axes
 // (the pieces and the digits written) is measured and stated in the program.
 
+import { polynomialAt } from './polynomial.js';
+
 export const NC_DIALECTS = ['sinumerik', 'sinumerik-cubic', 'heidenhain'];
 const AXES = ['X', 'Y', 'Z', 'A', 'B'];
 const ROTARY = new Set(['A', 'B']);
@@ -43,7 +45,6 @@ const NEGLIGIBLE = 1e-8;
 
 // --- polynomials (coefficients a0..an) -------------------------------------------------------
 
-const valueAt = (c, x) => c.reduceRight((s, a) => s * x + a, 0);
 // The k-th derivative of a polynomial's coefficients.
 function derivative(c, k = 1) {
   let d = c.slice();
@@ -74,7 +75,7 @@ function piece(c, u0, h, degree) {
     return out;
   }
   const u1 = u0 + h;
-  const F0 = valueAt(c, u1), F1 = valueAt(derivative(c), u1), F2 = valueAt(derivative(c, 2), u1);
+  const F0 = polynomialAt(c, u1), F1 = polynomialAt(derivative(c), u1), F2 = polynomialAt(derivative(c, 2), u1);
   const [q0, q1, q2] = local;
   if (degree === 3) {
     // A = a2 h^2, B = a3 h^3: A + B = r0, 2 A + 3 B = r1 h.
@@ -138,7 +139,7 @@ function deviationOf(axes, u, pieces) {
     for (let s = 0; s <= 24; s++) {
       const p = h * s / 24;
       for (const a of AXES) {
-        const d = Math.abs(pieces[i].at(a, p) - valueAt(axes[a], u[i] + p));
+        const d = Math.abs(pieces[i].at(a, p) - polynomialAt(axes[a], u[i] + p));
         const kind = ROTARY.has(a) ? 'rotary' : 'linear';
         if (d > worst[kind]) worst[kind] = d;
       }
@@ -153,7 +154,7 @@ function pieceCount(axes, lo, hi, degree) {
     const u = bounds(lo, hi, n);
     const ps = u.slice(0, -1).map((u0, i) => {
       const local = Object.fromEntries(AXES.map((a) => [a, piece(axes[a], u0, u[i + 1] - u0, degree)]));
-      return { at: (a, p) => valueAt(local[a], p) };
+      return { at: (a, p) => polynomialAt(local[a], p) };
     });
     const d = deviationOf(axes, u, ps);
     return d.linear <= SPLIT_TOLERANCE.linear && d.rotary <= SPLIT_TOLERANCE.rotary;
@@ -226,7 +227,7 @@ export function ncProgram(o) {
   const n = pieceCount(axes, lo, hi, d.degree);
   const u = bounds(lo, hi, n);
   const position = (x) => fixed(x, d.positionDecimals);
-  const start = Object.fromEntries(AXES.map((a) => [a, Number(position(valueAt(axes[a], lo)))]));
+  const start = Object.fromEntries(AXES.map((a) => [a, Number(position(polynomialAt(axes[a], lo)))]));
   if (AXES.some((a) => Math.abs(start[a]) > POSITION_MAX)) throw new Error(`NC program: a position beyond +-${POSITION_MAX}.`);
   const body = [];
   // The program's reading of its own blocks, from the numbers written (for the deviation).
@@ -247,7 +248,7 @@ export function ncProgram(o) {
       const polys = {};
       for (const a of AXES) {
         const local = piece(axes[a], u[i], h, d.degree).map((c, k) => c * h ** k);
-        const end = Number(position(valueAt(local, PL)));
+        const end = Number(position(polynomialAt(local, PL)));
         // a2 .. a5 to the digits, each left out when its term over the block is negligible, and
         // the trailing zeros dropped (the control takes them as 0).
         const high = local.slice(2).map((c, j) => (Math.abs(c) * PL ** (j + 2) < NEGLIGIBLE ? 0 : Number(c.toPrecision(digits))));
@@ -261,7 +262,7 @@ export function ncProgram(o) {
         at[a] = end;
       }
       body.push(block(i + 1, `${i === 0 ? 'POLY ' : ''}${words.join(' ')} PL=${PL}`));
-      read.push({ at: (a, p) => valueAt(polys[a], p / h) });
+      read.push({ at: (a, p) => polynomialAt(polys[a], p / h) });
     }
     body.push(block(n + 1, 'G1 ; polynomial interpolation off'));
     body.push(block(n + 2, 'M30'));
@@ -273,7 +274,7 @@ export function ncProgram(o) {
       for (const a of AXES) {
         // The cubic in p = h (1 - t) written in t: X(t) = K3 t^3 + K2 t^2 + K1 t + X(end).
         const local = piece(axes[a], u[i], h, 3);
-        const end = Number(position(valueAt(local, h)));
+        const end = Number(position(polynomialAt(local, h)));
         const [, , c2, c3] = local;
         // d/dt = -h d/dp: K3 and K2 from the piece, K1 such that t = 1 is the start written.
         const K3 = -c3 * h ** 3;

@@ -6,7 +6,7 @@
 // wasm/lib/axes-to-run.js.
 import { AXES, isRotary } from './limits.js';
 import { fmt } from './format.js';
-import { polynomialAt } from './polynomial.js';
+import { polynomialAt } from '../../wasm/lib/polynomial.js';
 import { machineCoefficients } from '../../wasm/lib/axes-to-run.js';
 
 const DEG = 180 / Math.PI;

@@ -3,7 +3,7 @@
 // motions themselves); without one, the nominal motions in mm and rad.
 import { AXES, isRotary } from '../limits.js';
 import { motionSymbol, motionUnit } from '../format.js';
-import { polynomialAt } from '../polynomial.js';
+import { polynomialAt } from '../../../wasm/lib/polynomial.js';
 
 const ARCSEC_PER_RAD = (180 / Math.PI) * 3600;
 
