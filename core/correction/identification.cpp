@@ -121,8 +121,6 @@ Eigen::MatrixXd columnsOf(const Eigen::MatrixXd& m, const std::vector<int>& kept
   return out;
 }
 
-int totalColumns(const std::vector<Eigen::MatrixXd>& p) { return BlockResidual::columns(p); }
-
 }  // namespace
 
 Eigen::MatrixXd Identification::covariancePerNoise(int b) const {
@@ -294,7 +292,7 @@ Outcome<Identification> identify(const FaceModel& model, const GroundFace& start
     take();
     if (id.summary.status != SolveStatus::Converged || id.summary.iterations >= o.solver.maxIterations) break;
   }
-  if (totalColumns(P) == 0) {
+  if (BlockResidual::columns(P) == 0) {
     id.summary.status = SolveStatus::Converged;
     id.summary.reason = "converged: the measurement shows nothing above the probe noise that " + words.makers +
                         " can make.";
@@ -312,7 +310,7 @@ Outcome<Identification> identify(const FaceModel& model, const GroundFace& start
   id.summary.finalCost = (d - id.explained).squaredNorm();
   judgeMisfit(id.summary, id.summary.finalCost, points, o.probeNoise);
   id.jacobian = J;
-  const int k = totalColumns(P);
+  const int k = BlockResidual::columns(P);
   if (k > 0) {
     // (J^T J)^-1 in the taken directions, which the decision kept well conditioned.
     Eigen::MatrixXd Jt(points, k);
