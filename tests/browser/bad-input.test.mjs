@@ -16,8 +16,7 @@ const notice = (page) => page.textContent('#notice-text');
 
 // The notice is still there once everything has settled: not overwritten at once.
 async function noticeStays(page, pattern) {
-  await plotted(page);
-  await page.waitForTimeout(1000);
+  await plotted(page);  // settled: nothing left that could overwrite it
   assert.equal(await page.isVisible('#notice'), true, 'the notice is on screen');
   assert.match(await notice(page), pattern);
 }

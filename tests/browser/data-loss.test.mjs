@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { afterResult, base, openPage, root, shots, useBrowser } from './support.mjs';
+import { afterResult, base, openPage, root, settled, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 const desk = { viewport: { width: 1366, height: 768 } };  // the engineer's screen
@@ -88,9 +88,11 @@ test('the paper example asks before it replaces a measured grid', async () => {
   await page.fill('#measured-csv', Array.from({ length: 5 }, () => Array(9).fill('1.0').join(', ')).join('\n'));
   await afterResult(page, () => page.click('#use-measured'));
   const asked = [];
+  const dialog = page.waitForEvent('dialog');
   page.once('dialog', (d) => { asked.push(d.message()); d.dismiss(); });
   await page.click('#preset-paper');
-  await page.waitForTimeout(300);
+  await dialog;
+  await settled(page);
   assert.match(asked[0] || '', /replaces the measured grid \(5 × 9 values\)/);
   assert.equal(Number(await page.getAttribute('#verdict', 'data-sse-before')), 45, 'kept when the user says no');
   page.once('dialog', (d) => d.accept());

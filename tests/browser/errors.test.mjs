@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { afterError, afterResult, base, count, openPage, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, count, openPage, plotted, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 const desk = { viewport: { width: 1366, height: 768 } };  // the engineer's screen
@@ -67,8 +67,7 @@ test('an error without its own field is shown at its group of fields, in words',
 
 test('a broken link\'s warning stays in view until the user changes something', async () => {
   const page = await openPage(`${base}#case=%7B%22format`, desk);
-  await page.waitForFunction(() => window.hobsharpTimings.draws > 0, null, { timeout: 30000 });
-  await page.waitForTimeout(500);
+  await plotted(page);
   assert.equal(await page.isVisible('#notice'), true);
   assert.match(await page.textContent('#notice'), /The link holds no readable case.*The paper example is loaded instead/);
   await toBottom(page);

@@ -6,7 +6,7 @@ import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { afterError, afterResult, after_, base, colours, galleryDrawn, galleryTitles, openPage, plotted, shots, site, tab2, useBrowser } from './support.mjs';
+import { afterError, afterResult, after_, base, colours, galleryDrawn, galleryTitles, openPage, plotted, settled, shots, site, tab2, useBrowser } from './support.mjs';
 import { surfacesDrawn } from './surfaces.mjs';
 
 useBrowser();
@@ -96,7 +96,7 @@ test('a generated machine error is corrected, the sum of squares dropping at lea
   assert.notEqual(corrected.Z, '—');
   assert.match(await page.textContent('#unobservable'), /X a0 .* A a0/);
 
-  await page.waitForTimeout(300);
+  await settled(page);
   for (const id of ['#plot-before-2d', '#plot-after-2d', '#plot-singular']) {
     assert.ok(await colours(page, id) > 30, `${id} draws something`);
   }
@@ -104,12 +104,12 @@ test('a generated machine error is corrected, the sum of squares dropping at lea
   assert.ok(await colours(page, '#plot-before-2d') > nominalColours, 'the measured map shows the error');
   await page.locator('#topography-section').screenshot({ path: path.join(shots, 'topography-normal.png') });
   await after_(page, 'draws', () => page.check('input[name="view"][value="circular"]'));
-  await page.waitForTimeout(300);
+  await settled(page);
   await page.locator('#topography-section').screenshot({ path: path.join(shots, 'topography-circular.png') });
   await page.locator('#measured-section').screenshot({ path: path.join(shots, 'measured.png') });
   await page.locator('#sensitivity-section').screenshot({ path: path.join(shots, 'sensitivities.png') });
-  await page.check('input[name="view"][value="normal"]');
-  await page.waitForTimeout(1000);
+  await after_(page, 'draws', () => page.check('input[name="view"][value="normal"]'));
+  await settled(page);
   await page.evaluate(() => window.scrollTo(0, 0));  // the sticky status bar at the top of the picture
   await page.screenshot({ path: path.join(shots, 'page-corrected.png'), fullPage: true });
 

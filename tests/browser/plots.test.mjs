@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { after_, openPage, plotted, shots, useBrowser } from './support.mjs';
+import { after_, frames, openPage, plotted, shots, useBrowser } from './support.mjs';
 import { surfacesDrawn } from './surfaces.mjs';
 
 useBrowser();
@@ -141,7 +141,7 @@ test('the 3D surfaces: drawn on demand, one scale, titles inside the plot, hover
   for (let y = 0.4; y < 0.9 && !text; y += 0.05) {
     for (let x = 0.2; x < 0.8 && !text; x += 0.05) {
       await page.mouse.move(scene.x + scene.width * x, scene.y + scene.height * y);
-      await page.waitForTimeout(150);
+      await frames(page);  // the scene draws its hover label on its next frame
       text = (await page.locator('#plot-before-3d .hovertext').allTextContents()).join('');
     }
   }

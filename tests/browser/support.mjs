@@ -23,22 +23,23 @@ function freePort() {
   });
 }
 
-async function waitForServer(url) {
-  for (let i = 0; i < 100; i++) {
-    try { if ((await fetch(url)).ok) return; } catch { /* not yet */ }
-    await new Promise((r) => setTimeout(r, 100));
-  }
-  throw new Error(`the test server at ${url} did not start`);
+// Resolves when python's server says it listens ("Serving HTTP on ..." on its unbuffered stdout).
+function listening(child) {
+  return new Promise((resolve, reject) => {
+    let said = '';
+    child.stdout.on('data', (d) => { said += d; if (said.includes('Serving HTTP')) resolve(); });
+    child.on('exit', (code) => reject(new Error(`the test server ended (exit ${code}) before it listened: ${said}`)));
+  });
 }
 
 // Starts the server and the browser for the test file that calls it.
 export function useBrowser() {
   before(async () => {
     const port = await freePort();
-    server = spawn('/usr/bin/python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', site],
-                   { stdio: 'ignore' });
+    server = spawn('/usr/bin/python3', ['-u', '-m', 'http.server', String(port), '--bind', '127.0.0.1', '--directory', site],
+                   { stdio: ['ignore', 'pipe', 'ignore'] });
     base = `http://127.0.0.1:${port}/`;
-    await waitForServer(base);
+    await listening(server);
     browser = await chromium.launch({
       executablePath: '/usr/bin/chromium',
       args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update'],
@@ -76,9 +77,16 @@ export async function after_(page, what, action) {
 export const afterResult = (page, action) => after_(page, 'results', action);
 export const afterError = (page, action) => after_(page, 'errors', action);
 
+// Waits until the page has settled: nothing computed or waiting to be, no plot pass under way,
+// for two frames (web/src/hooks.js).
+export const settled = (page) => page.evaluate(() => window.hobsharpTest.settled());
+
+// Two animation frames: what the browser draws on its own after an event (a WebGL hover label).
+export const frames = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+
 export async function plotted(page) {
   await page.waitForFunction(() => window.hobsharpTimings.draws > 0, null, { timeout: 30000 });
-  await page.waitForTimeout(300);
+  await settled(page);
 }
 
 // Decodes a PNG in the page and, for each box (CSS px from the image's top left; the whole image

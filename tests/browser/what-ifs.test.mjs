@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { afterResult, after_, base, openPage, shots, tab2, useBrowser } from './support.mjs';
+import { afterResult, after_, base, openPage, settled, shots, tab2, useBrowser } from './support.mjs';
 
 useBrowser();
 const desk = { viewport: { width: 1366, height: 768 } };  // the engineer's screen
@@ -88,7 +88,7 @@ test('undo and redo of the inputs: buttons, Ctrl+Z and Ctrl+Shift+Z', async () =
   // In a text field, Ctrl+Z is the field's own.
   await page.fill('[data-field="machine.K2"]', '11');
   await page.keyboard.press('Control+z');
-  await page.waitForTimeout(300);
+  await settled(page);
   assert.equal(await page.inputValue('[data-field="machine.K1"]'), '120');
   await page.context().close();
 });
@@ -99,7 +99,7 @@ test('the Back button goes back one input step, Forward forward', async () => {
   await enter(page, 'setup.tilt', '16');
   const tilted = await tab2(page, 'nominal');
   await page.check('[data-lock="X a1"]');
-  await page.waitForTimeout(200);
+  await settled(page);
   await page.goBack();
   await page.waitForFunction(() => !document.querySelector('[data-lock="X a1"]').checked);
   assert.equal(await page.inputValue('[data-field="setup.tilt"]'), '16');

@@ -2,7 +2,8 @@
 // window.hobsharpTimings says when the page showed its first result and drew its plots (ms after
 // navigation), how many results, refusals and plot passes it has had, and how long each change
 // of an input took to show its numbers, how many cases the worker evaluated and how many were
-// cancelled. window.hobsharpTest lets the tests stall the worker.
+// cancelled. window.hobsharpTest lets the tests stall the worker and wait until the page has
+// settled: nothing computing or waiting to be computed, no plot pass under way, for two frames.
 
 export function installHooks(store, calculator) {
   const t = {
@@ -29,7 +30,16 @@ export function installHooks(store, calculator) {
     t.draws += 1;
   });
   window.hobsharpTimings = t;
+  const busy = [];  // () => boolean, one per part of the page that works after an input (watch())
   window.hobsharpTest = {
+    settled: () => new Promise((resolve) => {
+      let quiet = 0;
+      const look = () => {
+        quiet = busy.some((b) => b()) ? 0 : quiet + 1;
+        if (quiet >= 2) resolve(); else requestAnimationFrame(look);
+      };
+      requestAnimationFrame(look);
+    }),
     stallWorker(watchdogMs) {
       calculator.watchdogMs = watchdogMs;
       calculator.stall().catch(() => {});
@@ -37,4 +47,5 @@ export function installHooks(store, calculator) {
     // The measurement in use as the record keeps it (views/measured.js): {name, what, meta} or null.
     measuredSource: () => structuredClone(store.state.measuredSource),
   };
+  return { watch: (isBusy) => { busy.push(isBusy); } };
 }

@@ -43,7 +43,7 @@ const store = createStore();
 const calculator = createCalculator();
 loadPlotly().catch(() => {});  // in parallel with the calculator; a failure is reported when drawing
 
-installHooks(store, calculator);
+const hooks = installHooks(store, calculator);
 mountAccess();
 mountStatus(store);
 mountCancel(calculator);
@@ -52,6 +52,7 @@ mountFieldErrors(store);
 mountStale(store);
 mountPin(store);
 const plots = mountPlots(store);
+hooks.watch(plots.busy);
 mountDerived(store);
 mountPaperNote(store);
 mountAxes(store, plots);
@@ -75,7 +76,7 @@ mountPassHistory(store, calculator, measuredView);
 mountUndo(store);
 const loader = createLoader({ store, calculator, form, measuredView, paperCase: self.HOBSHARP_PAPER_CASE });
 mountCaseFiles(store, loader, mountLink(store));
-startRecompute(store, calculator);
+hooks.watch(startRecompute(store, calculator).busy);
 
 // The module's limits first (the form's bounds, the axes, the case format) and the description of
 // its results (the figures' units), then the case.

@@ -52,5 +52,6 @@ export function startRecompute(store, calculator) {
   }
 
   store.on('inputs', request);
-  return { request };
+  // busy(): a case is being computed or waits to be (the tests' hobsharpTest.settled()).
+  return { request, busy: () => running || waiting !== null };
 }

@@ -17,8 +17,14 @@ const nextFrame = () => new Promise((resolve) => requestAnimationFrame(() => set
 export function mountPlots(store) {
   const drawers = [];
   let generation = 0;
+  let inFlight = 0;  // passes started and not yet ended (drawn, stopped by a newer one, or failed)
 
   async function pass() {
+    inFlight += 1;
+    try { await drawAll(); } finally { inFlight -= 1; }
+  }
+
+  async function drawAll() {
     const mine = ++generation;
     const current = () => mine === generation;
     await nextFrame();
@@ -47,5 +53,7 @@ export function mountPlots(store) {
     add(draw, { later = false } = {}) { drawers.push({ draw, later }); },
     // A view that shows a plot it did not show before (the 3D surfaces) asks for a pass.
     redraw() { if (store.state.result) pass(); },
+    // Whether a pass is under way (the tests' hobsharpTest.settled() waits until none is).
+    busy: () => inFlight > 0,
   };
 }
