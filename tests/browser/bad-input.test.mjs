@@ -50,15 +50,15 @@ test('a link whose measured rows are not lists loads the rest, the grid set asid
 });
 
 for (const [what, correction, field] of [
-  ['correction.locked is not a list', { locked: 'X a0' }, 'correction.locked'],
-  ['correction.lockedAxes is not a list', { lockedAxes: { A: true } }, 'correction.lockedAxes'],
+  ['correction.locked is not a list', { locked: 'X a0' }, 'Locked coefficients'],
+  ['correction.lockedAxes is not a list', { lockedAxes: { A: true } }, 'Locked axes'],
 ]) {
   test(`a link whose ${what} loads the rest and says why the locks are left out`, async () => {
     const c = paper();
     c.measured = Array.from({ length: 5 }, () => Array(9).fill(1));
     c.correction = correction;
     const page = await openPage(link(c));
-    await noticeStays(page, new RegExp(`^The link: its correction settings are left out: ${field}: must be a list`));
+    await noticeStays(page, new RegExp(`^The link: its correction settings are left out: ${field} must be a list`));
     assert.equal(Number(await page.getAttribute('#verdict', 'data-sse-before')), 45, 'the measured grid is used');
     assert.equal(await page.locator('[data-lock]:checked, [data-lock-axis]:checked').count(), 0);
     await page.context().close();

@@ -69,7 +69,7 @@ test('the options are inputs with the defaults shown; a simulated grid is declar
 
   // A bad option: shown at its input; the grid stays in use, and the fix clears it.
   await afterError(page, async () => { await page.fill('#probe-noise', '-1'); await page.dispatchEvent('#probe-noise', 'change'); });
-  assert.match(await page.textContent('#correction-options-error'), /^correction\.probeNoise: the probe's standard deviation must be positive; got -1 µm\.$/);
+  assert.match(await page.textContent('#correction-options-error'), /^Probe noise σ: the probe's standard deviation must be positive; got -1 µm\.$/);
   assert.equal(await page.getAttribute('#probe-noise', 'aria-invalid'), 'true');
   assert.equal(await page.isHidden('#measured-error'), true, 'not the grid\'s error');
   assert.equal(await page.isHidden('#notice'), true, 'nothing set aside');

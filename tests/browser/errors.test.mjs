@@ -21,7 +21,8 @@ test('a refused field says so at the field, in red, in the label\'s words', asyn
   const note = page.locator('label:has([data-field="hob.pitchDiameter"]) .field-message');
   assert.equal((await note.textContent()).trim(),
     'Pitch diameter dp must be smaller than the outer diameter da (80 mm); got 90 mm.');  // d<sub>p</sub>, d<sub>a</sub>
-  assert.equal(await note.getAttribute('title'), 'hob.pitchDiameter: must be smaller than hob.outerDiameter (80 mm); got 90 mm.');
+  // Its title too is in words (it was the calculator's message, paths and all).
+  assert.equal(await note.getAttribute('title'), 'Pitch diameter d_p must be smaller than the outer diameter d_a (80 mm); got 90 mm.');
   const style = await note.evaluate((el) => { const s = getComputedStyle(el); return { color: s.color, size: parseFloat(s.fontSize), weight: Number(s.fontWeight) }; });
   assert.equal(style.color, 'rgb(197, 48, 48)', 'red, not grey');
   assert.ok(style.size >= 13 && style.weight >= 600, JSON.stringify(style));
@@ -56,7 +57,7 @@ test('an error without its own field is shown at its group of fields, in words',
   await afterError(page, () => page.fill('[data-field="setup.centerDistance"]', '100'));
   const note = page.locator('fieldset[data-group="setup"] > .field-message');
   assert.match(await note.textContent(), /^Universal machine settings: no contact between the wheel and the tooth face/);
-  assert.match(await note.getAttribute('title'), /^setup: no contact/);
+  assert.match(await note.getAttribute('title'), /^Universal machine settings: no contact/);
   // Paths inside a message are named as on screen, too.
   await afterResult(page, () => page.fill('[data-field="setup.centerDistance"]', ''));
   await afterError(page, () => page.fill('[data-field="setup.settingAngle"]', '60'));

@@ -109,7 +109,7 @@ test('the uncertainty U95 typed: the conformity and the proven class follow, the
   await shot(page, '#inspection', 'inspection-warning.png');
   // Out of range: named at the input, the rest of the page as it was.
   await afterError(page, async () => { await page.fill('#inspection-uncertainty', '150'); await page.dispatchEvent('#inspection-uncertainty', 'change'); });
-  assert.match(await page.textContent('#inspection-uncertainty-error'), /^inspection\.uncertainty: must be the measurement's uncertainty U95 in µm, 0 to 100; got 150 µm\.$/);
+  assert.match(await page.textContent('#inspection-uncertainty-error'), /^Measurement uncertainty U95 must be the measurement's uncertainty U95 in µm, 0 to 100; got 150 µm\.$/);
   assert.equal(await page.getAttribute('#inspection-uncertainty', 'aria-invalid'), 'true');
   assert.ok(await page.isHidden('#form-error'));
   assert.ok(await page.isHidden('#tolerance-error'));

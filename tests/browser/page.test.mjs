@@ -168,11 +168,11 @@ test('a bad CSV is refused with a message and the old results stay', async () =>
 
   // A bad field: the message at the field, the results kept.
   await afterError(page, () => page.fill('[data-field="hob.pitchDiameter"]', '90'));
-  // In the label's words; the calculator's message, with the JSON paths, in the tooltip.
+  // In the label's words, and so is its tooltip: no JSON path on the page.
   assert.match(await page.textContent('label:has([data-field="hob.pitchDiameter"]) .field-message'),
                /Pitch diameter dp must be smaller than the outer diameter da/);
   assert.match(await page.getAttribute('label:has([data-field="hob.pitchDiameter"]) .field-message', 'title'),
-               /hob.pitchDiameter: must be smaller than hob.outerDiameter/);
+               /^Pitch diameter d_p must be smaller than the outer diameter d_a/);
   assert.deepEqual(await tab2(page, 'nominal'), shown);
   await page.locator('form').screenshot({ path: path.join(shots, 'bad-field.png') });
   await afterResult(page, () => page.fill('[data-field="hob.pitchDiameter"]', '62.5'));

@@ -91,6 +91,10 @@ test('the worker keeps its module after a refusal and takes a fresh one after a 
 test('the page\'s error keeps a refusal\'s code and field; a fault has code Internal and no field', () => {
   const refused = workerError({ message: 'grid: no contact', code: 'Unsolvable', field: 'grid' });
   assert.deepEqual([refused.message, refused.code, refused.field], ['grid: no contact', 'Unsolvable', 'grid']);
+  // In the page's words, with the calculator's own message kept.
+  const words = ({ field, message }) => message.replace(`${field}: `, 'The grid: ');
+  const worded = workerError({ message: 'grid: no contact', code: 'Unsolvable', field: 'grid' }, words);
+  assert.deepEqual([worded.message, worded.calculatorMessage, worded.field], ['The grid: no contact', 'grid: no contact', 'grid']);
   for (const code of ['Internal', '', undefined, 'Something']) {
     const fault = workerError({ message: 'trap', code, field: 'measured' });
     assert.equal(fault.code, 'Internal');

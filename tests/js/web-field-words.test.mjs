@@ -2,7 +2,7 @@
 // JSON path, and the paths inside the message named as on screen too.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { wordedError } from '../../web/src/field-words.js';
+import { pathWords, wordedError } from '../../web/src/field-words.js';
 
 const names = {
   'hob.pitchDiameter': { text: 'Pitch diameter d_p', html: 'Pitch diameter <i>d<sub>p</sub></i>' },
@@ -32,9 +32,34 @@ test('several paths in one message, with no article where one is there or a valu
   assert.equal(grid.text, 'Pitch diameter d_p needs radial lines = 5 rows of the outer diameter d_a.');
 });
 
-test('an element of a list is named by its list', () => {
+test('an element of a list is named in words, counted from 1 (a coefficient by its a_k)', () => {
   const w = wordedError({ field: 'axes.X[2]', message: 'axes.X[2]: must be a finite number.' }, names);
-  assert.equal(w.text, 'Run axis X [2] must be a finite number.');
+  assert.equal(w.text, 'Run axis X, coefficient a2 must be a finite number.');
+  const m = wordedError({ field: 'passes[1].measured[2][3]', message: 'passes[1].measured[2][3]: must be a number; got a string.' }, names);
+  assert.equal(m.text, 'Pass 2, measured grid, row 3, value 4 must be a number; got a string.');
+});
+
+test('a field with no name on screen is named in words: no path of the case reaches the page', () => {
+  const cases = {
+    'passes[0].axes.X[1]': 'Pass 1, run axis X, coefficient a1',
+    'inspection.gashDeviations[3]': "Inspection, gash 4's deviation",
+    'inspection.gashTopographies[0][1][2]': "Inspection, gash 1's topography, row 2, value 3",
+    'inspection.tolerances.checks.gashLead.B': 'Inspection, tolerance table, gash lead, class B',
+    'inspection.uncertainty': 'Inspection, measuring uncertainty U95',
+    'correction.probeNoise': 'Correction options, probe noise σ',
+    'job.hobSerial': 'Job, hob serial number',
+    'measuredPoints[4]': 'Measured point 5',
+    'wheel.measuredProfile[3].R': 'Wheel, wheel file, point 4, R',
+    format: 'Case format',
+  };
+  for (const [path, words] of Object.entries(cases)) assert.equal(pathWords(path), words, path);
+  const w = wordedError({ field: 'correction.method', message: 'correction.method: must be one of "nonlinear", "linear"; got "x".' }, names);
+  assert.equal(w.text, 'Correction options, method must be one of "nonlinear", "linear"; got "x".');
+  // A path inside the reason, named on screen or not; a member's name as a plain word stays a word.
+  const r = wordedError({ field: 'grid.radial', message: 'grid.radial: the grid of the hob needs passes[0].axes.X and hob.gashLead.' }, names);
+  assert.equal(r.text, 'Radial lines: the grid of the hob needs the pass 1, run axis X and the gash lead L_c.');
+  const path = /\b[a-z]\w*(\.[A-Za-z]\w*|\[\d+\])+/;
+  for (const t of [w.text, r.text, ...Object.values(cases)]) assert.doesNotMatch(t, path);
 });
 
 test('the page\'s own text in a message is escaped in the HTML', () => {
@@ -42,8 +67,8 @@ test('the page\'s own text in a message is escaped in the HTML', () => {
   assert.equal(w.html, 'Pitch diameter <i>d<sub>p</sub></i> must be &#60;b&#62;&#34;x&#34;&#60;/b&#62; &#38; more.');
 });
 
-test('a field with no name on screen, or a message that does not start with it, is left as it is', () => {
-  assert.equal(wordedError({ field: 'measured[0]', message: 'measured[0]: must be a list.' }, names), null);
+test('a message that does not start with its field is left as it is', () => {
+  assert.equal(wordedError({ field: 'measured[0]', message: 'measured[0]: must be a list.' }, names).text, 'Measured grid, row 1 must be a list.');
   assert.equal(wordedError({ field: '', message: 'The case is not valid JSON.' }, names), null);
   assert.equal(wordedError({ field: 'hob.pitchDiameter', message: 'Something else.' }, names), null);
 });

@@ -29,11 +29,15 @@ function failure(message, fields = {}) {
   return Object.assign(new Error(message), fields);
 }
 
-// The page's Error for what the worker posts: a refusal keeps its code and field; anything else
-// is a fault of the calculator (code 'Internal', no field).
-export function workerError({ message, code, field }) {
+// The page's Error for what the worker posts: a refusal keeps its code and field, and its message
+// is put in the page's words by words({field, message}) (the field named as on screen, never its
+// path: views/field-names.js), the calculator's own kept as .calculatorMessage; anything else is
+// a fault of the calculator (code 'Internal', no field).
+export function workerError({ message, code, field }, words = null) {
   const refusal = code === 'InvalidInput' || code === 'Unsolvable';
-  return failure(message, refusal ? { code, field: field || '' } : { code: 'Internal' });
+  if (!refusal) return failure(message, { code: 'Internal' });
+  const worded = words ? words({ field: field || '', message }) : message;
+  return failure(worded, { code, field: field || '', calculatorMessage: message });
 }
 
 // A value as JSON with its objects' keys sorted: the same case gives the same text, whatever order
@@ -51,7 +55,7 @@ export function canonicalJson(value) {
 // A case is evaluated once: the last case computed is kept with its result, and asked again (a
 // loaded case, checked and then shown) it is answered from there. evaluations counts the cases
 // the worker was given; onBusy(busy) says when the first evaluation starts and the last ends.
-export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = {}) {
+export function createCalculator({ watchdogMs = 20000, onRestart = () => {}, words = null } = {}) {
   const pending = new Map();
   let nextId = 1;
   let started;
@@ -72,7 +76,7 @@ export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = 
         pending.delete(id);
         clearTimeout(p.timer);
         if (ok) p.resolve({ result, ms });
-        else p.reject(workerError(error));
+        else p.reject(workerError(error, words));
       };
       w.onerror = (event) => rejectAll(failure(`The calculator stopped: ${event.message || 'the worker failed to start'}`, { code: 'Internal' }));
     }, (e) => rejectAll(failure(`The calculator did not start: ${e.message}`, { code: 'Internal' })));
@@ -118,6 +122,7 @@ export function createCalculator({ watchdogMs = 20000, onRestart = () => {} } = 
     watchdogMs,
     evaluations: 0,
     onBusy: () => {},
+    busy: () => running > 0,  // an evaluation is under way (the tests' hobsharpTest.settled())
     evaluate,
     // Ends the computation under way: the worker is ended and a fresh one started; every request
     // waiting rejects with code 'Cancelled'.

@@ -2,6 +2,7 @@
 // computes geometry; every number shown comes from the module's evaluate(case), in a worker.
 import { createStore } from './store.js';
 import { createCalculator } from './client.js';
+import { worded } from './views/field-names.js';
 import { startRecompute } from './recompute.js';
 import { loadPlotly, mountPlots } from './plots/passes.js';
 import { mountForm } from './form.js';
@@ -40,10 +41,11 @@ import { setModuleLimits } from './limits.js';
 import { setResultFields } from './result-fields.js';
 
 const store = createStore();
-const calculator = createCalculator();
+const calculator = createCalculator({ words: (error) => worded(error).text });
 loadPlotly().catch(() => {});  // in parallel with the calculator; a failure is reported when drawing
 
 const hooks = installHooks(store, calculator);
+hooks.watch(calculator.busy);
 mountAccess();
 mountStatus(store);
 mountCancel(calculator);

@@ -19,6 +19,13 @@ export function fieldNames() {
     'axes.Z': { text: 'Run axis Z', html: 'Run axis Z' }, 'axes.A': { text: 'Run axis A', html: 'Run axis A' },
     'axes.B': { text: 'Run axis B', html: 'Run axis B' },
   };
+  // The correction's options and the inspection's inputs, as their labels say (outside the form).
+  for (const [path, text] of Object.entries({
+    'correction.locked': 'Locked coefficients', 'correction.lockedAxes': 'Locked axes', 'correction.method': 'Correction method', 'correction.probeNoise': 'Probe noise σ', 'correction.wheel': 'Wheel correction',
+    'correction.resolution.X': 'Resolution of X', 'correction.resolution.Y': 'Resolution of Y', 'correction.resolution.Z': 'Resolution of Z',
+    'correction.resolution.A': 'Resolution of A', 'correction.resolution.B': 'Resolution of B',
+    'inspection.uncertainty': 'Measurement uncertainty U95', 'inspection.tolerances': 'Tolerance table',
+  })) names[path] = { text, html: escapeHtml(text) };
   for (const fieldset of document.querySelectorAll('#inputs fieldset[data-group]')) {
     const legend = fieldset.querySelector('legend');
     const words = legend.textContent.replace(/^\([A-Z]\)\s*/, '').trim();
@@ -33,7 +40,7 @@ export function fieldNames() {
 
 // {text, html} of an error in the form's words, or the calculator's message as it is.
 export function worded(error) {
-  const w = wordedError(error, fieldNames());
+  const w = wordedError({ field: error.field, message: error.calculatorMessage ?? error.message }, fieldNames());
   if (w) return w;
   const text = String(error.message || '');
   return { text, html: escapeHtml(text) };
