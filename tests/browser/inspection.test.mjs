@@ -56,7 +56,8 @@ test('the class with its conformity and the proven class lead, above the maps; s
   assert.deepEqual(rows.map((r) => r[0]), ['cutting-face form', 'radial alignment', 'gash lead', 'single pitch (adjacent spacing)', 'pitch jump']);
   assert.equal(rows[0].length, 9, 'with the columns after the correction');
   assert.match(rows[1][1], /^38\.\d{3} µm$/);
-  assert.deepEqual(rows[1].slice(2, 7), ['A*', 'undecided', 'B', 'series*', 'AA 25 · A 40* · B 80* · C 160* · D 315*']);
+  // The proven class B rests on B's 80 µm, a series value too: starred as well.
+  assert.deepEqual(rows[1].slice(2, 7), ['A*', 'undecided', 'B*', 'series*', 'AA 25 · A 40* · B 80* · C 160* · D 315*']);
   assert.match(await page.getAttribute('#inspection-table tr[data-check="radialAlignment"] td:nth-child(6)', 'title'), /^Luren Precision/);
   assert.match(await page.getAttribute('#inspection-table tr[data-check="radialAlignment"] td:nth-child(3)', 'title'),
     /^series value, not confirmed: enter the hob maker's table\. Luren/);
@@ -64,7 +65,7 @@ test('the class with its conformity and the proven class lead, above the maps; s
   assert.deepEqual(rows[0].slice(0, 7), ['cutting-face form', rows[0][1], 'not graded', '—', '—', '—', 'none in the table']);
   assert.match(rows[2][1], /µm per 100 mm$/);
   assert.equal(await page.textContent('#inspection-series-note'),
-    "* series value, not confirmed: enter the hob maker's table (the tolerance table below). The grade of the radial alignment rests on one.");
+    "* series value, not confirmed: enter the hob maker's table (the tolerance table below). The grade of the radial alignment rests on one. So does the proven class of the radial alignment.");
   assert.match(await page.textContent('#inspection-cumulative'),
     /^Cumulative spread of the cutting faces \(largest minus smallest gash deviation; information, not graded\): 5\.000 µm; predicted after the correction \d+\.\d{3} µm\.$/);
   // Not graded: what, and what to enter; the button opens the table at that check.

@@ -97,6 +97,11 @@ test('a grade that rests on a series value carries a *, and so do the series cel
   const radial = inspectionRows(r.inspection, { confidenceOf }).find((x) => x.check === 'radialAlignment');
   assert.equal(radial.grade, 'A');
   assert.equal(radial.gradeText, 'A*');
+  // The proven class rests on its own class's tolerance: a series value from A on.
+  assert.ok(['A', 'B', 'C', 'D'].includes(radial.proven), radial.proven);
+  assert.equal(radial.provenText, `${radial.proven}*`);
+  const noTable = inspectionRows(r.inspection).find((x) => x.check === 'radialAlignment');
+  assert.equal(noTable.provenText, radial.proven === 'A' ? 'A*' : radial.proven, 'without the table, the grade\'s own mark');
   assert.equal(radial.series, true);
   assert.equal(radial.confidence, 'series');
   assert.match(radial.source, /^Luren Precision.*series, not confirmed$/);

@@ -125,8 +125,10 @@ export function cumulativeText(inspection, unitOf = describedUnit) {
 }
 
 // One row per check computed: {check, label, unit, value, grade, gradeText, conformity, proven,
-// confidence, series, source, uncertainty, tolerances, after: {value, grade} | null}. gradeText
-// is the grade with a * when its tolerance is a series value. With the table in use and the band
+// provenText, confidence, series, source, uncertainty, tolerances, after: {value, grade} | null}.
+// gradeText is the grade with a * when its tolerance is a series value, and provenText the proven
+// class with a * when the tolerance it rests on is one (known from the table's cells, or the
+// grade's own when it is the same class). With the table in use and the band
 // (table, band, confidenceOf(check, klass) from tolerance-edit.js's cellConfidence), the class
 // tolerances carry the * of their own cells.
 export function inspectionRows(inspection, { unitOf = describedUnit, confidenceOf = null } = {}) {
@@ -140,7 +142,10 @@ export function inspectionRows(inspection, { unitOf = describedUnit, confidenceO
     return {
       check: k, label: label(k), unit: unitOf(`inspection.${k}`), value: num(c.value), grade: c.grade,
       gradeText: `${c.grade}${series ? '*' : ''}`,
-      conformity: c.conformity, proven: graded ? c.provenGrade : '', confidence: c.confidence || '', series,
+      conformity: c.conformity, proven: graded ? c.provenGrade : '',
+      provenText: !graded ? '' : `${c.provenGrade}${c.provenGrade === 'none' ? ''
+        : confidenceOf ? star(c.provenGrade) : c.provenGrade === c.grade && series ? '*' : ''}`,
+      confidence: c.confidence || '', series,
       source: c.source || '', uncertainty: num(c.uncertainty),
       tolerances: (c.classes || []).map((name, i) => `${name} ${fmt(c.tolerances[i], 4)}${star(name)}`).join(' · ') || 'none in the table',
       after: k in a || afterChecks[k] ? { value: num(a[k]), grade: afterChecks[k] ? afterChecks[k].grade : '' } : null,

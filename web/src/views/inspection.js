@@ -40,7 +40,7 @@ function rowHtml(r, after, notGraded) {
     `<td class="num">${value(r.value, escapeHtml(r.unit))}</td>`,
     `<td class="word" data-series="${r.series}"${gradeTitle ? ` title="${escapeHtml(gradeTitle)}"` : ''}>${escapeHtml(graded ? r.gradeText : r.grade)}</td>`,
     graded ? `<td class="word" data-conformity="${escapeHtml(r.conformity)}" title="${escapeHtml(uText)}">${escapeHtml(r.conformity)}</td>` : '<td>—</td>',
-    `<td class="word">${graded ? escapeHtml(r.proven) : '—'}</td>`,
+    `<td class="word"${r.provenText.endsWith('*') ? ` title="${escapeHtml(SERIES_NOTE)}"` : ''}>${graded ? escapeHtml(r.provenText) : '—'}</td>`,
     graded ? `<td class="word" data-confidence="${escapeHtml(r.confidence)}" title="${escapeHtml(r.source)}">${
       escapeHtml(CONFIDENCE_WORDS[r.confidence] || r.confidence)}</td>` : '<td>—</td>',
     `<td class="tolerances">${r.tolerances.split(' · ').map((t) => `<span>${escapeHtml(t)}</span>`).join(' · ')}</td>`,
@@ -74,10 +74,12 @@ function show(result, state) {
   $('#inspection-table tbody').innerHTML = rows.map((r) => rowHtml(r, after, i.notGraded)).join('');
 
   const starred = rows.filter((r) => r.series);
+  const provenStarred = rows.filter((r) => r.provenText.endsWith('*'));
   const anySeries = starred.length || rows.some((r) => r.tolerances.includes('*'));
   $('#inspection-series-note').hidden = !anySeries;
   $('#inspection-series-note').textContent = anySeries ? `* ${SERIES_NOTE} (the tolerance table below). ${starred.length
-    ? `The grade of the ${starred.map((r) => r.label).join(' and the ')} rests on one.` : 'No grade rests on one.'}` : '';
+    ? `The grade of the ${starred.map((r) => r.label).join(' and the ')} rests on one.` : 'No grade rests on one.'}${provenStarred.length
+    ? ` So does the proven class of the ${provenStarred.map((r) => r.label).join(' and the ')}.` : ''}` : '';
   const cumulative = cumulativeText(i);
   $('#inspection-cumulative').hidden = !cumulative;
   $('#inspection-cumulative').textContent = cumulative || '';
