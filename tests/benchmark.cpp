@@ -24,14 +24,15 @@ std::string paperCaseText() {
   return s.str();
 }
 
-SharpeningJob paperJob(int radial, int axial, int degree = 4) {
+CaseInput paperInput(int radial, int axial, int degree = 4) {
   CaseInput in = parseCase(paperCaseText()).value();
   in.grid.radial = radial;
   in.grid.axial = axial;
   in.degree = degree;
-  SharpeningJob job = resolveJob(in).value();
-  return job;
+  return in;
 }
+
+SharpeningJob paperJob(int radial, int axial, int degree = 4) { return resolveJob(paperInput(radial, axial, degree)).value(); }
 
 // A machine error of the paper's size, measured on the grid.
 Eigen::MatrixXd measuredFor(const SharpeningJob& job) {
@@ -48,7 +49,7 @@ Eigen::MatrixXd measuredFor(const SharpeningJob& job) {
 // identification of the machine error, rounded axes, re-simulated faces), for Tab. 1 on 9 x 5.
 void CorrectionCycle(benchmark::State& state) {
   SharpeningJob job = paperJob(5, 9);
-  job.input.measured = measuredFor(job);
+  job.measured = MeasuredFace::onGrid(measuredFor(job));
   for (auto _ : state) {
     auto e = evaluate(job);
     if (!e) state.SkipWithError(e.error().message.c_str());
@@ -59,7 +60,7 @@ void CorrectionCycle(benchmark::State& state) {
 // The same on a 51 x 26 grid (51 along the gash, 26 radially) with degree-6 axes (35 coefficients).
 void CorrectionCycle51x26Degree6(benchmark::State& state) {
   SharpeningJob job = paperJob(26, 51, 6);
-  job.input.measured = measuredFor(job);
+  job.measured = MeasuredFace::onGrid(measuredFor(job));
   for (auto _ : state) {
     auto e = evaluate(job);
     if (!e) state.SkipWithError(e.error().message.c_str());
@@ -113,9 +114,10 @@ void DenseTopography101(benchmark::State& state) {
 // The rake-face inspection of the paper's case (docs/inspection.md): the measured face's
 // checks, 12 gashes' spacing and indexing correction, the class verdict, and the same after the correction.
 void InspectionPaperCase(benchmark::State& state) {
-  SharpeningJob job = paperJob(5, 9);
-  job.input.measured = measuredFor(job);
-  job.input.inspection.gashDeviations = {0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1};
+  CaseInput in = paperInput(5, 9);
+  in.inspection.gashDeviations = {0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1};
+  SharpeningJob job = resolveJob(in).value();
+  job.measured = MeasuredFace::onGrid(measuredFor(job));
   auto evaluated = evaluate(job);
   if (!evaluated) {
     state.SkipWithError(evaluated.error().message.c_str());
@@ -170,7 +172,7 @@ void CorrectPoints2000(benchmark::State& state) {
 // second-degree shape along the radius) with the benchmark's machine error.
 void WheelCorrectionCycle(benchmark::State& state) {
   SharpeningJob job = paperJob(5, 9);
-  CaseInput worn = job.input;
+  CaseInput worn = paperInput(5, 9);
   const ContactRange range = wheelContactRange(job.setup, job.rootRadius, job.outerRadius).value();
   worn.wheelProfileOffset = WheelPointsInput{};
   for (int k = 0; k <= 8; ++k) {
@@ -178,7 +180,7 @@ void WheelCorrectionCycle(benchmark::State& state) {
     worn.wheelProfileOffset->R.push_back(range.min + (range.max - range.min) * k / 8);
     worn.wheelProfileOffset->values.push_back(10 * z * z - 5);
   }
-  job.input.measured = measuredFor(resolveJob(worn).value());
+  job.measured = MeasuredFace::onGrid(measuredFor(resolveJob(worn).value()));
   job.correction.wheel = true;
   for (auto _ : state) {
     auto e = evaluate(job);
@@ -191,11 +193,12 @@ void WheelCorrectionCycle(benchmark::State& state) {
 // above, then the cutting edges of 5 teeth x 2 flanks x 21 radii on the measured face, with a
 // relief of 4.5 mm over 12 gashes.
 void InspectionAndGearEffectPaperCase(benchmark::State& state) {
-  SharpeningJob job = paperJob(5, 9);
-  job.input.measured = measuredFor(job);
-  job.input.inspection.gashDeviations = {0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1};
-  job.input.hob.relief.gashes = 12;
-  job.input.hob.relief.relief = 4.5;
+  CaseInput in = paperInput(5, 9);
+  in.inspection.gashDeviations = {0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1};
+  in.hob.relief.gashes = 12;
+  in.hob.relief.relief = 4.5;
+  SharpeningJob job = resolveJob(in).value();
+  job.measured = MeasuredFace::onGrid(measuredFor(job));
   auto evaluated = evaluate(job);
   if (!evaluated || !evaluated->gearEffect) {
     state.SkipWithError(evaluated ? evaluated->gearEffectReason.c_str() : evaluated.error().message.c_str());

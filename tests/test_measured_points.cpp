@@ -85,6 +85,38 @@ TEST(MeasuredPoints, PointsAtAGridsPositionsGiveExactlyTheGridResult) {
   EXPECT_EQ(c->correction->before.normal, a->correction->before.normal);
 }
 
+// The job holds the measurement resolved (measured_face.h), not the case's fields: the grid with
+// its source, the points at the grid's positions as that grid, and points off it as points.
+TEST(MeasuredPoints, TheJobHoldsTheMeasuredFaceWithItsSource) {
+  const Json grid = gridCase();
+  const SharpeningJob none = test::jobOf(test::paperCase());
+  EXPECT_EQ(none.measured.source, FaceSource::Simulated);
+  EXPECT_FALSE(none.measured.given());
+
+  const SharpeningJob onGrid = test::jobOf(parseCase(grid.dump()).value());
+  EXPECT_EQ(onGrid.measured.source, FaceSource::Measured);
+  ASSERT_TRUE(onGrid.measured.grid.has_value());
+  EXPECT_FALSE(onGrid.measured.atPoints());
+  EXPECT_EQ((*onGrid.measured.grid)(1, 2), grid["measured"][1][2].get<double>());
+
+  const SharpeningJob atPositions = test::jobOf(parseCase(pointsCase(grid).dump()).value());
+  EXPECT_EQ(atPositions.measured.source, FaceSource::MeasuredPoints);
+  ASSERT_TRUE(atPositions.measured.grid.has_value());
+  EXPECT_EQ(*atPositions.measured.grid, *onGrid.measured.grid);  // exactly: the same numbers, put in place
+
+  Json off = grid;
+  off.erase("measured");
+  off["measuredPoints"] = Json::array({Json::array({25.5, 1.0, 2.0}), Json::array({30.5, -10.0, -1.5}),
+                                       Json::array({35.5, 20.0, 0.5})});
+  const SharpeningJob points = test::jobOf(parseCase(off.dump()).value());
+  EXPECT_EQ(points.measured.source, FaceSource::MeasuredPoints);
+  EXPECT_FALSE(points.measured.grid.has_value());
+  ASSERT_EQ(points.measured.probes.size(), 3u);
+  EXPECT_EQ(points.measured.probes[1].r, 30.5);
+  EXPECT_EQ(points.measured.probes[1].x, -10.0);
+  EXPECT_EQ(points.measured.deviations(1), -1.5);
+}
+
 TEST(MeasuredPoints, BadPointsAreRefusedNamingThePoint) {
   const Json good = pointsCase(gridCase());
   auto with = [&](std::size_t k, const Json& point) {

@@ -2,9 +2,38 @@
 
 #include <cmath>
 
+#include "number_text.h"
 #include "units.h"
 
 namespace hobsharp {
+
+Outcome<void> checkRelief(const HobReliefInput& out, double outerDiameter, double pitchDiameter,
+                          double normalPressureAngle) {
+  if (out.gashes && (*out.gashes < 1 || *out.gashes > kMaxHobGashes))
+    return refuse("hob.gashes", "must be a whole number from 1 to " + std::to_string(kMaxHobGashes) + "; got " +
+                                    std::to_string(*out.gashes) + ".");
+  const double radius = outerDiameter / 2;
+  if (out.relief && (*out.relief <= 0 || *out.relief >= radius))
+    return refuse("hob.relief", "must be positive and below the hob's outer radius (" + numberText(radius) +
+                                    " mm); got " + exactText(*out.relief) + " mm.");
+  if (out.sideReliefAngle && (*out.sideReliefAngle <= 0 || *out.sideReliefAngle > kMaxSideReliefAngle))
+    return refuse("hob.sideReliefAngle", "must lie over 0 up to " + numberText(kMaxSideReliefAngle) + " deg; got " +
+                                             exactText(*out.sideReliefAngle) + " deg.");
+  if (out.relief && out.sideReliefAngle) {
+    if (!out.gashes)
+      return refuse("hob.gashes", "is needed to check hob.relief against hob.sideReliefAngle.");
+    const double alpha = normalPressureAngle * kRadPerDeg, rp = pitchDiameter / 2;
+    if (alpha > 0 && rp > 0) {
+      const double implied =
+          sideReliefAngleAt(reliefPerRadianFromCam(*out.relief, *out.gashes), rp, alpha) * kDegPerRad;
+      if (std::abs(implied - *out.sideReliefAngle) > kSideReliefAgreement)
+        return refuse("hob.sideReliefAngle", "disagrees with hob.relief and hob.gashes, which give " +
+                                                 numberText(implied) + " deg at the pitch diameter; got " +
+                                                 exactText(*out.sideReliefAngle) + " deg.");
+    }
+  }
+  return success();
+}
 
 double reliefPerRadianFromCam(double relief, int gashes) { return relief * gashes / (2 * kPi); }
 

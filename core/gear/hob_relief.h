@@ -10,6 +10,8 @@
 #include <optional>
 #include <string>
 
+#include "outcome.h"
+
 namespace hobsharp {
 
 struct HobReliefInput {
@@ -25,6 +27,14 @@ constexpr double kSideReliefAgreement = 0.01;
 constexpr int kMaxHobGashes = 100;
 // The largest side relief angle taken, deg.
 constexpr double kMaxSideReliefAngle = 30;
+
+// hob.gashes a whole number from 1 to kMaxHobGashes, hob.relief positive and below the hob's outer
+// radius, hob.sideReliefAngle over 0 up to kMaxSideReliefAngle, and, when the case gives the relief
+// and the side relief angle, the gashes too and the two agreeing to kSideReliefAgreement at the
+// pitch diameter; the hob's diameters in mm, its normal pressure angle in deg. The refusal names
+// the hob.* field.
+Outcome<void> checkRelief(const HobReliefInput& relief, double outerDiameter, double pitchDiameter,
+                          double normalPressureAngle);
 
 // k = K z / 2 pi, mm/rad.
 double reliefPerRadianFromCam(double relief, int gashes);

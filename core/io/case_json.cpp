@@ -233,35 +233,13 @@ class Node {
   } while (false)
 
 // The hob's relief for the gear effect (docs/case-format.md): `hob.gashes`, and `hob.relief` or
-// `hob.sideReliefAngle` (both agreeing to kSideReliefAgreement when the case gives both).
+// `hob.sideReliefAngle`; its value rules are checkRelief()'s (hob_relief.h), checked as it is read.
 Outcome<HobReliefInput> readRelief(const Node& h, const HobInput& hob) {
   HobReliefInput out;
   HOBSHARP_ASSIGN(out.gashes, h.optionalInteger("gashes"));
   HOBSHARP_ASSIGN(out.relief, h.optionalNumber("relief"));
   HOBSHARP_ASSIGN(out.sideReliefAngle, h.optionalNumber("sideReliefAngle"));
-  if (out.gashes && (*out.gashes < 1 || *out.gashes > kMaxHobGashes))
-    return refuse(h.field("gashes"), "must be a whole number from 1 to " + std::to_string(kMaxHobGashes) + "; got " +
-                                         std::to_string(*out.gashes) + ".");
-  const double radius = hob.outerDiameter / 2;
-  if (out.relief && (*out.relief <= 0 || *out.relief >= radius))
-    return refuse(h.field("relief"), "must be positive and below the hob's outer radius (" + numberText(radius) +
-                                         " mm); got " + exactText(*out.relief) + " mm.");
-  if (out.sideReliefAngle && (*out.sideReliefAngle <= 0 || *out.sideReliefAngle > kMaxSideReliefAngle))
-    return refuse(h.field("sideReliefAngle"), "must lie over 0 up to " + numberText(kMaxSideReliefAngle) + " deg; got " +
-                                                  exactText(*out.sideReliefAngle) + " deg.");
-  if (out.relief && out.sideReliefAngle) {
-    if (!out.gashes)
-      return refuse(h.field("gashes"), "is needed to check hob.relief against hob.sideReliefAngle.");
-    const double alpha = hob.normalPressureAngle * kRadPerDeg, rp = hob.pitchDiameter / 2;
-    if (alpha > 0 && rp > 0) {
-      const double implied =
-          sideReliefAngleAt(reliefPerRadianFromCam(*out.relief, *out.gashes), rp, alpha) * kDegPerRad;
-      if (std::abs(implied - *out.sideReliefAngle) > kSideReliefAgreement)
-        return refuse(h.field("sideReliefAngle"), "disagrees with hob.relief and hob.gashes, which give " +
-                                                      numberText(implied) + " deg at the pitch diameter; got " +
-                                                      exactText(*out.sideReliefAngle) + " deg.");
-    }
-  }
+  HOBSHARP_TRY(checkRelief(out, hob.outerDiameter, hob.pitchDiameter, hob.normalPressureAngle));
   return out;
 }
 

@@ -215,7 +215,7 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
   const Inspection& in = e.inspection;
   const bool helical = e.job.setup.face.helical();
   const bool gashes = e.indexCorrection.has_value();
-  const ToleranceTable& table = toleranceTableOf(e.job.input.inspection);
+  const ToleranceTable& table = e.job.inspection.table();
   v.text({"inspection.source", "", "the face inspected: \"gashTopographies\" (the worst of the case's per-gash grids), \"measured\" (the case's grid), \"measuredPoints\" (the case's points) or \"simulated\" (the axes run)"},
          e.gashFaces ? "gashTopographies" : sourceName(inspectedFace(e).source));
   std::string band = "outside the table's module bands";
@@ -289,7 +289,7 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
                 "). Enter the hob maker's tolerances in the tolerance table; the case keeps them.";
   v.text({"inspection.notGraded", "", "the checks without a tolerance in the module band and what to enter (\"\" when every check is graded)"},
          notGraded);
-  const bool ownTable = e.job.input.inspection.tolerances.has_value();
+  const bool ownTable = e.job.inspection.ownTable.has_value();
   for (Check c : kChecks) {
     const CheckResult* r = in.find(c);
     if (!r && !every) continue;

@@ -3,7 +3,6 @@
 // deviations in µm. Optional fields are empty when the file leaves them out.
 #pragma once
 
-#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,45 +10,13 @@
 #include <Eigen/Core>
 
 #include "axis_polynomials.h"
-#include "coefficient.h"
-#include "hob_relief.h"
+#include "correction_input.h"
+#include "grid_input.h"
+#include "hob_input.h"
 #include "inspection_input.h"
 #include "measured_points.h"
-#include "tooth_face.h"
 
 namespace hobsharp {
-
-struct HobInput {
-  double normalModule = 0;         // mm
-  double normalPressureAngle = 0;  // deg
-  double outerDiameter = 0;        // d_a, mm
-  double pitchDiameter = 0;        // d_p, mm
-  double gashDepth = 0;            // mm, from the outer diameter
-  double length = 0;               // mm
-  double rakeOffset = 0;           // e, mm
-  GashKind gash = GashKind::Helical;
-  Hand hand = Hand::Right;
-  std::optional<double> gashLead;        // L_c, mm, positive
-  std::optional<double> gashHelixAngle;  // deg, at the pitch diameter
-  HobReliefInput relief;                 // hob.gashes, hob.relief, hob.sideReliefAngle (the gear effect)
-};
-
-struct GridInput {
-  std::optional<int> radial, axial;
-  std::optional<double> rMin, rMax, xMin, xMax;  // mm
-};
-
-struct CorrectionInput {
-  std::optional<std::string> method;      // "nonlinear" (the default) or "linear"
-  std::optional<double> probeNoise;       // sigma, µm
-  // Per axis, as given: µm for X, Y, Z, degrees for A, B; the machine defaults where not given.
-  std::array<std::optional<double>, kAxisCount> resolution;
-  std::optional<double> truncation;
-  std::optional<double> amplification;
-  std::vector<Axis> lockedAxes;
-  std::vector<Coefficient> locked;
-  std::optional<bool> wheel;              // solve for a wheel-profile offset too (default false)
-};
 
 // One grinding pass of the history: the axes the machine ran and the face measured after it, as
 // a grid (µm, grid.radial x grid.axial) or as the measuring machine's points, as `passes` holds
@@ -80,10 +47,8 @@ struct JobRecord {
 // The longest each of the job's texts may be, in characters (Unicode code points).
 constexpr int kMaxJobText = 60, kMaxJobCustomer = 100, kMaxJobNotes = 1000;
 
-// What the case file's optional fields default to.
+// What the case file's `degree` defaults to (the grid's defaults: grid_input.h).
 constexpr int kDefaultDegree = 4;
-constexpr int kDefaultGridRadial = 5;
-constexpr int kDefaultGridAxial = 9;
 
 struct CaseInput {
   HobInput hob;
@@ -100,29 +65,16 @@ struct CaseInput {
   std::vector<PassInput> passes;  // earlier passes, oldest first; the calculation does not use them
   InspectionInput inspection;     // per-gash deviations and an edited tolerance table (`inspection`)
   // The measuring machine's points, an alternative to `measured`; resolveJob() turns them into the
-  // measured grid (measured_points.h).
+  // measured face (measured_face.h).
   std::optional<std::vector<MeasuredPoint>> measuredPoints;
   std::optional<WheelPointsInput> wheelProfileOffset;    // wheel.profileOffset: R mm, offset µm
   std::optional<WheelPointsInput> wheelMeasuredProfile;  // wheel.measuredProfile: R mm, Z mm
   JobRecord job;                                         // `job`: the record only
 };
 
-// The largest grid the calculator takes, per direction.
-constexpr int kMaxGridLines = 201;
 // The most points of a wheel's profile (wheel.profileOffset, wheel.measuredProfile): the wheel is
 // fitted to every point (0.6 s for 1,000, 3.4 s for 4,000 in the page; memory runs out near
 // 12,000), and a dressed wheel's profile has a few hundred.
 constexpr int kMaxWheelPoints = 2000;
-// How far a grid may reach past the face (root, tip, hob ends), mm.
-constexpr double kGridTolerance = 1e-3;
-// How far the helix angle given by hob.gashLead may differ from hob.gashHelixAngle when the case
-// gives both, deg.
-constexpr double kHelixAngleAgreement = 0.01;
-// The largest |measured deviation| taken, µm (10 mm): beyond any real grinding error or
-// what-if, and far below where the correction's squares and sums overflow (docs/case-format.md).
-constexpr double kMaxDeviation = 1e4;
-// The range of correction.resolution: µm for X, Y, Z and degrees for A, B.
-constexpr double kLeastLinearResolution = 1e-3, kMostLinearResolution = 1e3;
-constexpr double kLeastRotaryResolution = 1e-9, kMostRotaryResolution = 1;
 
 }  // namespace hobsharp

@@ -4,41 +4,31 @@
 
 namespace hobsharp {
 
-const char* sourceName(FaceSource s) {
-  switch (s) {
-    case FaceSource::Measured: return "measured";
-    case FaceSource::MeasuredPoints: return "measuredPoints";
-    case FaceSource::Simulated: return "simulated";
-  }
-  return "simulated";
-}
-
 InspectedFace inspectedFace(const Evaluation& e) {
-  const CaseInput& in = e.job.input;
-  const FaceSource given = in.measuredPoints ? FaceSource::MeasuredPoints : FaceSource::Measured;
-  // measuredPoints at the grid's positions became the job's grid (sharpening_job.cpp).
-  if (in.measured) return {*in.measured, given};
+  const MeasuredFace& measured = e.job.measured;
+  // measuredPoints at the grid's positions are the job's measured grid (measured_face.cpp).
+  if (measured.grid) return {*measured.grid, measured.source};
   // measuredPoints off the grid: the measurement as the identified error explains it, on the grid
   // (docs/measured-points.md).
-  if (e.correction && e.correction->atProbes()) return {e.correction->explainedOnGrid.normal, given};
+  if (e.correction && e.correction->atProbes()) return {e.correction->explainedOnGrid.normal, measured.source};
   return {e.topography.normal, FaceSource::Simulated};
 }
 
 void inspectEvaluation(Evaluation& e) {
   const SharpeningJob& job = e.job;
-  const InspectionInput& in = job.input.inspection;
-  const ToleranceTable& table = toleranceTableOf(in);
+  const InspectionPlan& plan = job.inspection;
+  const ToleranceTable& table = plan.table();
   const bool helical = job.setup.face.helical();
-  const double module = job.input.hob.normalModule;
+  const double module = plan.normalModule;
   const bool points = e.correction && e.correction->atProbes();
   const Eigen::MatrixXd& face = inspectedFace(e).normal;
   const FaceLines lines = FaceLines::of(job.setup, job.grid);
-  const MeasurementUncertainty u = MeasurementUncertainty::of(in.uncertainty, job.grid.x.back() - job.grid.x.front());
+  const MeasurementUncertainty& u = plan.uncertainty;
   // One topography per gash: their deviations at the pitch radius, and the worst gash's face checks.
   FaceChecks faceChecks = checkFace(face, lines, helical);
-  std::vector<double> deviations = in.gashDeviations;
-  if (!in.gashTopographies.empty()) {
-    e.gashFaces = inspectGashFaces(in.gashTopographies, lines, helical, job.setup.face.pitchRadius);
+  std::vector<double> deviations = plan.gashDeviations;
+  if (!plan.gashTopographies.empty()) {
+    e.gashFaces = inspectGashFaces(plan.gashTopographies, lines, helical, job.setup.face.pitchRadius);
     deviations = e.gashFaces->deviations;
     faceChecks = e.gashFaces->worst;
   }
@@ -74,9 +64,9 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
   // The machine ground a face with these axes and its error, but the axes alone grind none the wheel
   // envelops (a pass after a large machine error): with a measurement, the nominal axes' face stands
   // in (the simulated topography is theirs) and the correction is linearised there (correction.h).
-  const bool measurement = job.input.measured || !job.probes.empty();
+  const MeasuredFace& measured = job.measured;
   const AxisPolynomials* linearisedAt = nullptr;
-  if (!face && measurement && job.correction.method == CorrectionMethod::Nonlinear) {
+  if (!face && measured.given() && job.correction.method == CorrectionMethod::Nonlinear) {
     face = simulateGroundFace(s, job.nominalAxes, job.grid);
     linearisedAt = &job.nominalAxes;
   }
@@ -88,21 +78,22 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
     e.dressedProfile = dressedProfile(s, e.wheelProfile);
     e.offsetSensitivities = wheelOffsetSensitivity(e.groundFace, s.wheel);
   }
-  if (job.input.measured && job.correction.wheel) {  // docs/method.md §Wheel-profile correction
+  if (measured.grid && job.correction.wheel) {  // docs/method.md §Wheel-profile correction
     const double rLow = std::max(job.grid.r.front(), job.rootRadius), rHigh = std::min(job.grid.r.back(), job.outerRadius);
-    auto c = correctAxesAndWheel(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction,
+    auto c = correctAxesAndWheel(s, job.nominalAxes, job.runAxes, e.groundFace, *measured.grid, job.correction,
                                  e.wheelProfile, rLow, rHigh, linearisedAt);
     if (!c) return c.error();
     e.correction = std::move(c->correction);
     e.wheelCorrection = std::move(c->wheel);
-  } else if (job.input.measured) {
-    auto c = correctMeasuredFace(s, job.nominalAxes, job.runAxes, e.groundFace, *job.input.measured, job.correction,
+  } else if (measured.grid) {
+    auto c = correctMeasuredFace(s, job.nominalAxes, job.runAxes, e.groundFace, *measured.grid, job.correction,
                                  nullptr, nullptr, linearisedAt);
     if (!c) return c.error();
     e.correction = std::move(c).value();
   }
-  if (!job.probes.empty()) {  // docs/measured-points.md
-    auto c = correctMeasuredPoints(s, job.nominalAxes, job.runAxes, job.grid, job.probes, job.probeMeasured, job.correction);
+  if (measured.atPoints()) {  // docs/measured-points.md
+    auto c = correctMeasuredPoints(s, job.nominalAxes, job.runAxes, job.grid, measured.probes, measured.deviations,
+                                   job.correction);
     if (!c) return c.error();
     e.correction = std::move(c).value();
   }
@@ -116,7 +107,7 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
 Outcome<Evaluation> evaluate(const SharpeningJob& job) {
   auto e = evaluateJob(job);
   // A wheel too wild to grind with is the case's measured profile when it gives one (envelope.h).
-  if (!e && e.error().field == kWildWheelField && job.input.wheelMeasuredProfile) {
+  if (!e && e.error().field == kWildWheelField && job.wheelMeasured) {
     Error w = e.error();
     w.field = "wheel.measuredProfile";
     return w;

@@ -56,6 +56,7 @@ struct Evaluation {
   std::optional<WheelCorrection> wheelCorrection;
 };
 
+// Reads the resolved job alone (sharpening_job.h), never the case's raw input.
 Outcome<Evaluation> evaluate(const SharpeningJob& job);
 
 // Fills e.inspection, e.indexCorrection and e.inspectionAfter from the rest of `e` (evaluate()
@@ -66,13 +67,10 @@ void inspectEvaluation(Evaluation& e);
 // (gear_evaluation.cpp; evaluate() calls it after the inspection; the benchmark times it alone).
 void gearEvaluation(Evaluation& e);
 
-// Where the face the inspection and the gear effect take comes from (inspection.source).
-enum class FaceSource { Simulated, Measured, MeasuredPoints };
-const char* sourceName(FaceSource s);  // "simulated", "measured", "measuredPoints"
-
-// The face the inspection and the gear effect take, and where it comes from: the measured grid
-// (also measuredPoints at the grid's positions), or for measuredPoints off the grid the measurement
-// as the identified error explains it there, else the simulated topography.
+// The face the inspection and the gear effect take, and where it comes from (FaceSource,
+// measured_face.h): the measured grid (also measuredPoints at the grid's positions), or for
+// measuredPoints off the grid the measurement as the identified error explains it there, else the
+// simulated topography.
 struct InspectedFace {
   const Eigen::MatrixXd& normal;  // µm, on the grid
   FaceSource source;

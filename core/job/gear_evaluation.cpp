@@ -16,16 +16,14 @@ constexpr double kReferenceHook = 0.1 * kRadPerDeg;
 
 void gearEvaluation(Evaluation& e) {
   const SharpeningJob& job = e.job;
-  const HobInput& hob = job.input.hob;
-  const double alpha = hob.normalPressureAngle * kRadPerDeg;
-  const ReliefPerRadian k = reliefPerRadian(hob.relief, job.setup.face.pitchRadius, alpha);
+  const ReliefPerRadian& k = job.gear.relief;
   e.gearEffect.reset();
   e.pressureAnglePerRake.reset();
   e.gearEffectReason = k.missing;
   if (!k.value) return;
   // The face inspected (inspectEvaluation): the measured grid, else the simulated topography.
   const Eigen::MatrixXd& face = inspectedFace(e).normal;
-  const BasicRack rack{hob.normalModule, alpha, job.setup.face.pitchRadius};
+  const BasicRack& rack = job.gear.rack;
   auto g = gearEffect(job.setup.face, job.setup.normalSign, job.grid.r, job.grid.x, face, rack, *k.value);
   if (!g) {
     e.gearEffectReason = "No gear effect: " + g.error().message.substr(g.error().field.size() + 2);

@@ -22,6 +22,10 @@ struct MeasuredPoint {
   double deviation = 0;   // µm, plus = excess material
 };
 
+// The largest |measured deviation| taken, µm (10 mm): beyond any real grinding error or
+// what-if, and far below where the correction's squares and sums overflow (docs/case-format.md).
+constexpr double kMaxDeviation = 1e4;
+
 // Where the points may lie: on the rake face between the gash root and the outer radius, and
 // along the gash within `axialReach` of x = 0 (the hob's ends), each with `tolerance` (mm). Two
 // points within `tolerance` of each other in both r and x are one point measured twice.

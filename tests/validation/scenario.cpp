@@ -75,7 +75,7 @@ std::string describe(const CaseInput& c) {
 Outcome<AxisPolynomials> randomError(Random& rnd, const SharpeningJob& job, double rms) {
   auto face = simulateGroundFace(job.setup, job.runAxes, job.grid);
   if (!face) return face.error();
-  const std::vector<Coefficient> cs = allCoefficients(job.input.degree);
+  const std::vector<Coefficient> cs = allCoefficients(job.runAxes.degree());
   const Eigen::MatrixXd S = sensitivityMatrix(*face, cs).normal;
   const MotionRange range = motionRange(*face);
   const double reach = std::max(std::abs(range.min), std::abs(range.max));

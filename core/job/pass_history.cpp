@@ -1,0 +1,26 @@
+#include "pass_history.h"
+
+#include <string>
+
+#include "correction_input.h"
+#include "measured_face.h"
+#include "run_axes.h"
+
+namespace hobsharp {
+
+Outcome<void> checkPasses(const std::vector<PassInput>& passes, int degree, const FaceGrid& grid, const PointRegion& region) {
+  for (size_t i = 0; i < passes.size(); ++i) {
+    const std::string pass = "passes[" + std::to_string(i) + "].";
+    if (auto r = checkAxes(passes[i].axes, degree, pass + "axes"); !r) return r;
+    if (passes[i].measuredPoints) {
+      if (auto r = checkPoints(*passes[i].measuredPoints, region, pass + "measuredPoints"); !r) return r;
+    } else if (auto r = checkMeasured(passes[i].measured, grid, pass + "measured"); !r) {
+      return r;
+    }
+    if (passes[i].correction)
+      if (auto r = correctionOptions(*passes[i].correction, degree, pass + "correction"); !r) return r.error();
+  }
+  return success();
+}
+
+}  // namespace hobsharp
