@@ -24,9 +24,9 @@ export function fieldTable(fields) {
     const kind = KINDS[f.kind];
     if (!kind) throw new Error(`${f.path}: unknown kind ${f.kind}`);
     const meaning = f.when ? `${f.meaning}; ${f.when}` : f.meaning;
-    return `| \`${f.path}\` | ${kind} | ${cell(f.unit)} | ${cell(meaning)} |`;
+    return `| \`${f.path}\` | ${kind} | ${cell(f.unit)} | ${cell(f.label || '')} | ${cell(meaning)} |`;
   });
-  return ['| field | holds | unit | meaning |', '|---|---|---|---|', ...rows].join('\n');
+  return ['| field | holds | unit | label | meaning |', '|---|---|---|---|---|', ...rows].join('\n');
 }
 
 // The table in docs/api.md's text, between the markers (null without them).
