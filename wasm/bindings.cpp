@@ -176,6 +176,20 @@ class JsLimits final : public LimitsVisitor {
   }
 };
 
+// The limits' entries as core/io/limits_model.h describes them: [{path, kind, unit, words}].
+val limitFieldList() {
+  val a = val::array();
+  for (const LimitDescription& d : limitFields()) {
+    val o = val::object();
+    o.set("path", d.path);
+    o.set("kind", d.kind);
+    o.set("unit", d.unit);
+    o.set("words", d.words);
+    a.call<void>("push", o);
+  }
+  return a;
+}
+
 // What the page needs to know before it has a result: the case file's limits and defaults.
 val limits() {
   JsLimits l;
@@ -192,4 +206,5 @@ EMSCRIPTEN_BINDINGS(hobsharp) {
   emscripten::function("evaluateJsonText", &hobsharp::evaluateJsonText);
   emscripten::function("resultFields", &hobsharp::resultFieldList);
   emscripten::function("limits", &hobsharp::limits);
+  emscripten::function("limitFields", &hobsharp::limitFieldList);
 }
