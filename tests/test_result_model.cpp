@@ -1,5 +1,6 @@
 // The result model (core/result_model.h): one description, the same fields in the JSON writer and
 // in the field list; optional fields only where they belong; no non-finite number handed out.
+#include <algorithm>
 #include <limits>
 #include <set>
 #include <string>
@@ -72,6 +73,17 @@ TEST(ResultModel, FieldPathsAreUniqueAndOptionalOnesSayWhen) {
   }
   EXPECT_EQ(paths.count("topography.normal"), 1u);
   EXPECT_EQ(paths.count("correction.residual"), 1u);
+  // A label is what the page shows beside the figure: a few words, never a field's path.
+  const std::vector<FieldDescription> fields = resultFields();
+  for (const FieldDescription& f : fields) {
+    if (f.label.empty()) continue;
+    EXPECT_LE(f.label.size(), 80u) << f.path;  // bytes
+    for (const std::string& p : paths) EXPECT_EQ(f.label.find(p), std::string::npos) << f.path << ": " << f.label;
+  }
+  for (const char* p : {"topography.rms", "correction.rmsBefore", "correction.sseAfter", "gearEffect.left.profileSlope",
+                        "correction.precision.facePerError.A"})
+    EXPECT_FALSE(std::find_if(fields.begin(), fields.end(), [&](const FieldDescription& f) { return f.path == p; })->label.empty())
+        << p;
   for (const char* p : {"inspection.radialAlignment", "inspection.cuttingFaceForm", "inspection.gashLead",
                         "inspection.class", "inspection.limitingCheck", "inspection.checks.radialAlignment.tolerances",
                         "inspection.after.class", "inspection.pitchJump", "inspection.uncertainty", "inspection.provenClass",

@@ -3,6 +3,7 @@
 //   Module.evaluate(case[, {typedArrays: true}])  the result of a hobsharp-case/1 object
 //   Module.evaluateToJson(case)                   the C++ JSON writer's text for it (the CLI's output)
 //   Module.resultFields(), Module.limits()        the result's fields, the case's limits and defaults
+//   Module.limitFields()                          the limits' entries: [{path, kind, unit, words}]
 //   Module.HobSharpError                          what evaluate and evaluateToJson throw
 // The results, the fields and the limits come from C++ in their final shape (wasm/bindings.cpp);
 // this file only checks what JSON cannot carry (NaN, Infinity) and throws the failures.

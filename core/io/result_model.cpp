@@ -153,7 +153,7 @@ class FieldList final : public ResultVisitor {
 
  private:
   void add(const ResultField& f, FieldKind kind) {
-    fields.push_back({f.path, fieldKindName(kind), f.unit, f.meaning, f.when});
+    fields.push_back({f.path, fieldKindName(kind), f.unit, f.meaning, f.when, f.label});
   }
 };
 
@@ -379,12 +379,12 @@ void visitGearEffect(const Evaluation& e, ResultVisitor& v, bool every) {
   for (const bool left : {true, false}) {
     const FlankFields& f = left ? kLeft : kRight;
     const ProfileFigures& p = left ? g.left : g.right;
-    v.number({f.slope, "µm", "profile slope deviation fH_alpha on the gear flank cut by the hob's left (or right) flank: largest magnitude over the teeth, signed (plus = more material toward the gear's tip)", kWithRelief},
+    v.number({f.slope, "µm", "profile slope deviation fH_alpha on the gear flank cut by the hob's left (or right) flank: largest magnitude over the teeth, signed (plus = more material toward the gear's tip)", kWithRelief, "profile slope deviation fHα (largest over the teeth)"},
              p.slope);
-    v.number({f.angle, "arc-min", "the pressure-angle error of that tooth's edge: -fH_alpha over the evaluated profile length (plus = larger pressure angle)", kWithRelief},
+    v.number({f.angle, "arc-min", "the pressure-angle error of that tooth's edge: -fH_alpha over the evaluated profile length (plus = larger pressure angle)", kWithRelief, "pressure-angle error of that tooth"},
              p.pressureAngle * kArcMinPerRad);
-    v.number({f.form, "µm", "profile form deviation ff_alpha: width of the band about the least-squares profile line, largest over the teeth", kWithRelief}, p.form);
-    v.number({f.scatter, "µm", "scatter of fH_alpha along the hob: largest minus smallest over the teeth", kWithRelief},
+    v.number({f.form, "µm", "profile form deviation ff_alpha: width of the band about the least-squares profile line, largest over the teeth", kWithRelief, "profile form deviation ffα (largest)"}, p.form);
+    v.number({f.scatter, "µm", "scatter of fH_alpha along the hob: largest minus smallest over the teeth", kWithRelief, "scatter of fHα along the hob"},
              left ? g.leftScatter : g.rightScatter);
   }
   // The rake error in the gear's terms (docs/inspection.md, "Rake error"): the model on a face that
@@ -512,12 +512,12 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
          job.settingAngleDerived);
   v.flag({"setup.centerDistanceDerived", "", "true when E_t is from the boundary equation (wheel rim at the gash root)"},
          job.centerDistanceDerived);
-  v.number({"setup.rakeAngle", "deg", "gamma_c, the rake angle at the pitch radius"}, face.rakeAngle() * kDegPerRad);
+  v.number({"setup.rakeAngle", "deg", "gamma_c, the rake angle at the pitch radius", "", "rake angle γc"}, face.rakeAngle() * kDegPerRad);
   v.text({"setup.gash", "", "\"helical\" or \"straight\""}, face.helical() ? "helical" : "straight");
   v.text({"setup.hand", "", "\"right\" or \"left\""}, face.hand() == Hand::Left ? "left" : "right");
   if (face.helical() || every) {
-    v.number({"setup.gashLead", "mm", "L_c, the gash lead", kHelicalOnly}, face.lead());
-    v.number({"setup.gashHelixAngle", "deg", "the gash helix angle at the pitch diameter", kHelicalOnly},
+    v.number({"setup.gashLead", "mm", "L_c, the gash lead", kHelicalOnly, "lead Lc"}, face.lead());
+    v.number({"setup.gashHelixAngle", "deg", "the gash helix angle at the pitch diameter", kHelicalOnly, "helix angle βc"},
              face.helixAngle() * kDegPerRad);
   }
   v.number({"setup.rootRadius", "mm", "radius of the gash root"}, job.rootRadius);
@@ -546,11 +546,11 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
   matrix(v, {"topography.normal", "µm", "normal deviation for the axes run; plus = excess material"}, t.normal);
   matrix(v, {"topography.circular", "µm", "the same along the circle about the hob axis, µm of arc at the mean radius"},
          t.circular);
-  v.number({"topography.thickness", "µm", "thickness error at the mean point"}, t.thickness);
-  v.number({"topography.sse", "µm²", "sum of squares of the normal deviation"}, t.sse);
-  v.number({"topography.max", "µm", "largest absolute normal deviation"}, t.max);
-  v.number({"topography.rms", "µm", "root mean square of the normal deviation: comparable between grids of any density"}, t.rms);
-  v.number({"topography.peakToValley", "µm", "largest minus smallest normal deviation"}, t.peakToValley);
+  v.number({"topography.thickness", "µm", "thickness error at the mean point", "", "thickness error"}, t.thickness);
+  v.number({"topography.sse", "µm²", "sum of squares of the normal deviation", "", "sum of squares"}, t.sse);
+  v.number({"topography.max", "µm", "largest absolute normal deviation", "", "largest |deviation|"}, t.max);
+  v.number({"topography.rms", "µm", "root mean square of the normal deviation: comparable between grids of any density", "", "rms"}, t.rms);
+  v.number({"topography.peakToValley", "µm", "largest minus smallest normal deviation", "", "peak-to-valley"}, t.peakToValley);
 
   const SensitivityMatrix& S = e.sensitivities;
   v.texts({"sensitivities.coefficients", "", "\"X a0\" .. \"B an\", axis by axis"}, names(S.coefficients));
@@ -588,10 +588,10 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     eigenNumbers(v, {"correction.change", "coefficient units", "the changes of correction.coefficients, in order: correction.axes minus the axes run", kWithMeasured}, c.change);
     // One figure per axis: µm-type units for X, Y, Z and µrad-type ones for A, B (docs/method.md, "Correction").
     auto perAxis = [&](const char* const names[], const char* linear, const char* rotary, const char* what,
-                       const std::array<double, kAxisCount>& values) {
+                       const std::array<double, kAxisCount>& values, const char* label = "") {
       for (Axis a : kAxes) {
         const int i = static_cast<int>(a);
-        v.number({names[i], isRotary(a) ? rotary : linear, what, kWithMeasured}, values[i]);
+        v.number({names[i], isRotary(a) ? rotary : linear, what, kWithMeasured, label}, values[i]);
       }
     };
     perAxis(kIdentified, "µm", "µrad", "the identified machine error of the axis (actual minus commanded): largest over the motion range, signed; where correction.identifiedAxes is not \"alone\" a share of a combination the face does not split, not a finding about the axis",
@@ -601,9 +601,9 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     perAxis(kUncertainty, "µm", "µrad", "standard uncertainty of the identified error and the change from the probe noise, over every direction the face shows, largest over the motion range: correction.precision.changePerNoise times correction.probeNoise",
             c.uncertainty);
     perAxis(kFacePerError, "µm per µm", "µm per µrad", "precision demand: face deviation per unit of a constant error of the axis, largest over the grid",
-            c.facePerAxisError);
+            c.facePerAxisError, "face per unit of axis error, largest over the grid");
     perAxis(kChangePerNoise, "µm per µm", "µrad per µm", "precision demand: standard uncertainty of the axis change per µm of probe noise, over every direction the face shows",
-            c.changePerNoise);
+            c.changePerNoise, "axis change per µm of probe noise, over every direction the face shows");
     // What the face identifies of each axis (identified_axes.h): alone, together or unseen; the
     // value read alone; the combinations in words.
     static const char* const kReading[] = {"correction.identifiedAxes.X", "correction.identifiedAxes.Y",
@@ -639,12 +639,12 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
            gridAfter.circular);
     matrix(v, {"correction.measuredCircular", "µm", "the measured deviation along the circle about the hob axis",
                kWithMeasured}, gridMeasured.circular);
-    v.number({"correction.sseBefore", "µm²", "sum of squares, measured", kWithMeasured}, c.before.sse);
-    v.number({"correction.sseAfter", "µm²", "sum of squares of the face predicted after the pass (re-simulated)", kWithMeasured}, c.after.sse);
-    v.number({"correction.maxBefore", "µm", "largest absolute deviation, measured", kWithMeasured}, c.before.max);
-    v.number({"correction.maxAfter", "µm", "largest absolute deviation predicted after the pass", kWithMeasured}, c.after.max);
-    v.number({"correction.rmsBefore", "µm", "root mean square, measured", kWithMeasured}, c.before.rms);
-    v.number({"correction.rmsAfter", "µm", "root mean square predicted after the pass", kWithMeasured}, c.after.rms);
+    v.number({"correction.sseBefore", "µm²", "sum of squares, measured", kWithMeasured, "sum of squares"}, c.before.sse);
+    v.number({"correction.sseAfter", "µm²", "sum of squares of the face predicted after the pass (re-simulated)", kWithMeasured, "sum of squares"}, c.after.sse);
+    v.number({"correction.maxBefore", "µm", "largest absolute deviation, measured", kWithMeasured, "largest |deviation|"}, c.before.max);
+    v.number({"correction.maxAfter", "µm", "largest absolute deviation predicted after the pass", kWithMeasured, "largest |deviation|"}, c.after.max);
+    v.number({"correction.rmsBefore", "µm", "root mean square, measured", kWithMeasured, "rms"}, c.before.rms);
+    v.number({"correction.rmsAfter", "µm", "root mean square predicted after the pass", kWithMeasured, "rms"}, c.after.rms);
     v.number({"correction.predictedRms", "µm", "the face the exact axes will leave on the probe grid, rms: the misfit left less its expected probe noise", kWithMeasured},
              c.predictedRms);
     v.number({"correction.predictedRmsHigh", "µm", "at most this rms on the probe grid: the misfit, the probe noise through the identified directions and the error the face cannot show (assumed no larger than the one it shows)", kWithMeasured},
@@ -653,20 +653,20 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
            c.stop);
     v.flag({"correction.linearisedAtNominal", "", "the axes run alone grind no face the wheel envelops: the correction was linearised at the nominal axes, from the face measured", kWithMeasured},
            c.linearisedAtNominal);
-    v.number({"correction.peakToValleyBefore", "µm", "largest minus smallest deviation, measured", kWithMeasured},
+    v.number({"correction.peakToValleyBefore", "µm", "largest minus smallest deviation, measured", kWithMeasured, "peak-to-valley"},
              c.before.peakToValley);
-    v.number({"correction.peakToValleyAfter", "µm", "largest minus smallest deviation predicted after the pass", kWithMeasured},
+    v.number({"correction.peakToValleyAfter", "µm", "largest minus smallest deviation predicted after the pass", kWithMeasured, "peak-to-valley"},
              c.after.peakToValley);
-    v.number({"correction.thicknessBefore", "µm", "thickness error at the mean point, measured", kWithMeasured},
+    v.number({"correction.thicknessBefore", "µm", "thickness error at the mean point, measured", kWithMeasured, "thickness error"},
              c.before.thickness);
-    v.number({"correction.thicknessAfter", "µm", "thickness error predicted after the pass", kWithMeasured}, c.after.thickness);
-    v.number({"correction.sseRounded", "µm²", "sum of squares predicted with correction.roundedAxes (re-simulated)", kWithMeasured},
+    v.number({"correction.thicknessAfter", "µm", "thickness error predicted after the pass", kWithMeasured, "thickness error"}, c.after.thickness);
+    v.number({"correction.sseRounded", "µm²", "sum of squares predicted with correction.roundedAxes (re-simulated)", kWithMeasured, "sum of squares"},
              c.afterRounded.sse);
-    v.number({"correction.maxRounded", "µm", "largest absolute deviation predicted with correction.roundedAxes", kWithMeasured},
+    v.number({"correction.maxRounded", "µm", "largest absolute deviation predicted with correction.roundedAxes", kWithMeasured, "largest |deviation|"},
              c.afterRounded.max);
-    v.number({"correction.thicknessRounded", "µm", "thickness error predicted with correction.roundedAxes", kWithMeasured},
+    v.number({"correction.thicknessRounded", "µm", "thickness error predicted with correction.roundedAxes", kWithMeasured, "thickness error"},
              c.afterRounded.thickness);
-    v.number({"correction.rmsRounded", "µm", "root mean square predicted with correction.roundedAxes (re-simulated)", kWithMeasured},
+    v.number({"correction.rmsRounded", "µm", "root mean square predicted with correction.roundedAxes (re-simulated)", kWithMeasured, "rms"},
              c.afterRounded.rms);
     v.number({"correction.resolutionFloor", "µm", "the pass's floor, rms on the probe grid: the face rms that quantising each axis position to correction.resolution causes; each position's error uniform in +-step/2 (sd step/sqrt 12), independent between axes, through the face's sensitivity to a constant change of the axis", kWithMeasured},
              c.resolutionFloor);

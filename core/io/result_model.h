@@ -19,6 +19,7 @@ struct ResultField {
   const char* unit;      // "" when the field has none
   const char* meaning;   // a phrase for the engineer
   const char* when = "";  // when the field is present ("" = always)
+  const char* label = "";  // the figure's short name where the page, the CSV or the report shows it ("" = none)
 };
 
 // What a field holds. Matrices are row-major: rows root to tip, columns along the gash.
@@ -52,7 +53,7 @@ const char* motionUnit(GashKind gash);  // "rad" (phi_1, helical gash) or "mm" (
 void visitResult(const Evaluation& e, ResultVisitor& visitor);
 
 struct FieldDescription {
-  std::string path, kind, unit, meaning, when;
+  std::string path, kind, unit, meaning, when, label;
 };
 // Every field the result can hold, optional ones included, in the walk's order.
 std::vector<FieldDescription> resultFields();

@@ -1,10 +1,11 @@
 // The table of result fields in docs/api.md (once the README's) is the module's own description
-// of the result.
+// of the result; the table of limits the module's description of its limits, and limits() holds
+// exactly the entries described.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
-import { fieldTable, readmeTable, readmePath } from './readme-table.mjs';
+import { LIMITS_BEGIN, LIMITS_END, fieldTable, limitTable, readmeTable, readmePath } from './readme-table.mjs';
 
 const hobsharp = await loadHobSharp();
 
@@ -55,4 +56,27 @@ test('every listed field is in the result of a measured case, and nothing else i
   }
   assert.deepEqual(found.filter((p) => !listed.has(p)), []);
   assert.equal(found.length + pointsOnly.length, listed.size);
+});
+
+test('the table of limits in docs/api.md is made from limitFields(), and limits() holds exactly its entries', () => {
+  const entries = hobsharp.limitFields();
+  assert.equal(readmeTable(readFileSync(readmePath, 'utf8'), LIMITS_BEGIN, LIMITS_END), limitTable(entries),
+    'docs/api.md is out of date: run node tests/js/readme-table.mjs --write');
+  const limits = hobsharp.limits();
+  const at = (path) => path.split('.').reduce((o, k) => (o === undefined ? undefined : o[k]), limits);
+  for (const e of entries) assert.notEqual(at(e.path), undefined, `${e.path} is in limits()`);
+  // Every leaf of limits() lies in an entry described (a range or a document is one entry).
+  const described = new Set(entries.map((e) => e.path));
+  const undescribed = [];
+  const stack = [[limits, '']];
+  while (stack.length) {
+    const [v, p] = stack.pop();
+    if (described.has(p)) continue;
+    if (v && typeof v === 'object' && !(Array.isArray(v) && v.every((x) => typeof x !== 'object'))) {
+      for (const [k, x] of Object.entries(v)) stack.push([x, p ? `${p}.${k}` : k]);
+    } else undescribed.push(p);
+  }
+  assert.deepEqual(undescribed, []);
+  // A range's unit is its entry's.
+  for (const e of entries.filter((x) => x.kind === 'range')) assert.equal(at(e.path).unit, e.unit || undefined, e.path);
 });

@@ -54,6 +54,9 @@ test('the precision demand: the two known quantities per axis, with words and th
   assert.deepEqual(t.columns.map((q) => q.unit('A')), ['µm per µrad', 'µrad per µm']);
   assert.deepEqual(t.rows[3], { axis: 'A', values: [4, 40] });
   assert.deepEqual(t.rows[4].values, [5, null]);
+  // The columns' labels are the fields' own (labelOf: result-fields.js's fieldLabel on the page).
+  const labelled = precisionTable(precision, AXES, unitOf, (path) => `label of ${path}`);
+  assert.deepEqual(labelled.columns.map((q) => q.label), ['label of correction.precision.facePerError.X', 'label of correction.precision.changePerNoise.X']);
   assert.equal(precisionTable(undefined, AXES, unitOf), null);
   assert.equal(precisionTable({}, AXES, unitOf), null);
   assert.equal(precisionTable({ sensitivity: { X: 1 } }, AXES, unitOf), null, 'no guessing at unknown keys');

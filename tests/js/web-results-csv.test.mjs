@@ -7,10 +7,12 @@ import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { profileCsv, resultsCsv, resultsFileName } from '../../web/src/io/results-csv.js';
 import { readMeasured } from '../../wasm/lib/measured-grid.js';
 import { setModuleLimits } from '../../web/src/limits.js';
+import { setResultFields } from '../../web/src/result-fields.js';
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
 const hobsharp = await loadHobSharp();
 setModuleLimits(hobsharp.limits());  // as the page does once its calculator is ready
+setResultFields(hobsharp.resultFields());  // and the results' labels and units
 const numbers = (line) => line.split(',').slice(1).map(Number);
 
 test('the results CSV holds every coefficient with its unit, and each grid row by row', () => {

@@ -10,6 +10,7 @@ import { fieldMeaning, fieldUnit, setResultFields } from '../../web/src/result-f
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 
 const hobsharp = await loadHobSharp();
+setResultFields(hobsharp.resultFields());  // the units, as the page has them once the calculator is ready
 const paper = () => JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
 
 test('a value that rounds to zero has no sign: 0.000 µm, never −0.000 µm', () => {

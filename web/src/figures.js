@@ -1,3 +1,6 @@
+import { withUnit } from './format.js';
+import { fieldLabel, fieldUnit } from './result-fields.js';
+
 // The figures of a deviation grid (rows of µm) as the page shows them beside its map: the rms and
 // the peak-to-valley (comparable between grids), the largest absolute deviation, and the sum of
 // squares (the paper's figure). The result carries them for the normal deviation; the circular
@@ -16,4 +19,16 @@ export function gridFigures(grid) {
     }
   }
   return { sse, max, rms: n ? Math.sqrt(sse / n) : NaN, peakToValley: n ? hi - lo : NaN };
+}
+
+// The face's figures as the result names them (topography.<name>, correction.<name>Before and
+// <name>After), in the order the page gives them: those that compare between grids of any density
+// first, the paper's sum of squares last. Their labels and units are the module's
+// (result-fields.js).
+export const FACE_FIGURES = ['rms', 'peakToValley', 'max', 'thickness', 'sse'];
+
+// "label value unit" for each figure q of `names`: the label and unit of the field pathOf(q) names
+// (result-fields.js), the value as text(q) writes it.
+export function figureTexts(names, pathOf, text) {
+  return names.map((q) => `${fieldLabel(pathOf(q))} ${withUnit(text(q), fieldUnit(pathOf(q)) || '')}`);
 }

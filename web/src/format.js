@@ -43,6 +43,15 @@ export function polynomialText(coefficients, symbol) {
   return terms.map((t, i) => (i === 0 ? (t.sign === '−' ? '−' : '') : ` ${t.sign} `) + t.text).join('');
 }
 
+// A figure with its unit as the schema states it (result-fields.js): deg as ° and arc-min as ′ after
+// the number, "per deg" as "per degree"; any other unit after a space.
+export function withUnit(text, unit) {
+  if (!unit) return text;
+  const m = /^(deg|arc-min)(.*)$/.exec(unit);
+  if (m) return `${text}${m[1] === 'deg' ? '°' : '′'}${m[2].replace(/\bper deg$/, 'per degree')}`;
+  return `${text} ${unit}`;
+}
+
 // Text for HTML: the page's own strings go into innerHTML only through this.
 export function escapeHtml(text) {
   return String(text).replace(/[&<>"']/g, (ch) => `&#${ch.charCodeAt(0)};`);

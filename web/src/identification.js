@@ -2,9 +2,11 @@
 // tests): per axis what the face tells of its error (read on its own with its standard
 // uncertainty, or together with other axes, or not shown at all) and the change proposed; the
 // combinations in words; the precision demand; the solver's status and iterations; and the axes as
-// the NC program carries them. Units come from the result's field list (resultFields(),
-// passed in as unitOf(path)); each part is there only when the result has its fields; a number
-// that is not finite is null (a dash).
+// the NC program carries them. Units and labels come from the result's field list (resultFields(),
+// passed in as unitOf(path) and labelOf(path)); each part is there only when the result has its
+// fields; a number that is not finite is null (a dash).
+import { fieldLabel } from './result-fields.js';
+
 const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 const pick = (o, a) => (isObject(o) ? num(o[a]) : null);
@@ -43,17 +45,17 @@ export function combinationSentences(c) {
 }
 
 // The precision demand as a table {columns: [{key, label, unit(axis)}], rows: [{axis, values}]}:
-// correction.precision.facePerError and correction.precision.changePerNoise, each {axis: value}.
-const PRECISION = [
-  ['facePerError', 'face per unit of axis error, largest over the grid'],
-  ['changePerNoise', 'axis change per µm of probe noise, over every direction the face shows'],
-];
-export function precisionTable(precision, axes, unitOf) {
+// correction.precision.facePerError and correction.precision.changePerNoise, each {axis: value},
+// labelled as the module labels them (labelOf(path), result-fields.js).
+const PRECISION = ['facePerError', 'changePerNoise'];
+export function precisionTable(precision, axes, unitOf, labelOf = fieldLabel) {
   if (!isObject(precision)) return null;
-  const known = PRECISION.filter(([key]) => isObject(precision[key]));
+  const known = PRECISION.filter((key) => isObject(precision[key]));
   if (!known.length) return null;
-  const columns = known.map(([key, label]) => ({ key, label, unit: (a) => unitOf(`correction.precision.${key}.${a}`) }));
-  const rows = axes.map((axis) => ({ axis, values: known.map(([key]) => pick(precision[key], axis)) }));
+  const columns = known.map((key) => ({
+    key, label: labelOf(`correction.precision.${key}.${axes[0]}`), unit: (a) => unitOf(`correction.precision.${key}.${a}`),
+  }));
+  const rows = axes.map((axis) => ({ axis, values: known.map((key) => pick(precision[key], axis)) }));
   return { columns, rows };
 }
 

@@ -4,7 +4,7 @@
 // its value, grade, conformity, proven grade and where its tolerance comes from, measured and
 // predicted after the correction. Units are the result fields' own (unitOf: a field's path to its
 // unit, result-fields.js); nothing here types one.
-import { fixed, fmt, signed } from './format.js';
+import { fixed, fmt, signed, withUnit } from './format.js';
 import { fieldUnit } from './result-fields.js';
 
 // The checks DIN 3968 grades, in the order the table shows them.
@@ -23,14 +23,8 @@ const label = (check) => (CHECK_WORDS[check] || { label: check }).label;
 const shortLabel = (check) => (CHECK_WORDS[check] || {}).short || label(check);
 const minus = (text) => text.replace(/^-/, '\u2212');
 
-// A figure with its unit as the schema states it: arc-min as ′ after the number, "per deg" as
-// "per degree"; any other unit after a space.
-export function withUnit(text, unit) {
-  if (!unit) return text;
-  const m = /^arc-min(.*)$/.exec(unit);
-  if (m) return `${text}′${m[1].replace(/\bper deg$/, 'per degree')}`;
-  return `${text} ${unit}`;
-}
+// A figure with its unit as the schema states it (format.js).
+export { withUnit };
 
 // The tolerance the check's grade rests on (its class's; the loosest's when outside the table).
 export function gradeTolerance(c) {

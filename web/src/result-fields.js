@@ -1,6 +1,6 @@
 // The result's fields as the module describes them (Module.resultFields(): [{path, kind, unit,
-// meaning, when}], docs/api.md's table of result fields): the page takes a figure's unit and its
-// meaning from here, not from words of its own. Filled once the worker is ready, with the limits
+// meaning, when, label}], docs/api.md's table of result fields): the page takes a figure's unit,
+// its label and its meaning from here, not from words of its own (tests/js/page-units.test.mjs). Filled once the worker is ready, with the limits
 // (main.js); until then, and for a path the module does not describe, there is none.
 const FIELDS = new Map();
 
@@ -10,7 +10,9 @@ export function setResultFields(fields) {
     throw new Error('The calculator gave no description of its results the page can use.');
   }
   FIELDS.clear();
-  for (const f of fields) FIELDS.set(f.path, { unit: String(f.unit || ''), meaning: String(f.meaning || ''), kind: f.kind });
+  for (const f of fields) {
+    FIELDS.set(f.path, { unit: String(f.unit || ''), meaning: String(f.meaning || ''), label: String(f.label || ''), kind: f.kind });
+  }
 }
 
 // A field's unit ('µm', 'µm²', '' for none) or null when the module does not describe it.
@@ -23,4 +25,22 @@ export function fieldUnit(path) {
 export function fieldMeaning(path) {
   const f = FIELDS.get(path);
   return f ? f.meaning : '';
+}
+
+// A figure's short name as the page shows it ('rms', 'sum of squares'; '' when it has none).
+export function fieldLabel(path) {
+  const f = FIELDS.get(path);
+  return f ? f.label : '';
+}
+
+// Whether the result holds the field: the module describes it and the result has a value at its
+// path (an optional field is there only as its description's `when` says).
+export function fieldPresent(result, path) {
+  if (!FIELDS.has(path)) return false;
+  let node = result;
+  for (const key of path.split('.')) {
+    if (node === null || typeof node !== 'object' || !(key in node)) return false;
+    node = node[key];
+  }
+  return node !== undefined;
 }

@@ -1,7 +1,10 @@
 // The page's sentences about a result, in the words of the engineer at the machine (pure, with
 // Node tests): the status after a calculation, the setting angle the calculator derived, and the
 // correction's verdict.
-import { fixed, fmt, signed } from './format.js';
+import { fixed, fmt, signed, withUnit } from './format.js';
+import { fieldUnit } from './result-fields.js';
+
+const describedUnit = (path) => fieldUnit(path) || '';
 
 // The status line once the newest inputs are computed.
 export function updatedText(ms) {
@@ -9,36 +12,41 @@ export function updatedText(ms) {
 }
 
 // What the setting angle γm beside its field says: the value used, or the derived one and where
-// it comes from (the gash helix angle, signed by the hand; a straight gash has none: 0°).
-export function settingAngleNote(setup) {
-  if (!setup.settingAngleDerived) return `used: ${fmt(setup.settingAngle)}°`;
-  if (setup.gash === 'straight') return `auto: ${fixed(setup.settingAngle, 4)}° (straight gash: no helix to follow)`;
-  return `auto: ${fixed(setup.settingAngle, 4)}° (the gash helix angle, ${setup.hand === 'left' ? 'left' : 'right'} hand)`;
+// it comes from (the gash helix angle, signed by the hand; a straight gash has none: 0°). Its unit
+// is the module's (setup.settingAngle).
+export function settingAngleNote(setup, unitOf = describedUnit) {
+  const angle = (text) => withUnit(text, unitOf('setup.settingAngle'));
+  if (!setup.settingAngleDerived) return `used: ${angle(fmt(setup.settingAngle))}`;
+  if (setup.gash === 'straight') return `auto: ${angle(fixed(setup.settingAngle, 4))} (straight gash: no helix to follow)`;
+  return `auto: ${angle(fixed(setup.settingAngle, 4))} (the gash helix angle, ${setup.hand === 'left' ? 'left' : 'right'} hand)`;
 }
 
 const plural = (n, one, many) => `${n} ${n === 1 ? one : many}`;
 
-// The correction's verdict with its figures. rank: independent coefficient combinations the
+// The correction's verdict with its figures, in the units the module gives them (unitOf, as
+// result-fields.js's fieldUnit). rank: independent coefficient combinations the
 // correction moves; amplifyingDropped: combinations it leaves alone because a visible change of
 // the face would need axis moves far larger than the deviation they remove (docs/method.md,
 // "Correction").
-export function verdictText(c) {
+export function verdictText(c, unitOf = describedUnit) {
+  const u = (q) => unitOf(`correction.${q}Before`);
   // Stop (correction.stop): the measured face is within the probe noise. Its figures as measured,
   // and nothing predicted: another pass would only move noise.
   if (c.stop === true) {
-    const rms = Number.isFinite(c.rmsBefore) ? `RMS ${fixed(c.rmsBefore, 3)} µm; ` : '';
-    return `${c.verdict} Measured: ${rms}sum of squares ${fmt(c.sseBefore, 6)} µm²; thickness ${signed(c.thicknessBefore, 3)} µm.`;
+    const rms = Number.isFinite(c.rmsBefore) ? `RMS ${withUnit(fixed(c.rmsBefore, 3), u('rms'))}; ` : '';
+    return `${c.verdict} Measured: ${rms}sum of squares ${withUnit(fmt(c.sseBefore, 6), u('sse'))}; ` +
+      `thickness ${withUnit(signed(c.thicknessBefore, 3), u('thickness'))}.`;
   }
   const dropped = c.amplifyingDropped
     ? `; ${plural(c.amplifyingDropped, 'combination is', 'combinations are')} left unchanged, because ` +
       `${c.amplifyingDropped === 1 ? 'it' : 'they'} would need large axis moves for little gain`
     : '';
   // Led by the rms, which compares between grids; the paper's sum of squares after it.
-  const squares = `sum of squares ${fmt(c.sseBefore, 6)} → ${fmt(c.sseAfter, 4)} µm²`;
-  const lead = Number.isFinite(c.rmsBefore) ? `RMS ${fixed(c.rmsBefore, 3)} → ${fixed(c.rmsAfter, 3)} µm; ${squares}`
+  const squares = `sum of squares ${fmt(c.sseBefore, 6)} → ${withUnit(fmt(c.sseAfter, 4), u('sse'))}`;
+  const lead = Number.isFinite(c.rmsBefore) ? `RMS ${fixed(c.rmsBefore, 3)} → ${withUnit(fixed(c.rmsAfter, 3), u('rms'))}; ${squares}`
     : `S${squares.slice(1)}`;
   return `${c.verdict} ${lead}; ` +
-    `thickness ${signed(c.thicknessBefore, 3)} → ${signed(c.thicknessAfter, 3)} µm. ` +
+    `thickness ${signed(c.thicknessBefore, 3)} → ${withUnit(signed(c.thicknessAfter, 3), u('thickness'))}. ` +
     `The correction changes ${plural(c.rank, 'independent combination', 'independent combinations')} of the coefficients${dropped}.`;
 }
 

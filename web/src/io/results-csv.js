@@ -3,10 +3,13 @@
 // the change to type in) with their units, the measured grid and the topography grids; and the
 // wheel profile's points for a dresser. UTF-8 with a BOM, so that µ and ² survive spreadsheet programs; with a comma and
 // a decimal point, or a semicolon and a decimal comma (style 'semicolon') as a German
-// spreadsheet reads them.
+// spreadsheet reads them. The figures' labels and units are the module's (result-fields.js).
 import { AXES, coefficientUnit } from '../limits.js';
 import { motionUnit } from '../format.js';
+import { FACE_FIGURES } from '../figures.js';
 import { FLANKS, gearEffectRows, hasGearEffect } from '../gear-effect-figures.js';
+import { fieldLabel, fieldMeaning, fieldUnit } from '../result-fields.js';
+import { POINTS_HEADER } from '../../../wasm/lib/points-csv.js';
 import { inputRows } from './input-rows.js';
 
 const BOM = '\uFEFF';
@@ -37,18 +40,14 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   if (c) {
     lines.push('', '# correction', row('verdict', c.verdict), row('method', c.method), row('status', c.status));
     lines.push('', '# figures (normal deviation)', row('figure', 'unit', 'measured', 'predicted after correction'));
-    for (const [name, unit, before, after] of [['rms', 'µm', c.rmsBefore, c.rmsAfter],
-      ['peak-to-valley', 'µm', c.peakToValleyBefore, c.peakToValleyAfter], ['largest |deviation|', 'µm', c.maxBefore, c.maxAfter],
-      ['thickness error', 'µm', c.thicknessBefore, c.thicknessAfter], ['sum of squares', 'µm²', c.sseBefore, c.sseAfter]]) {
-      lines.push(row(name, unit, before, after));
+    for (const q of FACE_FIGURES) {
+      const before = `correction.${q}Before`;
+      lines.push(row(fieldLabel(before), fieldUnit(before), c[`${q}Before`], c[`${q}After`]));
     }
   } else {
     const t = r.topography;
     lines.push('', '# figures (normal deviation, simulated for the axes run)', row('figure', 'unit', 'value'));
-    for (const [name, unit, v] of [['rms', 'µm', t.rms], ['peak-to-valley', 'µm', t.peakToValley],
-      ['largest |deviation|', 'µm', t.max], ['thickness error', 'µm', t.thickness], ['sum of squares', 'µm²', t.sse]]) {
-      lines.push(row(name, unit, v));
-    }
+    for (const q of FACE_FIGURES) lines.push(row(fieldLabel(`topography.${q}`), fieldUnit(`topography.${q}`), t[q]));
   }
   // The effect on the gear (docs/gear-effect.md): its figures per flank, or why there are none.
   const g = r.gearEffect;
@@ -70,26 +69,28 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
       lines.push(row(`${a} a${k}`, coefficientUnit(a, k, per), v, ran, corrected, c ? corrected - ran : ''));
     });
   }
+  const unit = (path) => fieldUnit(path) || '';
   const grid = (title, z) => {
-    lines.push('', `# ${title}; rows r (mm) root to tip, columns x (mm) along the gash`);
+    lines.push('', `# ${title}; rows r (${unit('topography.r')}) root to tip, columns x (${unit('topography.x')}) along the gash`);
     lines.push(row('r \\ x', ...r.topography.x));
     z.forEach((values, i) => lines.push(row(r.topography.r[i], ...values)));
   };
+  // The measured grid is the case's: an input, in the case format's µm (docs/case-format.md).
   if (caseObject && caseObject.measured) grid('measured normal deviation (µm)', caseObject.measured);
-  grid('simulated normal deviation (µm) for the axes run', r.topography.normal);
-  grid('simulated circular deviation (µm at the mean radius)', r.topography.circular);
-  if (c) grid('predicted normal deviation after correction (µm)', c.residual);
+  grid(`simulated normal deviation (${unit('topography.normal')}) for the axes run`, r.topography.normal);
+  grid(`simulated circular deviation (${unit('topography.circular')} at the mean radius)`, r.topography.circular);
+  if (c) grid(`predicted normal deviation after correction (${unit('correction.residual')})`, c.residual);
   // At the measuring machine's points (docs/measured-points.md): each block reads back as a
-  // points CSV (wasm/lib/points-csv.js), its title line a comment.
+  // points CSV (wasm/lib/points-csv.js), its title line a comment; its header is that format's.
   const points = (title, list) => {
-    lines.push('', `# ${title}`, row('r (mm)', 'x (mm)', 'deviation (µm)'));
+    lines.push('', `# ${title}`, POINTS_HEADER.split(',').join(sep));
     for (const p of list) lines.push(row(...p));
   };
   if (c && c.pointMeasured) {
     points('measured points', c.pointMeasured);
     points('predicted at the measured points after correction', c.pointResidual);
   }
-  lines.push('', row('# thickness error at the mean point (µm)', r.topography.thickness));
+  lines.push('', row(`# ${fieldMeaning('topography.thickness')} (${unit('topography.thickness')})`, r.topography.thickness));
   return BOM + lines.join('\n') + '\n';
 }
 

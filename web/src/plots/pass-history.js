@@ -7,12 +7,12 @@
 // triangle, its value in the hover, so that a solver's 1e-20 does not stretch the scale over
 // eighteen decades; the others linear. series: historySeries() of
 // web/src/pass-history.js, which leaves out every value that is not finite. units: the module's
-// units of the figures (result-fields.js), where it gives them.
+// units of the figures (result-fields.js), {rms, sse, max, thickness}.
 const PANELS = [
-  { q: 'rms', title: 'RMS', unit: 'µm', log: true },
-  { q: 'sse', title: 'Sum of squares', unit: 'µm²' },
-  { q: 'max', title: 'Largest |deviation|', unit: 'µm' },
-  { q: 'thickness', title: 'Thickness error', unit: 'µm' },
+  { q: 'rms', title: 'RMS', log: true },
+  { q: 'sse', title: 'Sum of squares' },
+  { q: 'max', title: 'Largest |deviation|' },
+  { q: 'thickness', title: 'Thickness error' },
 ];
 const COLOURS = { measured: '#2b6cb0', predicted: '#dd6b20', floor: '#718096' };
 const figure = (v) => String(Number(v.toPrecision(3)));
@@ -38,8 +38,8 @@ export function drawPassHistory(Plotly, el, series, passCount, units = {}) {
   };
   const ticks = Array.from({ length: Math.max(1, passCount) }, (_, i) => i + 1);
   const n = PANELS.length, gap = 0.035;
-  PANELS.forEach(({ q, title, unit: fallback, log: logWhenPositive }, i) => {
-    const unit = units[q] || fallback;
+  PANELS.forEach(({ q, title, log: logWhenPositive }, i) => {
+    const unit = units[q] || '';
     const axis = i === 0 ? '' : String(i + 1);
     const domain = [i / n + (i ? gap : 0), (i + 1) / n - (i < n - 1 ? gap : 0)];
     const s = series[q];

@@ -5,10 +5,11 @@
 // as the NC program carries them with their re-simulated sum of squares beside the exact
 // proposal's. Units are the result fields' own (fieldUnit).
 import { AXES, AXIS_UNIT } from '../limits.js';
-import { fieldUnit as describedUnit } from '../result-fields.js';
+import { fieldPresent, fieldUnit as describedUnit } from '../result-fields.js';
 
 const fieldUnit = (path) => describedUnit(path) || '';
 import { escapeHtml, fixed, fmt, motionSymbol, polynomialText, signed } from '../format.js';
+import { figureTexts } from '../figures.js';
 import { READING_WORDS, combinationSentences, errorRows, precisionTable, roundedFigures, statusText } from '../identification.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -47,14 +48,16 @@ function renderRounded(c, r) {
   $('#rounded-axes-list').innerHTML = AXES.map((a) => `<li data-rounded-axis="${a}">${a} (${AXIS_UNIT[a]}) = ${
     escapeHtml(polynomialText(c.roundedAxes[a] || [], symbol))}</li>`).join('');
   const f = roundedFigures(c);
-  const text = (x) => `sum of squares ${fmt(x.sse, 4)} µm², largest |deviation| ${fixed(x.max, 3)} µm, thickness error ${signed(x.thickness, 3)} µm`;
+  const digits = { sse: (v) => fmt(v, 4), max: (v) => fixed(v, 3), thickness: (v) => signed(v, 3) };
+  const text = (x) => figureTexts(['sse', 'max', 'thickness'], (q) => `correction.${q}Rounded`, (q) => digits[q](x[q])).join(', ');
   $('#rounded-sse').textContent = `Predicted with the rounded axes, re-simulated: ${text(f.rounded)}. With the exact proposal: ${text(f.exact)}.`;
 }
 
 export function mountIdentification(store) {
   store.on('result', ({ result }) => {
     const c = result.correction;
-    const shown = Boolean(c) && ['status', 'identifiedAxes', 'identifiedError', 'axisChange', 'precision', 'roundedAxes'].some((k) => k in c);
+    // There when the result has the correction's fields (the schema's `when`: only with a measurement).
+    const shown = fieldPresent(result, 'correction.status');
     $('#identification').hidden = !shown;
     if (!shown) return;
     $('#solver-status').textContent = statusText(c);

@@ -12,11 +12,7 @@ import { fieldMeaning, fieldUnit } from '../result-fields.js';
 const $ = (selector) => document.querySelector(selector);
 
 // The figures' units as the module gives them (the measured ones; the predicted have the same).
-const units = () => {
-  const of = (path, fallback) => fieldUnit(path) || fallback;
-  return { rms: of('correction.rmsBefore', 'µm'), sse: of('correction.sseBefore', 'µm²'), max: of('correction.maxBefore', 'µm'),
-    thickness: of('correction.thicknessBefore', 'µm') };
-};
+const units = () => Object.fromEntries(['rms', 'sse', 'max', 'thickness'].map((q) => [q, fieldUnit(`correction.${q}Before`) || '']));
 
 // The figures on the scale a probe reads (issue 22): an rms below 0.001 µm and a sum of squares
 // below 1e-6 µm² are "below" that, not the solver's 3e-11.

@@ -3,6 +3,7 @@
 // pinned", and this bar says which inputs changed since; "Unpin" ends it. The views call the
 // helpers below, one hook each; the differences themselves are pin-diff.js.
 import { escapeHtml, fixed, motionSymbol, polynomialText } from '../format.js';
+import { figureTexts } from '../figures.js';
 import { axesDifference, changedInputs, gridDifference, profileDifference } from '../pin-diff.js';
 import { fieldNames } from './field-names.js';
 
@@ -34,8 +35,8 @@ function change(v, digits) {
 
 function figuresLine(now, then, comparable) {
   if (!comparable || !now || !then) return `${PINNED}: not comparable (another grid)`;
-  return `${PINNED}: sum of squares ${change(now.sse - then.sse, 4)} µm², largest |deviation| ${change(now.max - then.max, 3)} µm, ` +
-    `thickness error ${change(now.thickness - then.thickness, 3)} µm`;
+  const digits = { sse: 4, max: 3, thickness: 3 };
+  return `${PINNED}: ${figureTexts(['sse', 'max', 'thickness'], (q) => `topography.${q}`, (q) => change(now[q] - then[q], digits[q])).join(', ')}`;
 }
 
 // The topography: each side's grid as its difference to the pinned one, and its figures with

@@ -6,7 +6,7 @@ import { fixed, fmt, signed } from '../format.js';
 import { colourRange } from '../plots/colours.js';
 import { drawMap } from '../plots/maps.js';
 import { drawSurface } from '../plots/surface.js';
-import { gridFigures } from '../figures.js';
+import { FACE_FIGURES, figureTexts, gridFigures } from '../figures.js';
 import { comparedToPinned } from './pin.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -17,9 +17,11 @@ const numbersOf = (f, circularGrid) =>
   (circularGrid ? { ...gridFigures(circularGrid), thickness: f.thickness } : f);
 
 // Led by the figures that compare between grids of any density; the paper's sum of squares last.
-function figuresText({ rms, peakToValley, max, thickness, sse }) {
-  return `rms ${fixed(rms, 3)} µm · peak-to-valley ${fixed(peakToValley, 3)} µm · largest |deviation| ${fixed(max, 3)} µm · ` +
-    `thickness error ${signed(thickness, 3)} µm · sum of squares ${fmt(sse, 6)} µm²`;
+// Labels and units are the module's (topography.<figure>).
+const DIGITS = { rms: (v) => fixed(v, 3), peakToValley: (v) => fixed(v, 3), max: (v) => fixed(v, 3), thickness: (v) => signed(v, 3),
+  sse: (v) => fmt(v, 6) };
+function figuresText(numbers) {
+  return figureTexts(FACE_FIGURES, (q) => `topography.${q}`, (q) => DIGITS[q](numbers[q])).join(' · ');
 }
 
 // What the two columns show for a result: the simulated face, or measured and after correction

@@ -1,7 +1,8 @@
 // With the wheel corrected too (correction.wheel): the measured face split into what the axes
 // remove, what the wheel's proposed offset removes, and what is left (correction.residual), as
 // three maps on one colour range, with the share of the measured sum of squares each removes.
-import { fixed } from '../format.js';
+import { fixed, withUnit } from '../format.js';
+import { fieldLabel, fieldUnit } from '../result-fields.js';
 import { colourRange } from '../plots/colours.js';
 import { drawMap } from '../plots/maps.js';
 
@@ -13,7 +14,7 @@ const PLOTS = [['plot-removed-axes', 'removedByAxes', 'Removed by the axes'], ['
 export function shareText(c) {
   const pct = (v) => `${fixed(100 * v, 1)} %`;
   return `Of the measured sum of squares, the axes remove ${pct(c.axesShare)} and the wheel's proposed offset ${pct(c.wheelShare)}; ` +
-    `${fixed(c.rmsAfter, 3)} µm rms is left (re-simulated with both).`;
+    `${withUnit(fixed(c.rmsAfter, 3), fieldUnit('correction.rmsAfter') || '')} ${fieldLabel('correction.rmsAfter')} is left (re-simulated with both).`;
 }
 
 function drawSplit({ Plotly, result: r }) {
