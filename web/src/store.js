@@ -24,6 +24,7 @@
 //   measurement    the measured section's state changed (web/src/measurement.js): measuredOptions,
 //              measuredSource, measuredAttempt, measuredRefusal, measuredMessage
 import { CASE_FORMAT } from './limits.js';
+import { ORIENT_OPTIONS } from '../../wasm/lib/measured-grid.js';
 
 export function initialState() {
   return {
@@ -31,7 +32,7 @@ export function initialState() {
     measured: null,          // rows root to tip of values along the gash, µm, or null
     // The measured data (web/src/measurement.js keeps these, views/measured-*.js show them):
     measuredText: '',        // the text in the box: a grid's or points' CSV, as typed, given or put back
-    measuredOptions: { transpose: false, flipRadial: false, flipAxial: false, negate: false, mm: false },  // ticked under the preview
+    measuredOptions: Object.fromEntries(ORIENT_OPTIONS.map((o) => [o, false])),  // ticked under the preview: transpose ... mm
     measuredSource: null,    // the measurement in use, as its file gave it: {name, what, meta: {date?, part?, operator?}, text}
     measuredAttempt: null,   // a measurement sent, in use once its result comes: {name, what, meta, text,
                              //   before: the inputs to put back if it is refused {measured, extra, tuning},
