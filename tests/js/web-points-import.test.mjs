@@ -3,7 +3,7 @@
 // refused naming the line; the written CSV reads back to the same points.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { POINTS_HEADER, looksLikePoints, pointsToCsv, readPoints } from '../../wasm/lib/points-csv.js';
+import { POINTS_HEADER, looksLikePoints, orientPoints, pointsToCsv, readPoints } from '../../wasm/lib/points-csv.js';
 
 const points = [[19.125, -70.5, 1.25], [20, 0, -2.5e-3], [33.333333333333336, 12.0625, 0.1 + 0.2], [25, -1e-9, 1234.5]];
 
@@ -95,4 +95,14 @@ test('the written CSV reads back to the same points, in either separator', () =>
     assert.deepEqual(read.points, points, 'every number to the last bit');
     assert.ok(looksLikePoints(csv));
   }
+});
+
+test('the options that apply to points change the deviation only: sign and mm to µm', () => {
+  const points = [[19.5, -70.2, 0.00125], [20, 0, 0], [21, 3, -0.002]];
+  assert.deepEqual(orientPoints(points, {}), points);
+  assert.deepEqual(orientPoints(points, { transpose: true, flipRadial: true, flipAxial: true }), points, 'a grid\'s options do not apply');
+  assert.deepEqual(orientPoints(points, { negate: true }), [[19.5, -70.2, -0.00125], [20, 0, 0], [21, 3, 0.002]]);
+  assert.deepEqual(orientPoints(points, { mm: true, negate: true }), [[19.5, -70.2, -1.25], [20, 0, 0], [21, 3, 2]]);
+  assert.ok(Object.is(orientPoints(points, { negate: true })[1][2], 0), 'a zero stays +0');
+  assert.notEqual(orientPoints(points, {})[0], points[0], 'new points, the read ones unchanged');
 });

@@ -37,7 +37,7 @@ const count = (n) => n.toLocaleString('en-US');
 
 // Throws naming the line where the text's values run past MAX_GRID_VALUES, before the values are
 // read: a text of 1,000,000 values is refused at once, not parsed (nor put into the page's box,
-// views/measured.js, where a million lines take the browser 20 s to lay out).
+// views/measured-box.js, where a million lines take the browser 20 s to lay out).
 export function checkGridValueCount(text) {
   let values = 0, n = 0;
   for (let start = 0; start < text.length; n += 1) {

@@ -2,7 +2,8 @@
 // with each column's name and unit, then one point per line, r (mm), x (mm), deviation (µm).
 //   r (mm),x (mm),deviation (µm)
 //   19.5,-70.2,1.25
-// Pure, with Node tests; read by the page (views/measured.js) and the CLI (wasm/cli.mjs --points).
+// Pure, with Node tests; read by the page (web/src/measurement.js, views/measured-preview.js) and
+// the CLI (wasm/cli.mjs --points).
 // The header is required: the units it names are what makes the numbers safe to use.
 //   - names: r (or radius), x (or axial), deviation (or dev); any case, in any column order;
 //   - units: in parentheses or brackets after the name, "r (mm)" or "r [mm]"; mm for r and x,
@@ -149,6 +150,14 @@ export function looksLikePoints(text) {
     if (l.split(separatorOf(l)).filter((c) => Number.isFinite(toNumber(c.trim().replace(',', '.')))).length >= 2) return false;
   }
   return false;
+}
+
+// The points with the page's options ticked that apply to points (a grid's, orient() in
+// measured-grid.js, also transposes and reverses): change the sign (the file's plus is missing
+// material), the deviations in mm to µm. r and x stay as read; a zero stays +0.
+export function orientPoints(points, options = {}) {
+  const scale = (options.negate ? -1 : 1) * (options.mm ? 1000 : 1);
+  return points.map(([r, x, d]) => [r, x, scale === 1 || d === 0 ? d : d * scale]);
 }
 
 // Points [[r, x, µm]...] as CSV with the header; `decimalComma` writes semicolons and decimal

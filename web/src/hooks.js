@@ -44,8 +44,11 @@ export function installHooks(store, calculator) {
       calculator.watchdogMs = watchdogMs;
       calculator.stall().catch(() => {});
     },
-    // The measurement in use as the record keeps it (views/measured.js): {name, what, meta} or null.
-    measuredSource: () => structuredClone(store.state.measuredSource),
+    // The measurement in use as the record keeps it (web/src/measurement.js): {name, what, meta} or null.
+    measuredSource: () => {
+      const s = store.state.measuredSource;
+      return s && structuredClone({ name: s.name, what: s.what, meta: s.meta });
+    },
   };
   return { watch: (isBusy) => { busy.push(isBusy); } };
 }

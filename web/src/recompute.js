@@ -17,7 +17,7 @@ export function startRecompute(store, calculator) {
   const refused = (error, caseObject) => {
     store.refuse(error, caseObject);
     // A grid just given that the calculator refuses is replaced by the measurement in use before
-    // (views/measured.js, on the refusal). A grid in use that it now refuses (say, it no longer
+    // (web/src/measurement.js, on the refusal). A grid in use that it now refuses (say, it no longer
     // fits the grid) is set aside, so that it is not sent again with every edit; the user's text
     // stays in the CSV box.
     if (caseObject.measured && refusesMeasured(error) && store.state.measured === caseObject.measured) {

@@ -4,7 +4,8 @@
 //   limits     the module's limits arrived (web/src/limits.js holds them); a case loads after
 //   inputs     the case's inputs changed (form, measured grid, locks, run axes): {source, at}
 //   commit     the user finished a change of the inputs (an undo step): {}
-//   restore    the inputs were set from an undo step: views that show inputs show them again
+//   restore    the inputs were set from an undo step: views that show inputs show them again:
+//              {before} (the inputs before the step, as they were)
 //   computing  a case went to the calculator: {caseObject}
 //   result     a result arrived for the newest inputs: {result, caseObject, ms}
 //   refusal    an input was refused, by the calculator or by the page: {error, caseObject}
@@ -16,13 +17,30 @@
 //              state.pinned (a pinned result, whose difference the views then show)
 //   surfaces   state.surfaces changed: the 3D surfaces shown beside the maps, or not
 //   plots      every plot shows the newest result: {at}
+//   measured-text  state.measuredText changed (the measured data's box): {source}: 'box' (typed),
+//              'file' (a file's text, a refused file's put back, or the box cleared), 'case' (a
+//              loaded case's grid, the machine error's, the next run's empty box), 'restore' (an
+//              undo step's grid; its result follows)
+//   measurement    the measured section's state changed (web/src/measurement.js): measuredOptions,
+//              measuredSource, measuredAttempt, measuredRefusal, measuredMessage
 import { CASE_FORMAT } from './limits.js';
+import { ORIENT_OPTIONS } from '../../wasm/lib/measured-grid.js';
 
 export function initialState() {
   return {
     form: { format: CASE_FORMAT },  // the case as the form gives it
     measured: null,          // rows root to tip of values along the gash, µm, or null
-    measuredSource: null,    // the measurement in use as its file gave it: {name, what, meta: {date?, part?, operator?}} (views/measured.js)
+    // The measured data (web/src/measurement.js keeps these, views/measured-*.js show them):
+    measuredText: '',        // the text in the box: a grid's or points' CSV, as typed, given or put back
+    measuredOptions: Object.fromEntries(ORIENT_OPTIONS.map((o) => [o, false])),  // ticked under the preview: transpose ... mm
+    measuredSource: null,    // the measurement in use, as its file gave it: {name, what, meta: {date?, part?, operator?}, text}
+    measuredAttempt: null,   // a measurement sent, in use once its result comes: {name, what, meta, text,
+                             //   before: the inputs to put back if it is refused {measured, extra, tuning},
+                             //   box: the box's text to put back then (undefined: leave the box)}
+    measuredRefusal: null,   // a file (or the box's text) refused: {note (beside the box), status (the
+                             //   status line's once what is in use is computed again, then null),
+                             //   error (the calculator's), keep (the note outlives that result)}
+    measuredMessage: null,   // the message beside the box (why a measurement was refused), or null
     locked: [],              // coefficients kept out of the correction: 'X a0' ...
     lockedAxes: [],          // axes kept out of the correction: 'X' ...
     tuning: {},              // the correction's thresholds a loaded case gave: truncation, amplification
@@ -85,8 +103,9 @@ export function createStore(state = initialState()) {
     // Puts back the inputs of an undo step, and recomputes if the case differs.
     restore(inputs) {
       const before = JSON.stringify(caseOf(state));
+      const was = Object.fromEntries(INPUTS.map((k) => [k, state[k]]));  // replaced, not changed, below
       Object.assign(state, structuredClone(inputs));
-      store.emit('restore');
+      store.emit('restore', { before: was });
       if (JSON.stringify(caseOf(state)) !== before) store.emit('inputs', { source: 'restore' });
     },
     setStatus(text, kind = '') {
@@ -104,6 +123,16 @@ export function createStore(state = initialState()) {
     setSurfaces(on) {
       state.surfaces = on;
       store.emit('surfaces');
+    },
+    // The measured data's box; source as the 'measured-text' event says.
+    setMeasuredText(text, source) {
+      state.measuredText = text;
+      store.emit('measured-text', { source });
+    },
+    // The measured section's own state (measuredOptions ... measuredMessage).
+    setMeasurement(patch) {
+      Object.assign(state, patch);
+      store.emit('measurement');
     },
     pin(pinned) {
       state.pinned = pinned;
