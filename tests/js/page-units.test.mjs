@@ -160,3 +160,14 @@ test('the results CSV, the gear effect, the verdict and the setting angle take t
     setResultFields(fields);
   }
 });
+
+test('a meaning the page shows (a tooltip) names no result path: each is said by its label or in words', async () => {
+  const { setResultFields, fieldMeaning } = await import('../../web/src/result-fields.js');
+  const fields = hobsharp.resultFields();
+  setResultFields(fields);
+  const PATH = /\b(nominal|correction|inspection|gearEffect|face|wheel|setup|machine|measured|passes|job|hob|grid)(\.[A-Za-z]\w*|\[\d+\])+/;
+  const withPaths = fields.filter((f) => PATH.test(f.meaning));
+  assert.ok(withPaths.length > 10, 'the module\'s meanings name paths (for docs/api.md): the check has something to do');
+  for (const f of fields) assert.doesNotMatch(fieldMeaning(f.path), PATH, f.path);
+  assert.match(fieldMeaning('correction.residual'), /re-simulated with the correction's axes and the identified error/);
+});

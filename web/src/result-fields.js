@@ -21,10 +21,24 @@ export function fieldUnit(path) {
   return f ? f.unit : null;
 }
 
-// What a field means, in the module's words ('' when it does not describe it).
+// A result path inside a meaning ("re-simulated with correction.axes"): a top-level member of the
+// result with a dot and more.
+const RESULT_PATH = /\b(?:nominal|correction|inspection|gearEffect|face|wheel|setup|machine|measured|passes|job|hob|grid)(?:\.[A-Za-z]\w*)+/g;
+const splitName = (name) => name.replace(/([a-z])([A-Z])/g, '$1 $2').toLowerCase();
+
+// What a field means, in the module's words ('' when it does not describe it), for the page: a
+// path it names is said in words, by that field's label or its last name ("the correction's
+// axes" for correction.axes) - the page shows no path (docs/api.md's table keeps them).
 export function fieldMeaning(path) {
   const f = FIELDS.get(path);
-  return f ? f.meaning : '';
+  if (!f) return '';
+  return f.meaning.replace(RESULT_PATH, (p) => {
+    const named = FIELDS.get(p);
+    if (named && named.label) return named.label;
+    const parts = p.split('.');
+    const last = splitName(parts[parts.length - 1]);
+    return parts.length > 2 ? `${splitName(parts[parts.length - 2])} ${last}` : `the ${splitName(parts[0])}'s ${last}`;
+  });
 }
 
 // A figure's short name as the page shows it ('rms', 'sum of squares'; '' when it has none).
