@@ -3,8 +3,10 @@
 // the surface trace is registered when the first surface is drawn), which loads in parallel with the calculator, is there: first the quick plots (axis
 // motions, wheel, maps, singular values), then, after the browser has shown them, the slow ones
 // (the 3D surfaces when they are open, the sensitivity gallery). A newer result stops a pass
-// under way; 'plots' is emitted when a pass has drawn every plot.
+// under way; 'plots' is emitted when a pass has drawn every plot. A plot kept on demand (in a
+// closed <details> that print does not open: the sensitivity gallery) is drawn when it is opened.
 import { loadScript } from '../client.js';
+import { untabToolbars } from './config.js';
 
 let loading = null;
 export function loadPlotly() {
@@ -13,6 +15,13 @@ export function loadPlotly() {
 }
 
 const nextFrame = () => new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
+
+// Whether a drawer's plots wait until they are opened: each inside a closed <details> that print
+// does not open (class print-open: those are drawn, and resized when opened or printed).
+const onDemand = (d) => d.el && d.el.every((s) => {
+  const closed = document.querySelector(s)?.closest('details:not([open])');
+  return Boolean(closed) && !closed.classList.contains('print-open');
+});
 
 export function mountPlots(store) {
   const drawers = [];
@@ -28,23 +37,44 @@ export function mountPlots(store) {
         if (later) await nextFrame();
         for (const d of drawers.filter((x) => x.later === later)) {
           if (!current() || !store.state.result) return;
-          await d.draw({ Plotly, result: store.state.result, state: store.state, current });
+          d.pending = onDemand(d);
+          if (!d.pending) await d.draw({ Plotly, result: store.state.result, state: store.state, current });
         }
       }
     } catch (e) {
       if (current()) store.setStatus(`The plots cannot be drawn: ${e.message}. The numbers above stand.`, 'error');
       return;
     }
+    untabToolbars();
     if (current()) store.emit('plots', { at: performance.now() });
   }
+
+  // A <details> opened: the plots in it that waited are drawn, those drawn while it was closed are
+  // laid out again at their width (drawn hidden, Plotly took its default size).
+  async function opened(details) {
+    const mine = generation;
+    const Plotly = await loadPlotly().catch(() => null);
+    if (!Plotly || !store.state.result) return;
+    for (const el of details.querySelectorAll('.js-plotly-plot')) Plotly.Plots.resize(el);
+    const waiting = drawers.filter((d) => d.pending && !onDemand(d));
+    for (const d of waiting) {
+      if (mine !== generation) return;  // a newer pass draws them
+      d.pending = false;
+      await d.draw({ Plotly, result: store.state.result, state: store.state, current: () => mine === generation });
+    }
+    untabToolbars(details);
+    if (waiting.length && mine === generation) store.emit('plots', { at: performance.now() });
+  }
+  document.addEventListener('toggle', (e) => { if (e.target.open) opened(e.target); }, true);
 
   store.on('result', pass);
   store.on('view', pass);
   return {
     // draw({Plotly, result, state, current}) draws one view's plots; those added with
     // {later: true} are drawn after the others have shown. current() turns false once a newer
-    // pass has started.
-    add(draw, { later = false } = {}) { drawers.push({ draw, later }); },
+    // pass has started. el: the selectors of the elements it draws in; given, the drawing waits
+    // while they are all on demand (see onDemand).
+    add(draw, { later = false, el = null } = {}) { drawers.push({ draw, later, el }); },
     // A view that shows a plot it did not show before (the 3D surfaces) asks for a pass.
     redraw() { if (store.state.result) pass(); },
   };

@@ -5,6 +5,7 @@
 // calculator's sentence says what is missing.
 import { escapeHtml, fixed } from '../format.js';
 import { FLANKS, gearEffectRows, hasGearEffect } from '../gear-effect-figures.js';
+import { PLOT_CONFIG } from '../plots/config.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -40,7 +41,7 @@ function drawProfiles(Plotly, g) {
     xaxis: { title: { text: 'profile deviation on the gear (µm, + = more material)' }, zeroline: true },
     yaxis: { title: { text: 'height on the gear tooth (mm, tip up)' } },
     showlegend: false,
-  }, { responsive: true, displaylogo: false });
+  }, PLOT_CONFIG);
 }
 
 // A y range at least `least` µm wide about the values' middle, or none (Plotly's own) for a wider
@@ -68,7 +69,7 @@ function drawAlong(Plotly, g) {
     xaxis: { title: { text: 'tooth position along the hob axis x (mm)' } },
     yaxis: { title: { text: 'fHα (µm)' }, zeroline: true, ...yRange },
     legend: { orientation: 'h', y: -0.25 },
-  }, { responsive: true, displaylogo: false });
+  }, PLOT_CONFIG);
 }
 
 export function mountGearEffect(store, plots) {
