@@ -16,6 +16,7 @@
 //              state.pinned (a pinned result, whose difference the views then show)
 //   surfaces   state.surfaces changed: the 3D surfaces shown beside the maps, or not
 //   plots      every plot shows the newest result: {at}
+//   print      print began and opened the parts on demand it prints: their plots are drawn
 import { CASE_FORMAT } from './limits.js';
 
 export function initialState() {

@@ -4,7 +4,8 @@
 // motions, wheel, maps, singular values), then, after the browser has shown them, the slow ones
 // (the 3D surfaces when they are open, the sensitivity gallery). A newer result stops a pass
 // under way; 'plots' is emitted when a pass has drawn every plot. A plot kept on demand (in a
-// closed <details> that print does not open: the sensitivity gallery) is drawn when it is opened.
+// closed <details>: the wheel, the axis motions, the sensitivities) is drawn when it is opened, or
+// when print opens it ('print', views/report.js: drawn at once, before the report sizes the plots).
 import { loadScript } from '../client.js';
 import { untabToolbars } from './config.js';
 
@@ -16,12 +17,8 @@ export function loadPlotly() {
 
 const nextFrame = () => new Promise((resolve) => requestAnimationFrame(() => setTimeout(resolve, 0)));
 
-// Whether a drawer's plots wait until they are opened: each inside a closed <details> that print
-// does not open (class print-open: those are drawn, and resized when opened or printed).
-const onDemand = (d) => d.el && d.el.every((s) => {
-  const closed = document.querySelector(s)?.closest('details:not([open])');
-  return Boolean(closed) && !closed.classList.contains('print-open');
-});
+// Whether a drawer's plots wait until they are opened: each inside a closed <details>.
+const onDemand = (d) => d.el && d.el.every((s) => Boolean(document.querySelector(s)?.closest('details:not([open])')));
 
 export function mountPlots(store) {
   const drawers = [];
@@ -66,6 +63,16 @@ export function mountPlots(store) {
     if (waiting.length && mine === generation) store.emit('plots', { at: performance.now() });
   }
   document.addEventListener('toggle', (e) => { if (e.target.open) opened(e.target); }, true);
+  // Print opened the parts it prints: their plots are drawn now, not after the toggle events (a
+  // cartesian plot of Plotly's is drawn within the call), so that the report can size them.
+  store.on('print', () => {
+    if (!self.Plotly || !store.state.result) return;
+    for (const d of drawers.filter((x) => x.pending && !onDemand(x))) {
+      d.pending = false;
+      Promise.resolve(d.draw({ Plotly: self.Plotly, result: store.state.result, state: store.state, current: () => true })).catch(() => {});
+    }
+    untabToolbars();
+  });
 
   store.on('result', pass);
   store.on('view', pass);

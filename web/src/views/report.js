@@ -137,7 +137,10 @@ export function mountReport(store) {
   const resize = () => {
     renderLink();
     const printing = window.matchMedia('print').matches;
-    if (printing) openForPrint(true);
+    if (printing) {
+      openForPrint(true);
+      store.emit('print');  // the plots in the parts just opened drawn (plots/passes.js)
+    }
     if (self.Plotly) {
       for (const el of document.querySelectorAll('.plot')) {
         if (!el.data || el.offsetParent === null) continue;

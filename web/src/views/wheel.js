@@ -58,7 +58,7 @@ function drawWheel(Plotly, r, state) {
 }
 
 export function mountWheel(store, plots) {
-  plots.add(({ Plotly, result, state }) => drawWheel(Plotly, result, state));
+  plots.add(({ Plotly, result, state }) => drawWheel(Plotly, result, state), { el: ['#plot-wheel'] });
   const dresserButton = document.querySelector('#download-dresser');
   store.on('result', (_, state) => { dresserButton.disabled = !(state.result.correction && state.result.correction.dresserPath); });
   document.querySelector('#download-profile').addEventListener('click', () => {
