@@ -186,6 +186,10 @@ test('the phone flow at 390 x 844: the tilt, a measured face, "Use as next run",
   for (const id of ['plot-before-2d', 'plot-passes']) await page.tap(`#${id}`, { position: { x: 200, y: 20 } }).catch(() => page.hover(`#${id}`, { position: { x: 200, y: 20 } }));
   assert.deepEqual(await overlappingTitles(page), []);
   assert.deepEqual(await toolbarsOverTitles(page), []);
+  // Every toolbar's buttons out of the tab order, the passes' plot's too (drawn by its own view).
+  const tabbable = await page.$$eval('.modebar-btn', (b) => b.filter((x) => x.tabIndex !== -1).map((x) => x.closest('.js-plotly-plot').id));
+  assert.deepEqual(tabbable, []);
+  assert.ok(await page.$$eval('#plot-passes .modebar-btn', (b) => b.length) > 0);
   await page.locator('#passes-section').screenshot({ path: path.join(out, 'phone-passes.png') });
   assert.deepEqual(page.problems, []);
   await page.context().close();

@@ -7,7 +7,7 @@
 // closed <details>: the wheel, the axis motions, the sensitivities) is drawn when it is opened, or
 // when print opens it ('print', views/report.js: drawn at once, before the report sizes the plots).
 import { loadScript } from '../client.js';
-import { untabToolbars } from './config.js';
+import { keepToolbarsUntabbed } from './config.js';
 
 let loading = null;
 export function loadPlotly() {
@@ -21,6 +21,7 @@ const nextFrame = () => new Promise((resolve) => requestAnimationFrame(() => set
 const onDemand = (d) => d.el && d.el.every((s) => Boolean(document.querySelector(s)?.closest('details:not([open])')));
 
 export function mountPlots(store) {
+  keepToolbarsUntabbed();
   const drawers = [];
   let generation = 0;
 
@@ -42,7 +43,6 @@ export function mountPlots(store) {
       if (current()) store.setStatus(`The plots cannot be drawn: ${e.message}. The numbers above stand.`, 'error');
       return;
     }
-    untabToolbars();
     if (current()) store.emit('plots', { at: performance.now() });
   }
 
@@ -59,7 +59,6 @@ export function mountPlots(store) {
       d.pending = false;
       await d.draw({ Plotly, result: store.state.result, state: store.state, current: () => mine === generation });
     }
-    untabToolbars(details);
     if (waiting.length && mine === generation) store.emit('plots', { at: performance.now() });
   }
   document.addEventListener('toggle', (e) => { if (e.target.open) opened(e.target); }, true);
@@ -71,7 +70,6 @@ export function mountPlots(store) {
       d.pending = false;
       Promise.resolve(d.draw({ Plotly: self.Plotly, result: store.state.result, state: store.state, current: () => true })).catch(() => {});
     }
-    untabToolbars();
   });
 
   store.on('result', pass);
