@@ -1,7 +1,8 @@
 // The parts of the page kept on demand, each in a <details> closed by default (the machine
 // constants and grid, the what-if, the correction options, the solver's details, the wheel, Tab. 2,
 // the sensitivities): a refused input opens the part that holds it, so that its message is seen;
-// and print opens those the report prints (class print-open), closing them again after.
+// and print opens those the report prints (class print-open), closing them again after. The
+// header's menu also closes on Escape.
 // (Their plots are drawn, or laid out again, when they open: plots/passes.js.)
 
 const $$ = (selector) => Array.from(document.querySelectorAll(selector));
@@ -18,6 +19,12 @@ function holderOf(field) {
 export function mountOnDemand(store) {
   store.on('refusal', ({ error }) => {
     for (let d = error && error.field ? holderOf(error.field) : null; d; d = d.parentElement && d.parentElement.closest('details')) d.open = true;
+  });
+  // The header's menu ("Report and files…") closes on its summary, as a <details> does, or Escape.
+  const menus = $$('details.menu');
+  document.addEventListener('keydown', (e) => {
+    if (e.key !== 'Escape') return;
+    for (const m of menus.filter((x) => x.open)) { m.open = false; m.querySelector('summary').focus(); }
   });
 }
 
