@@ -2,7 +2,7 @@
 // of the correction (state.lockedAxes), and, folded under them, a box per coefficient
 // (state.locked: "X a0", ...), as the case format keeps them. A loaded case's locks show here;
 // each change is an undo step.
-import { AXES, AXIS_UNIT, coefficientUnit } from '../limits.js';
+import { AXES, coefficientUnit } from '../limits.js';
 import { motionUnit } from '../format.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -10,8 +10,8 @@ const toggled = (list, item, on) => (on ? [...new Set([...list, item])] : list.f
 
 function render(r, state) {
   $('#lock-axes').innerHTML = AXES.map((a) => `<label class="lock-switch" title="Keep every coefficient of ${a} out of the correction">` +
-    `<input type="checkbox" role="switch" data-lock-axis="${a}" ${state.lockedAxes.includes(a) ? 'checked' : ''}
-      aria-label="Lock every coefficient of ${a} (${AXIS_UNIT[a]})"> ${a}</label>`).join('');
+    `<input type="checkbox" data-lock-axis="${a}" ${state.lockedAxes.includes(a) ? 'checked' : ''}
+      aria-label="Lock every coefficient of ${a}"> ${a}</label>`).join('');
   const degree = r.axes.X.length - 1, per = motionUnit(r);
   $('#lock-coefficient-boxes').innerHTML = AXES.map((a) => `<p class="lock-row"><span>${a}</span>${Array.from({ length: degree + 1 }, (_, k) => {
     const name = `${a} a${k}`, unit = coefficientUnit(a, k, per);
