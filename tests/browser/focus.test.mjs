@@ -147,6 +147,9 @@ test('first open at 1366 x 768: at most 45 controls; after a measured face the s
   // The locks: a switch per axis in the correction's options, the single coefficients under them.
   await page.click('#correction-options-details > summary');
   assert.equal(await page.locator('#lock-axes [data-lock-axis]').count(), 5);
+  await page.click('#lock-coefficients > summary');
+  assert.equal(await page.locator('#lock-coefficient-boxes [data-lock]').count(), 25);
+  await page.locator('#correction-options-details').screenshot({ path: path.join(out, 'desk-correction-options.png') });
   assert.equal(await page.locator('#what-if [data-lock], #what-if [data-lock-axis]').count(), 0, 'no lock in the what-if');
   // A refused input on demand opens its part, so that its message is seen at it.
   assert.equal(await page.$eval('#machine-grid-details', (d) => d.open), false);
