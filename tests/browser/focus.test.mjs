@@ -203,7 +203,8 @@ const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
 test('the speed stays: a keystroke within 100 ms, the first open\'s plots within 1.5 times Plotly alone', async () => {
   const alonePage = readFileSync(path.join(root, 'tests', 'bench', 'plotly-alone.html'), 'utf8');
   const plottedAt = [], firstAt = [], alone = [], typed = [];
-  for (let run = 0; run < 3; run++) {
+  // Five opens of each, one after the other, so that a busy moment of the machine falls on both.
+  for (let run = 0; run < 5; run++) {
     const page = await openPage(base, desk);
     await page.waitForFunction(() => window.hobsharpTimings.draws > 0, null, { timeout: 30000 });
     plottedAt.push(await page.evaluate(() => window.hobsharpTimings.plotted));
@@ -226,7 +227,7 @@ test('the speed stays: a keystroke within 100 ms, the first open\'s plots within
   }
   console.log(`first numbers: ${firstAt.map((v) => v.toFixed(0))} ms; every plot of the first open: ${plottedAt.map((v) => v.toFixed(0))} ms; Plotly alone: ${alone.map((v) => v.toFixed(0))} ms; ` +
     `a keystroke to its numbers: ${typed.map((v) => v.toFixed(0))} ms`);
-  assert.equal(typed.length, 12);
+  assert.equal(typed.length, 20);
   assert.ok(median(typed) < 100, `a keystroke to its numbers: median ${median(typed).toFixed(0)} ms`);
   assert.ok(median(plottedAt) <= 1.5 * median(alone), `the plots in ${median(plottedAt).toFixed(0)} ms, Plotly alone ${median(alone).toFixed(0)} ms`);
 });
