@@ -159,6 +159,11 @@ test('first open at 1366 x 768: at most 45 controls; after a measured face the s
   }));
   assert.equal(await page.$eval('#machine-grid-details', (d) => d.open), true);
   assert.ok(await page.isVisible('label:has([data-field="grid.radial"]) .field-message'));
+  // A part a view opens (the tolerance table, to show a message) opens the part around it.
+  assert.equal(await page.$eval('#inspection-details', (d) => d.open), false);
+  await page.$eval('#tolerance-editor', (d) => { d.open = true; });
+  await page.waitForFunction(() => document.querySelector('#inspection-details').open);
+  assert.ok(await page.isVisible('#tolerance-table'));
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

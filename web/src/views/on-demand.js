@@ -7,19 +7,29 @@
 
 const $$ = (selector) => Array.from(document.querySelectorAll(selector));
 
-// The <details> around what a refusal names: its form field, else the correction's options for
-// the correction's own fields (its method, noise, resolution, locks).
+// The parts that hold the messages of the fields the form has no input for: the correction's own
+// options (its method, noise, resolution, locks), the inspection's (uncertainty, tolerances, gash
+// deviations) and the wheel's files.
+const HOLDERS = [[/^correction\.(method|wheel|probeNoise|resolution|locked)/, '#correction-options-details'],
+  [/^inspection\./, '#inspection-details'], [/^wheel\.(profileOffset|measuredProfile)/, '#wheel-details']];
+
+// The <details> around what a refusal names: its form field's, else the part that shows its message.
 function holderOf(field) {
   const input = document.querySelector(`[data-field="${CSS.escape(field)}"]`);
   if (input) return input.closest('details');
-  if (/^correction\.(method|wheel|probeNoise|resolution|locked)/.test(field)) return document.querySelector('#correction-options-details');
-  return null;
+  const [, part] = HOLDERS.find(([pattern]) => pattern.test(field)) || [];
+  return part ? document.querySelector(part) : null;
 }
 
 export function mountOnDemand(store) {
   store.on('refusal', ({ error }) => {
     for (let d = error && error.field ? holderOf(error.field) : null; d; d = d.parentElement && d.parentElement.closest('details')) d.open = true;
   });
+  // A part opened by a view (the tolerance table, to show its message) opens the parts around it.
+  document.addEventListener('toggle', (e) => {
+    for (let d = e.target.open && e.target.parentElement ? e.target.parentElement.closest('details:not([open])') : null; d;
+      d = d.parentElement && d.parentElement.closest('details:not([open])')) d.open = true;
+  }, true);
   // The header's menu ("Report and files…") closes on its summary, as a <details> does, or Escape.
   const menus = $$('details.menu');
   document.addEventListener('keydown', (e) => {
