@@ -10,6 +10,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
+import { loadavg } from 'node:os';
 import path from 'node:path';
 import { afterError, afterResult, base, galleryDrawn, openBare, openPage, plotted, root, shots, useBrowser } from './support.mjs';
 
@@ -231,8 +232,11 @@ test('the speed stays: a keystroke within 100 ms, the first open\'s plots within
     await reference.context().close();
   }
   console.log(`first numbers: ${firstAt.map((v) => v.toFixed(0))} ms; every plot of the first open: ${plottedAt.map((v) => v.toFixed(0))} ms; Plotly alone: ${alone.map((v) => v.toFixed(0))} ms; ` +
-    `a keystroke to its numbers: ${typed.map((v) => v.toFixed(0))} ms`);
+    `a keystroke to its numbers: ${typed.map((v) => v.toFixed(0))} ms; load average ${loadavg()[0].toFixed(1)}`);
   assert.equal(typed.length, 20);
   assert.ok(median(typed) < 100, `a keystroke to its numbers: median ${median(typed).toFixed(0)} ms`);
-  assert.ok(median(plottedAt) <= 1.5 * median(alone), `the plots in ${median(plottedAt).toFixed(0)} ms, Plotly alone ${median(alone).toFixed(0)} ms`);
+  // On a machine busy with other work the page's worker and its WebAssembly compile wait longer
+  // than Plotly alone does: the load is said with the figures.
+  assert.ok(median(plottedAt) <= 1.5 * median(alone), `the plots in ${median(plottedAt).toFixed(0)} ms, Plotly alone ` +
+    `${median(alone).toFixed(0)} ms (first numbers ${median(firstAt).toFixed(0)} ms; load average ${loadavg()[0].toFixed(1)})`);
 });
