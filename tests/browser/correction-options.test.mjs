@@ -5,10 +5,10 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { afterError, afterResult, base, openPage, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, ON_DEMAND, openPage, shots, useBrowser } from './support.mjs';
 
 useBrowser();
-const desk = { viewport: { width: 1366, height: 900 } };
+const desk = { viewport: { width: 1366, height: 900 }, open: ON_DEMAND };
 
 async function setOption(page, selector, value) {
   if (selector === '#correction-method') return afterResult(page, () => page.selectOption(selector, value));

@@ -6,10 +6,10 @@ import assert from 'node:assert/strict';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { afterResult, base, openPage, root, settled, shots, useBrowser } from './support.mjs';
+import { afterResult, base, ON_DEMAND, openPage, root, settled, shots, useBrowser } from './support.mjs';
 
 useBrowser();
-const desk = { viewport: { width: 1366, height: 768 } };  // the engineer's screen
+const desk = { viewport: { width: 1366, height: 768 }, open: ON_DEMAND };  // the engineer's screen
 const dir = mkdtempSync(path.join(tmpdir(), 'hobsharp-'));
 const paper = JSON.parse(readFileSync(path.join(root, 'tests', 'data', 'tab1.json'), 'utf8'));
 // The paper's Tab. 2 with the wheel 10 µm off along its axis: a second pass that ran the axes off.

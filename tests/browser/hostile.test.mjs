@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { unzipSync } from 'fflate';
-import { afterError, afterResult, base, count, openPage, plotted, root, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, count, ON_DEMAND, openPage, plotted, root, shots, useBrowser } from './support.mjs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { writeX3p } from '../../wasm/lib/x3p.js';
 import { longGridCsv, runOnX3p, wheelCsv } from '../js/hostile-files.mjs';
@@ -122,7 +122,7 @@ test('a grid CSV of 990,000 rows is refused at once naming the line and the limi
 });
 
 test('101 per-gash files are refused by their count; a set the calculator refuses leaves the set in use; the next edit computes', async () => {
-  const page = await openPage(base, { viewport: { width: 1366, height: 900 } });
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, open: ['inspection-details'] });
   await page.click('#tolerance-editor summary');
   const grid = (v) => Array.from({ length: 5 }, () => Array(9).fill(v).join(', ')).join('\n');
   const csv = (name, text) => ({ name, mimeType: 'text/csv', buffer: Buffer.from(text) });
@@ -163,7 +163,7 @@ test('a case with per-gash topographies: the link holds what fits, says what it 
     gashTopographies: Array.from({ length: 32 }, (_, g) => Array.from({ length: 57 }, (_, i) => Array.from({ length: 57 }, (_, j) => Math.sin(g + i * 0.1 + j * 0.37) * 3.3))),
   };
   assert.ok(encodeURIComponent(JSON.stringify(c)).length > 2e6);
-  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, permissions: ['clipboard-read', 'clipboard-write'] });
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, permissions: ['clipboard-read', 'clipboard-write'], open: ['files-menu'] });
   await afterResult(page, () => page.setInputFiles('#load-case', file('gashes.json', JSON.stringify(c))));
   const hash = await page.evaluate(() => location.hash);
   assert.ok(hash.length <= 64 * 1024 + 1 && hash.startsWith('#case='), `the address holds ${hash.length} characters`);
@@ -190,7 +190,7 @@ test('a case with per-gash topographies: the link holds what fits, says what it 
 
 test('a loaded case is evaluated once; a slow computation shows Cancel, which returns control at once, and the next edit computes', async () => {
   const hobsharp = await loadHobSharp();
-  const page = await openPage(base, { viewport: { width: 1366, height: 900 } });
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
   // A case file: one evaluation from choosing it to its numbers.
   const c = structuredClone(paper);
   c.setup.tilt = 15.25;

@@ -7,7 +7,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { afterError, afterResult, base, openPage, root, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, ON_DEMAND, openPage, root, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 
@@ -32,7 +32,7 @@ async function shot(page, selector, file) {
 const rowsOf = (page) => page.$$eval('#inspection-table tbody tr', (trs) => trs.map((r) => [...r.children].map((x) => x.textContent.trim())));
 
 test('the class with its conformity and the proven class lead, above the maps; series, not graded and the rake error said', async () => {
-  const page = await openPage(link(theCase), { viewport: { width: 1366, height: 900 } });
+  const page = await openPage(link(theCase), { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
   await page.waitForFunction(() => window.hobsharpTimings.results > 0 && !document.querySelector('#inspection').hidden);
   // The lead: the class without the uncertainty and the proven class, side by side.
   const klass = await page.textContent('#inspection-lead [data-part="class"]');
@@ -91,7 +91,7 @@ test('the class with its conformity and the proven class lead, above the maps; s
 });
 
 test('the uncertainty U95 typed: the conformity and the proven class follow, the warning, a refused value named, undone', async () => {
-  const page = await openPage(link(theCase), { viewport: { width: 1366, height: 900 } });
+  const page = await openPage(link(theCase), { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
   await page.waitForFunction(() => !document.querySelector('#inspection').hidden);
   assert.equal(await page.inputValue('#inspection-uncertainty'), '');
   assert.equal(await page.getAttribute('#inspection-uncertainty', 'placeholder'), '2');
@@ -130,7 +130,7 @@ test('the uncertainty U95 typed: the conformity and the proven class follow, the
 });
 
 test('the tolerance table and the gash deviations are edited on the page, refused cells named, and kept in the link', async () => {
-  const page = await openPage(base, { viewport: { width: 1366, height: 900 } });
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
   await page.click('#tolerance-editor summary');
   assert.match(await page.textContent('#tolerance-band'), /band over 6\.3 to 10 mm of normal module, from the default table/);
   const cell = (check, k) => `#tolerance-table input[data-check="${check}"][data-class="${k}"]`;
@@ -181,7 +181,7 @@ test('the tolerance table and the gash deviations are edited on the page, refuse
 });
 
 test('one topography per gash from CSV files: the per-gash table, the spacing, and a file that does not fit named', async () => {
-  const page = await openPage(base, { viewport: { width: 1366, height: 900 } });
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
   await page.click('#tolerance-editor summary');
   const grid = (shift) => Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, () => (shift + 0.5 * i).toFixed(3)).join(', ')).join('\n');
   const file = (name, text) => ({ name, mimeType: 'text/csv', buffer: Buffer.from(text) });

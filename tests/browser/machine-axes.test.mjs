@@ -7,13 +7,13 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { afterResult, base, openPage, shots, useBrowser } from './support.mjs';
+import { afterResult, base, ON_DEMAND, openPage, shots, useBrowser } from './support.mjs';
 import { readHeidenhain, readSinumerik } from '../js/nc-interpreter.mjs';
 
 useBrowser();
 
 test('the axes to run: degrees, the rounded proposal, copied and sampled', async () => {
-  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, permissions: ['clipboard-read', 'clipboard-write'] });
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, permissions: ['clipboard-read', 'clipboard-write'], open: [...ON_DEMAND, 'files-menu'] });
   await page.waitForFunction(() => window.hobsharpTimings.results > 0);
   assert.equal(await page.textContent('#machine-axes-source'), '(nominal; no correction)');
   assert.equal(await page.textContent('#machine-axes-figures'), '');

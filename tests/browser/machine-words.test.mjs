@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { afterResult, base, openPage, shots, useBrowser } from './support.mjs';
+import { afterResult, base, ON_DEMAND, openPage, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 
@@ -13,7 +13,7 @@ async function setNoise(page, value) {
 }
 
 test('+8 µm on Y: the words name Y with the axes it grinds alike; no axis gets a value the face cannot tell apart', async () => {
-  const page = await openPage(base, { viewport: { width: 1366, height: 900 } });
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
   await page.fill('[data-offset="Y 0"]', '0.008');
   await page.dispatchEvent('[data-offset="Y 0"]', 'change');
   await afterResult(page, () => page.click('#generate-error'));

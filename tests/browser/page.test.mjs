@@ -6,7 +6,7 @@ import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
-import { afterError, afterResult, after_, base, colours, galleryDrawn, galleryTitles, openPage, plotted, settled, shots, site, tab2, useBrowser } from './support.mjs';
+import { after_, afterError, afterResult, base, colours, galleryDrawn, galleryTitles, ON_DEMAND, openPage, plotted, settled, shots, site, tab2, useBrowser } from './support.mjs';
 import { surfacesDrawn } from './surfaces.mjs';
 
 useBrowser();
@@ -29,7 +29,7 @@ async function assertGallery(page) {
 
 // How fast it opens is measured by ./hobsharp.sh bench (tests/benchmark-page.mjs), not asserted here.
 test('the page opens with the paper example and shows Tab. 2 (left)', async () => {
-  const page = await openPage();
+  const page = await openPage(base, { open: [...ON_DEMAND, 'files-menu'] });
   console.log(`first result ${(await page.evaluate(() => window.hobsharpTimings.firstResult)).toFixed(0)} ms after opening`);
   // The example opens with gamma_m and E_t derived (tests/browser/derived.test.mjs); the paper's
   // Tab. 2 follows from its rounded values, typed in.
@@ -59,7 +59,7 @@ test('the page opens with the paper example and shows Tab. 2 (left)', async () =
 });
 
 test('changing the tilt changes the numbers', async () => {
-  const page = await openPage();
+  const page = await openPage(base, { open: [...ON_DEMAND, 'files-menu'] });
   const before = await tab2(page, 'nominal');
   await afterResult(page, () => page.fill('[data-field="setup.tilt"]', '16'));
   const now = await tab2(page, 'nominal');
@@ -75,7 +75,7 @@ test('changing the tilt changes the numbers', async () => {
 });
 
 test('a generated machine error is corrected, the sum of squares dropping at least 1000x', async () => {
-  const page = await openPage();
+  const page = await openPage(base, { open: [...ON_DEMAND, 'files-menu'] });
   await plotted(page);
   const nominalColours = await colours(page, '#plot-before-2d');
   const offsets = { 'Y 0': '0.01', 'Z 0': '-0.01', 'Z 1': '0.003', 'A 0': '0.0002', 'B 2': '0.001' };
@@ -123,7 +123,7 @@ test('a generated machine error is corrected, the sum of squares dropping at lea
 });
 
 test('a bad CSV is refused with a message and the old results stay', async () => {
-  const page = await openPage();
+  const page = await openPage(base, { open: [...ON_DEMAND, 'files-menu'] });
   const shown = await tab2(page, 'nominal');
   const dir = mkdtempSync(path.join(tmpdir(), 'hobsharp-'));
   const files = {
@@ -181,7 +181,7 @@ test('a bad CSV is refused with a message and the old results stay', async () =>
 });
 
 test('a saved case loads back', async () => {
-  const page = await openPage();
+  const page = await openPage(base, { open: [...ON_DEMAND, 'files-menu'] });
   await afterResult(page, () => page.fill('[data-field="machine.K1"]', '120'));
   const saved = await tab2(page, 'nominal');
   const [profile] = await Promise.all([page.waitForEvent('download'), page.click('#download-profile')]);
@@ -207,13 +207,13 @@ test('a saved case loads back', async () => {
 });
 
 test('a shared link reopens the same job', async () => {
-  const page = await openPage();
+  const page = await openPage(base, { open: [...ON_DEMAND, 'files-menu'] });
   await afterResult(page, () => page.fill('[data-field="machine.K2"]', '12'));
   await afterResult(page, () => page.fill('[data-field="grid.axial"]', '11'));
   const url = page.url();
   assert.match(url, /#case=/);
   const shown = await tab2(page, 'nominal');
-  const again = await openPage(url);
+  const again = await openPage(url, { open: [...ON_DEMAND, 'files-menu'] });
   assert.equal(await again.inputValue('[data-field="machine.K2"]'), '12');
   assert.equal(await again.inputValue('[data-field="grid.axial"]'), '11');
   assert.deepEqual(await tab2(again, 'nominal'), shown);
@@ -223,7 +223,7 @@ test('a shared link reopens the same job', async () => {
 });
 
 test('the page also works opened from disk', async () => {
-  const page = await openPage(pathToFileURL(path.join(site, 'index.html')).href);
+  const page = await openPage(pathToFileURL(path.join(site, 'index.html')).href, { open: [...ON_DEMAND, 'files-menu'] });
   assert.equal((await tab2(page, 'nominal')).X, '22.40001 + 139.5089 φ₁');  // gamma_m derived
   await plotted(page);
   for (const id of ['#plot-axes', '#plot-before-2d']) {

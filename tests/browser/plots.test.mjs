@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { after_, frames, openPage, plotted, shots, useBrowser } from './support.mjs';
+import { after_, frames, ON_DEMAND, openPage, plotted, shots, useBrowser } from './support.mjs';
 import { surfacesDrawn } from './surfaces.mjs';
 
 useBrowser();
@@ -25,7 +25,7 @@ const box = (page, selector) => page.locator(selector).boundingBox();
 
 // The surface trace is in the bundle but registered only when the first 3D surface is drawn.
 test('the plot bundle registers the heatmap, bar and scatter traces, the surface on demand, and each plot uses its own', async () => {
-  const page = await openPage(undefined, { viewport });
+  const page = await openPage(undefined, { viewport, open: ON_DEMAND });
   await plotted(page);
   const traces = () => page.evaluate(() => Object.keys(window.Plotly.PlotSchema.get().traces).sort());
   assert.deepEqual(await traces(), ['bar', 'heatmap', 'scatter']);
@@ -40,7 +40,7 @@ test('the plot bundle registers the heatmap, bar and scatter traces, the surface
 });
 
 test('with a correction: the axis plot shows corrected − nominal in µm and arc-seconds, clear of its legend', async () => {
-  const page = await openPage(undefined, { viewport });
+  const page = await openPage(undefined, { viewport, open: ON_DEMAND });
   await plotted(page);
   await correct(page);
   const plot = await page.evaluate(() => {
@@ -75,7 +75,7 @@ test('with a correction: the axis plot shows corrected − nominal in µm and ar
 });
 
 test('with a correction: the maps share one colour scale that says blue is excess material; the red singular values are explained', async () => {
-  const page = await openPage(undefined, { viewport });
+  const page = await openPage(undefined, { viewport, open: ON_DEMAND });
   await plotted(page);
   await correct(page);
   const maps = await page.evaluate(() => ['plot-before-2d', 'plot-after-2d'].map((id) => {
@@ -114,7 +114,7 @@ test('with a correction: the maps share one colour scale that says blue is exces
 });
 
 test('the 3D surfaces: drawn on demand, one scale, titles inside the plot, hover with names and units', async () => {
-  const page = await openPage(undefined, { viewport });
+  const page = await openPage(undefined, { viewport, open: ON_DEMAND });
   await plotted(page);
   assert.equal(await page.isVisible('#plot-before-3d'), false, 'the maps come alone by default');
   await correct(page);
@@ -151,7 +151,7 @@ test('the 3D surfaces: drawn on demand, one scale, titles inside the plot, hover
   await after_(page, 'draws', () => page.check('input[name="view"][value="circular"]'));
   const linkPage = () => JSON.parse(decodeURIComponent(page.url().split('#case=')[1])).page;
   assert.deepEqual(linkPage(), { view: 'circular', surfaces: true });
-  const linked = await openPage(page.url(), { viewport });
+  const linked = await openPage(page.url(), { viewport, open: ON_DEMAND });
   await plotted(linked);
   await linked.waitForFunction(() => !document.getElementById('plot-before-3d').hidden);
   assert.equal(await linked.isChecked('#show-3d'), true, 'the link opens with the 3D surfaces');

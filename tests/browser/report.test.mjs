@@ -11,7 +11,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import QRCode from 'qrcode';
-import { afterError, afterResult, base, openPage, pngRegions, pngStats, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, openPage, openParts, pngRegions, pngStats, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 const mmToPx = (mm) => (mm / 25.4) * 96;
@@ -43,6 +43,7 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
   // The hob's relief, so that the effect on the gear is in the record.
   await afterResult(page, () => page.fill('[data-field="hob.gashes"]', '12'));
   await afterResult(page, () => page.fill('[data-field="hob.relief"]', '4.5'));
+  await openParts(page, 'what-if-details');  // "Simulate a machine error...", on demand (issue 23)
   await page.fill('[data-offset="Z 0"]', '-0.01');
   await page.dispatchEvent('[data-offset="Z 0"]', 'change');
   await afterResult(page, () => page.click('#generate-error'));

@@ -52,18 +52,42 @@ export function useBrowser() {
   });
 }
 
-// prepare(context), if given, runs before the page opens (to route a request, say).
-export async function openPage(url = base, { viewport = { width: 1500, height: 1100 }, permissions = [], prepare } = {}) {
+// The parts of the page kept on demand (issue 23: closed <details>): every one, for a test of what
+// they hold, as a user opens them. (The header's menu, "Report and files…", is opened by the tests
+// that use it: open, it lies over the top of the results.)
+export const ON_DEMAND = ['machine-grid-details', 'what-if-details', 'correction-options-details', 'lock-coefficients',
+  'identification-details', 'inspection-details', 'wheel-details', 'axes-details', 'sensitivity-details'];
+
+// A page at url, in a context of its own, not waiting for anything: prepare(context), if given,
+// runs before the page opens (to route a request, say); open: the ids of the parts on demand to
+// open as the page loads (before its first result, so that its plots are drawn as it opens).
+export async function openBare(url = base, { viewport = { width: 1500, height: 1100 }, permissions = [], prepare, open = [] } = {}) {
   const context = await browser.newContext({ viewport, acceptDownloads: true, permissions });
   if (prepare) await prepare(context);
+  if (open.length) {
+    await context.addInitScript((ids) => document.addEventListener('DOMContentLoaded', () => {
+      for (const id of ids) document.getElementById(id).open = true;
+    }), open);
+  }
   const page = await context.newPage();
   const problems = [];
   page.on('pageerror', (e) => problems.push(e.message));
   page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
   page.problems = problems;
   await page.goto(url);
+  return page;
+}
+
+// The calculator's page, once it has shown its first result.
+export async function openPage(url = base, options = {}) {
+  const page = await openBare(url, options);
   await page.waitForFunction(() => window.hobsharpTimings && window.hobsharpTimings.results > 0, null, { timeout: 20000 });
   return page;
+}
+
+// Opens parts on demand of a page already open (their plots drawn as they open: plots/passes.js).
+export async function openParts(page, ...ids) {
+  await page.evaluate((list) => { for (const id of list) document.getElementById(id).open = true; }, ids);
 }
 
 export const count = (page, what) => page.evaluate((w) => window.hobsharpTimings[w], what);

@@ -3,10 +3,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import path from 'node:path';
-import { afterResult, after_, base, openPage, settled, shots, tab2, useBrowser } from './support.mjs';
+import { after_, afterResult, base, ON_DEMAND, openPage, settled, shots, tab2, useBrowser } from './support.mjs';
 
 useBrowser();
-const desk = { viewport: { width: 1366, height: 768 } };  // the engineer's screen
+const desk = { viewport: { width: 1366, height: 768 }, open: ON_DEMAND };  // the engineer's screen
 // A finished change of a field: typed, then the field left (an undo step).
 const enter = (page, field, value) => afterResult(page, async () => {
   await page.fill(`[data-field="${field}"]`, value);

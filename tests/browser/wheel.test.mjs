@@ -6,12 +6,12 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { afterError, afterResult, base, colours, openPage, plotted, root, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, colours, ON_DEMAND, openPage, plotted, root, shots, useBrowser } from './support.mjs';
 import { readWheelCsv } from '../../wasm/lib/wheel-csv.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 
 useBrowser();
-const desk = { viewport: { width: 1366, height: 900 } };
+const desk = { viewport: { width: 1366, height: 900 }, open: ON_DEMAND };
 const paper = JSON.parse(readFileSync(path.join(root, 'tests', 'data', 'tab1.json'), 'utf8'));
 const csvFile = (name, text) => ({ name, mimeType: 'text/csv', buffer: Buffer.from(text) });
 const rmsShown = async (page) => Number(/^rms ([\d.]+) µm/.exec(await page.textContent('#figures-before'))[1]);

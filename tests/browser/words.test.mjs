@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { afterResult, after_, openPage, shots, useBrowser } from './support.mjs';
+import { after_, afterResult, base, ON_DEMAND, openPage, shots, useBrowser } from './support.mjs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { fixed, fmt, signed } from '../../web/src/format.js';
 import { gridFigures } from '../../web/src/figures.js';
@@ -26,7 +26,7 @@ async function formLimits(page) {
 
 test("the form's grid limit, degree range and default grid are the module's", async () => {
   const limits = hobsharp.limits();
-  const page = await openPage();
+  const page = await openPage(base, { open: ON_DEMAND });
   assert.deepEqual(await formLimits(page), {
     degree: [limits.degree.min, limits.degree.max, limits.degree.default], degreeText: `${limits.degree.min} to ${limits.degree.max}`,
     grid: [limits.maxGridLines, limits.maxGridLines], placeholders: [limits.defaultGrid.radial, limits.defaultGrid.axial],
@@ -96,7 +96,7 @@ test('"Load case…" and "Upload CSV…" are reached with Tab and open the file 
 });
 
 test('the lock boxes, the offsets and the CSV box have names of their own; one live region', async () => {
-  const page = await openPage();
+  const page = await openPage(base, { open: ON_DEMAND });
   const units = Object.fromEntries(hobsharp.limits().axes.map((a) => [a.name, a.unit]));
   const sup = ['', '', '²', '³', '⁴', '⁵', '⁶'];
   const locks = await page.$$eval('[data-lock]', (els) => els.map((el) => el.getAttribute('aria-label')));
@@ -124,7 +124,7 @@ test('the lock boxes, the offsets and the CSV box have names of their own; one l
 });
 
 test("the words: no −0.000, no hand for a straight gash, the status, the verdict, rad/rad²", async () => {
-  const page = await openPage();
+  const page = await openPage(base, { open: ON_DEMAND });
   const thickness = hobsharp.evaluate(JSON.parse(paper)).topography.thickness;
   assert.ok(thickness < 0 && thickness > -0.0005, `the paper's thickness error ${thickness} rounds to -0.000`);
   assert.match(await page.textContent('#figures-before'), /thickness error 0\.000 µm · /);
@@ -154,7 +154,7 @@ test("the words: no −0.000, no hand for a straight gash, the status, the verdi
 });
 
 test('the circular view shows the figures of the circular deviation', async () => {
-  const page = await openPage();
+  const page = await openPage(base, { open: ON_DEMAND });
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-case')]);
   const t = hobsharp.evaluate(JSON.parse(readFileSync(await download.path(), 'utf8'))).topography;
   const normal = await page.textContent('#figures-before');

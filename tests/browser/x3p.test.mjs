@@ -8,7 +8,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { createHash } from 'node:crypto';
 import { unzipSync, zipSync, strToU8, strFromU8 } from 'fflate';
-import { afterError, afterResult, base, openPage, root, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, ON_DEMAND, openPage, root, shots, useBrowser } from './support.mjs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { readX3p, writeX3p } from '../../wasm/lib/x3p.js';
 
@@ -35,7 +35,7 @@ test('export the measured and predicted topography as X3P, import the measured o
   const measured = hobsharp.evaluate({ ...paper, axes }).topography.normal;
   const withMeasured = { ...paper, measured };
   const expected = hobsharp.evaluate(withMeasured);
-  const page = await openPage(`${base}#case=${encodeURIComponent(JSON.stringify(withMeasured))}`, { viewport: { width: 1366, height: 900 } });
+  const page = await openPage(`${base}#case=${encodeURIComponent(JSON.stringify(withMeasured))}`, { viewport: { width: 1366, height: 900 }, open: [...ON_DEMAND, 'files-menu'] });
   await page.waitForFunction(() => document.querySelector('#verdict').dataset.sseBefore !== undefined);
 
   assert.deepEqual(await page.$$eval('#x3p-kind option', (o) => o.map((e) => e.value)), ['measured', 'predicted']);

@@ -114,7 +114,7 @@ export function createLoader({ store, calculator, form, measuredView, paperCase 
           aside = c.measured;
           delete candidate.measured;
           notes.push(`the measured grid is set aside, not used: ${error.message} Its text is in the box under ` +
-            '"Measured topography and correction": correct it there and press "Use this grid".');
+            '"The measured face": correct it there and press "Use this grid".');
         } else {
           notes.push(`its correction settings are left out: ${error.message}`);
         }

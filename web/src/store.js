@@ -23,6 +23,7 @@
 //              undo step's grid; its result follows)
 //   measurement    the measured section's state changed (web/src/measurement.js): measuredOptions,
 //              measuredSource, measuredAttempt, measuredRefusal, measuredMessage
+//   print      print began and opened the parts on demand it prints: their plots are drawn
 import { CASE_FORMAT } from './limits.js';
 import { ORIENT_OPTIONS } from '../../wasm/lib/measured-grid.js';
 

@@ -4,6 +4,7 @@
 import { AXES, isRotary } from '../limits.js';
 import { motionSymbol, motionUnit } from '../format.js';
 import { polynomialAt } from '../../../wasm/lib/polynomial.js';
+import { PLOT_CONFIG } from './config.js';
 
 const ARCSEC_PER_RAD = (180 / Math.PI) * 3600;
 
@@ -32,5 +33,5 @@ export function drawAxisMotion(Plotly, el, r) {
     yaxis2: { title: { text: corrected ? 'ΔA, ΔB (arc-seconds)' : 'A, B (rad)' }, overlaying: 'y', side: 'right', showgrid: false },
     // Above the plot, under its title: clear of the axis titles and of the curves.
     legend: { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' },
-  }, { responsive: true, displaylogo: false });
+  }, PLOT_CONFIG);
 }

@@ -3,6 +3,7 @@
 // (docs/measured-points.md), those points marked on it (a scatter trace on the same axes).
 import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
 import { AXIS_TITLES } from './surface.js';
+import { PLOT_CONFIG } from './config.js';
 
 // The probe points as a scatter trace: list holds [r (mm), x (mm), deviation (µm)] per point, the
 // deviation named by `what` when the pointer is on a point.
@@ -31,5 +32,5 @@ export function drawMap(Plotly, el, { x, y, z, range, title, points = null }) {
     margin: { t: 40, r: 10, b: points ? 80 : 50, l: 60 },
     xaxis: { title: { text: AXIS_TITLES.x } }, yaxis: { title: { text: AXIS_TITLES.y } },
     showlegend: Boolean(points), legend: { orientation: 'h', x: 0, xanchor: 'left', y: -0.32, yanchor: 'top' },
-  }, { responsive: true, displaylogo: false });
+  }, PLOT_CONFIG);
 }

@@ -8,6 +8,8 @@
 // eighteen decades; the others linear. series: historySeries() of
 // web/src/pass-history.js, which leaves out every value that is not finite. units: the module's
 // units of the figures (result-fields.js), {rms, sse, max, thickness}.
+import { PLOT_CONFIG } from './config.js';
+
 const PANELS = [
   { q: 'rms', title: 'RMS', log: true },
   { q: 'sse', title: 'Sum of squares' },
@@ -31,17 +33,25 @@ export function rmsAxisFloor(floorValues = []) {
   return Math.max(LEAST_RMS_SHOWN, sigmas.length ? Math.min(...sigmas) / 10 : 0);
 }
 
+// Side by side, or, in a plot narrower than NARROW px (a phone), two by two, so that the panels'
+// titles do not run into each other.
+const NARROW = 640;
+
 export function drawPassHistory(Plotly, el, series, passCount, units = {}) {
+  const columns = ((el && el.clientWidth) || 1000) < NARROW ? 2 : PANELS.length;
+  const rows = Math.ceil(PANELS.length / columns);
   const traces = [], layout = {
-    height: 300, margin: { t: 60, r: 20, b: 50, l: 60 }, annotations: [], hovermode: 'closest',
-    legend: { orientation: 'h', x: 0, xanchor: 'left', y: 1.2, yanchor: 'bottom' },
+    height: rows > 1 ? 580 : 300, margin: { t: 60, r: 20, b: 50, l: 60 }, annotations: [], hovermode: 'closest',
+    legend: { orientation: 'h', x: 0, xanchor: 'left', y: rows > 1 ? 1.1 : 1.2, yanchor: 'bottom' },
   };
   const ticks = Array.from({ length: Math.max(1, passCount) }, (_, i) => i + 1);
-  const n = PANELS.length, gap = 0.035;
-  PANELS.forEach(({ q, title, log: logWhenPositive }, i) => {
+  const n = columns, gap = columns < PANELS.length ? 0.1 : 0.035, rowGap = 0.2;
+  PANELS.forEach(({ q, title, log: logWhenPositive }, k) => {
     const unit = units[q] || '';
-    const axis = i === 0 ? '' : String(i + 1);
+    const axis = k === 0 ? '' : String(k + 1);
+    const i = k % columns, row = Math.floor(k / columns);
     const domain = [i / n + (i ? gap : 0), (i + 1) / n - (i < n - 1 ? gap : 0)];
+    const yDomain = [1 - (row + 1) / rows + (row < rows - 1 ? rowGap : 0), 1 - row / rows];
     const s = series[q];
     const floor = q === 'rms' ? floorLine(series.floor || { x: [], y: [] }, passCount) : null;
     const high = q === 'rms' && s.predicted.high ? s.predicted.high : [];
@@ -50,12 +60,12 @@ export function drawPassHistory(Plotly, el, series, passCount, units = {}) {
     const bottom = log ? rmsAxisFloor(series.floor ? series.floor.y : []) : null;
     const shown = (v) => (log ? Math.max(v, bottom) : v);
     layout[`xaxis${axis}`] = { domain, anchor: `y${axis}`, title: { text: 'pass' }, tickvals: ticks, range: [0.5, passCount + 0.5] };
-    layout[`yaxis${axis}`] = { anchor: `x${axis}`, type: log ? 'log' : 'linear', exponentformat: 'power', zeroline: q === 'thickness' };
+    layout[`yaxis${axis}`] = { domain: yDomain, anchor: `x${axis}`, type: log ? 'log' : 'linear', exponentformat: 'power', zeroline: q === 'thickness' };
     if (log) {
       const top = Math.max(bottom * 10, ...values.filter((v) => Number.isFinite(v)));
       layout[`yaxis${axis}`].range = [Math.log10(bottom), Math.log10(top) + 0.15];
     }
-    layout.annotations.push({ text: `${title} (${unit})`, xref: 'paper', yref: 'paper', x: (domain[0] + domain[1]) / 2, y: 1.02,
+    layout.annotations.push({ text: `${title} (${unit})`, xref: 'paper', yref: 'paper', x: (domain[0] + domain[1]) / 2, y: yDomain[1] + (rows > 1 ? 0.01 : 0.02),
       xanchor: 'center', yanchor: 'bottom', showarrow: false, font: { size: 13 } });
     if (floor) {
       const sigmas = [...new Set(series.floor.y)];
@@ -71,7 +81,7 @@ export function drawPassHistory(Plotly, el, series, passCount, units = {}) {
       const symbol = set === 'predicted' ? 'circle-open' : 'circle';
       const trace = {
         type: 'scatter', mode: 'lines+markers', x: s[set].x, y: s[set].y.map(shown),
-        xaxis: `x${axis}`, yaxis: `y${axis}`, name: set, legendgroup: set, showlegend: i === 0,
+        xaxis: `x${axis}`, yaxis: `y${axis}`, name: set, legendgroup: set, showlegend: k === 0,
         line: { color: COLOURS[set], dash: set === 'predicted' ? 'dash' : 'solid' },
         marker: { size: 8, symbol: below.some(Boolean) ? below.map((b) => (b ? 'triangle-down' : symbol)) : symbol },
         customdata: s[set].y.map((y, k) => `${Number(y.toPrecision(4))} ${unit}${below[k] ? `, below the axis's ${figure(bottom)} ${unit}` : ''}`),
@@ -86,5 +96,5 @@ export function drawPassHistory(Plotly, el, series, passCount, units = {}) {
       traces.push(trace);
     }
   });
-  return Plotly.react(el, traces, layout, { responsive: true, displaylogo: false });
+  return Plotly.react(el, traces, layout, PLOT_CONFIG);
 }

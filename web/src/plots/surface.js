@@ -1,6 +1,7 @@
 // A deviation topography as a 3D surface: Plotly's surface trace (WebGL). Dragging turns it, the
 // wheel zooms, and the pointer shows the grid point's r, x and deviation with their units.
 import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
+import { PLOT_CONFIG } from './config.js';
 
 export const AXIS_TITLES = { x: 'x along the gash (mm)', y: 'r root to tip (mm)', z: 'deviation (µm)' };
 
@@ -32,5 +33,5 @@ export function drawSurface(Plotly, el, { x, y, z, range, title }) {
       xaxis: axis(AXIS_TITLES.x), yaxis: axis(AXIS_TITLES.y),
       zaxis: axis(AXIS_TITLES.z, { range: [-range, range] }),
     },
-  }, { responsive: true, displaylogo: false });
+  }, PLOT_CONFIG);
 }

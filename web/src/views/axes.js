@@ -42,5 +42,5 @@ export function mountAxes(store, plots) {
   const render = (state) => { renderTab2(state.result, state); renderCoefficients(state.result, state); };
   store.on('result', (_, state) => render(state));
   store.on('view', (_, state) => { if (state.result) render(state); });  // a result pinned or unpinned
-  plots.add(({ Plotly, result }) => drawAxisMotion(Plotly, 'plot-axes', result));
+  plots.add(({ Plotly, result }) => drawAxisMotion(Plotly, 'plot-axes', result), { el: ['#plot-axes'] });
 }

@@ -6,6 +6,7 @@
 import { escapeHtml, fixed, withUnit } from '../format.js';
 import { FLANKS, gearEffectRows, hasGearEffect } from '../gear-effect-figures.js';
 import { fieldUnit } from '../result-fields.js';
+import { PLOT_CONFIG } from '../plots/config.js';
 
 const $ = (selector) => document.querySelector(selector);
 // A field's unit as the module gives it (result-fields.js).
@@ -44,7 +45,7 @@ function drawProfiles(Plotly, g) {
     xaxis: { title: { text: `profile deviation on the gear (${deviation}, + = more material)` }, zeroline: true },
     yaxis: { title: { text: `height on the gear tooth (${height}, tip up)` } },
     showlegend: false,
-  }, { responsive: true, displaylogo: false });
+  }, PLOT_CONFIG);
 }
 
 // A y range at least `least` µm wide about the values' middle, or none (Plotly's own) for a wider
@@ -73,7 +74,7 @@ function drawAlong(Plotly, g) {
     xaxis: { title: { text: `tooth position along the hob axis x (${x})` } },
     yaxis: { title: { text: `fHα (${slope})` }, zeroline: true, ...yRange },
     legend: { orientation: 'h', y: -0.25 },
-  }, { responsive: true, displaylogo: false });
+  }, PLOT_CONFIG);
 }
 
 export function mountGearEffect(store, plots) {

@@ -14,6 +14,7 @@ import { machineUnit, programmed, roundedFiguresText } from '../machine-axes.js'
 import { axesToRun, machineCoefficients } from '../../../wasm/lib/axes-to-run.js';
 import { LINK_TOO_LONG, QR_MOST_BYTES, jobRows, linkBytes, reportDateLine, reportInputRows, reportInspectionLine, verdictLine } from '../report-lines.js';
 import { fieldNames } from './field-names.js';
+import { openForPrint } from './on-demand.js';
 
 const $ = (selector) => document.querySelector(selector);
 const unitOf = (path) => fieldUnit(path) || '';
@@ -131,14 +132,22 @@ export function mountReport(store) {
   // The browser lays the printed pages out at the paper's width, not the window's, and tells the
   // page only that print media now apply: the width comes from the paper (printWidth), never from
   // the window's layout, so that a map and its colour bar stay within the card.
+  // The parts on demand that the report prints are opened first, and closed after the plots in
+  // them are back at the screen's width.
   const resize = () => {
     renderLink();
-    if (!self.Plotly) return;
     const printing = window.matchMedia('print').matches;
-    for (const el of document.querySelectorAll('.plot')) {
-      if (!el.data || el.offsetParent === null) continue;
-      self.Plotly.relayout(el, { width: printing ? printWidth(el) : null }).catch(() => {});
+    if (printing) {
+      openForPrint(true);
+      store.emit('print');  // the plots in the parts just opened drawn (plots/passes.js)
     }
+    if (self.Plotly) {
+      for (const el of document.querySelectorAll('.plot')) {
+        if (!el.data || el.offsetParent === null) continue;
+        self.Plotly.relayout(el, { width: printing ? printWidth(el) : null }).catch(() => {});
+      }
+    }
+    if (!printing) openForPrint(false);
   };
   const media = window.matchMedia('print');
   media.addEventListener('change', resize);

@@ -4,6 +4,7 @@ import { coefficientUnit, isRotary } from '../limits.js';
 import { escapeHtml, fixed, fmt, motionUnit } from '../format.js';
 import { colourRange } from '../plots/colours.js';
 import { drawGallery } from '../plots/gallery.js';
+import { PLOT_CONFIG } from '../plots/config.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -52,7 +53,7 @@ function drawSingular({ Plotly, result: r }) {
     legend: { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' },
     yaxis: { type: 'log', exponentformat: 'power', title: { text: nonlinear ? 'σ (µm of face per machine step)' : 'σ (unit columns)' } },
     xaxis: { title: { text: 'index' } },
-  }, { responsive: true, displaylogo: false });
+  }, PLOT_CONFIG);
 }
 
 function renderUnobservable(r) {
@@ -65,6 +66,6 @@ function renderUnobservable(r) {
 
 export function mountSensitivities(store, plots) {
   store.on('result', ({ result }) => renderUnobservable(result));
-  plots.add(drawSingular);
-  plots.add(drawSensitivities, { later: true });
+  plots.add(drawSingular, { el: ['#plot-singular'] });
+  plots.add(drawSensitivities, { later: true, el: ['#gallery'] });
 }

@@ -31,7 +31,7 @@ export function mountStatus(store) {
     store.setNotice(`The computation was cancelled.${kept()} Change an input to compute again.`);
   });
   store.on('aside', ({ error }) => store.setNotice(`The measured grid is set aside, not used: ${error.message} ` +
-    'Its text stays in the box under "Measured topography and correction": correct it there, or the grid, and press "Use this grid".'));
+    'Its text stays in the box under "The measured face": correct it there, or the grid, and press "Use this grid".'));
   // A user's change ends the notice; loading a case does not.
   store.on('inputs', ({ source }) => { if (store.state.notice && source !== 'load') store.setNotice(null); });
 }

@@ -54,7 +54,7 @@ function topographyViews(r, caseObject, view) {
     beforeTitle: 'Ground face (simulated for the axes run)',
     before: circular ? t.circular : t.normal, beforeName: `Simulated ${viewName}`,
     beforeNumbers, beforeFigures: figuresText(beforeNumbers),
-    after: null, afterFigures: 'No correction yet: give a measured topography below.',
+    after: null, afterFigures: 'No correction yet: give a measured topography in step 2 above.',
   };
 }
 

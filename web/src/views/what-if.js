@@ -1,7 +1,7 @@
-// The machine-error what-if: offsets the machine adds to each coefficient, ground into a face
-// that is then taken as measured; and the locks that keep axes or coefficients out of the
-// correction. Each finished change is an undo step; the offsets are saved with the case. The grid
-// ground is noise-free, and the correction is told so (web/src/probe-noise.js).
+// The machine-error what-if ("Simulate a machine error..."): offsets the machine adds to each
+// coefficient, ground into a face that is then taken as measured (the locks are in the
+// correction's options: views/locks.js). Each finished change is an undo step; the offsets are
+// saved with the case. The grid ground is noise-free, and the correction is told so (web/src/probe-noise.js).
 import { AXES, coefficientUnit } from '../limits.js';
 import { motionUnit } from '../format.js';
 import { gridToCsv } from '../../../wasm/lib/csv.js';
@@ -12,7 +12,7 @@ const $ = (selector) => document.querySelector(selector);
 function renderTable(r, state) {
   const degree = r.axes.X.length - 1;
   const per = motionUnit(r);
-  const head = ['<tr><th>axis</th><th>lock</th>'];
+  const head = ['<tr><th>axis</th>'];
   for (let k = 0; k <= degree; k++) head.push(`<th>a${k}</th>`);
   $('#what-if thead').innerHTML = head.join('') + '</tr>';
   $('#what-if tbody').innerHTML = AXES.map((a) => {
@@ -22,15 +22,11 @@ function renderTable(r, state) {
       const name = `${a} a${k}`;
       const unit = coefficientUnit(a, k, per);
       cells.push(`<td><input type="number" step="any" data-offset="${a} ${k}" value="${offsets[k] || ''}" placeholder="0"
-        title="offset of ${name}, ${unit}" aria-label="Offset of ${name} (${unit})"><span class="unit">${unit}</span>
-        <label class="lock"><input type="checkbox" data-lock="${name}" ${state.locked.includes(name) ? 'checked' : ''}
-          aria-label="Lock ${name} (${unit})"> lock</label></td>`);
+        title="offset of ${name}, ${unit}" aria-label="Offset of ${name} (${unit})"><span class="unit">${unit}</span></td>`);
     }
-    return `<tr><th>${a}</th><td><input type="checkbox" data-lock-axis="${a}" ${state.lockedAxes.includes(a) ? 'checked' : ''} title="lock every coefficient of ${a}" aria-label="Lock every coefficient of ${a}"></td>${cells.join('')}</tr>`;
+    return `<tr><th>${a}</th>${cells.join('')}</tr>`;
   }).join('');
 }
-
-const toggled = (list, item, on) => (on ? [...new Set([...list, item])] : list.filter((x) => x !== item));
 
 export function mountWhatIf(store, calculator, measuredView) {
   // Drawn again only when what it shows changed, so that a tick keeps the keyboard's place.
@@ -38,7 +34,7 @@ export function mountWhatIf(store, calculator, measuredView) {
   const render = (force) => {
     const s = store.state;
     if (!s.result) return;
-    const key = JSON.stringify([s.result.axes.X.length, motionUnit(s.result), s.locked, s.lockedAxes, s.offsets]);
+    const key = JSON.stringify([s.result.axes.X.length, motionUnit(s.result), s.offsets]);
     if (force || key !== drawn) { renderTable(s.result, s); drawn = key; }
   };
   store.on('result', () => render(false));
@@ -51,12 +47,7 @@ export function mountWhatIf(store, calculator, measuredView) {
       const [a, k] = t.dataset.offset.split(' ');
       (s.offsets[a] = s.offsets[a] || [])[Number(k)] = t.value === '' ? 0 : Number(t.value);
       store.emit('commit');
-    } else if (t.dataset.lock) {
-      store.setInputs({ locked: toggled(s.locked, t.dataset.lock, t.checked) }, { source: 'locks' });
-    } else if (t.dataset.lockAxis) {
-      store.setInputs({ lockedAxes: toggled(s.lockedAxes, t.dataset.lockAxis, t.checked) }, { source: 'locks' });
     }
-    if (t.dataset.lock || t.dataset.lockAxis) store.emit('commit');
   });
   $('#reset-error').addEventListener('click', () => { store.state.offsets = {}; render(true); store.emit('commit'); });
   $('#generate-error').addEventListener('click', async () => {

@@ -6,6 +6,7 @@ import { download } from '../io/files.js';
 import { dresserCsv, profileCsv } from '../io/results-csv.js';
 import { offsetRange, wheelOffsetCurves } from '../wheel-offsets.js';
 import { pinnedProfile } from './pin.js';
+import { PLOT_CONFIG } from '../plots/config.js';
 
 const OFFSET_COLOURS = ['#1b7837', '#b35806', '#542788'];
 
@@ -53,11 +54,11 @@ function drawWheel(Plotly, r, state) {
     layout.xaxis2 = { title: { text: 'offset along the profile normal, µm (+ = more wheel), exaggerated' }, overlaying: 'x',
       side: 'top', range: offsetRange(curves), zeroline: true, showgrid: false };
   }
-  return Plotly.react('plot-wheel', traces, layout, { responsive: true, displaylogo: false });
+  return Plotly.react('plot-wheel', traces, layout, PLOT_CONFIG);
 }
 
 export function mountWheel(store, plots) {
-  plots.add(({ Plotly, result, state }) => drawWheel(Plotly, result, state));
+  plots.add(({ Plotly, result, state }) => drawWheel(Plotly, result, state), { el: ['#plot-wheel'] });
   const dresserButton = document.querySelector('#download-dresser');
   store.on('result', (_, state) => { dresserButton.disabled = !(state.result.correction && state.result.correction.dresserPath); });
   document.querySelector('#download-profile').addEventListener('click', () => {

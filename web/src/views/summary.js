@@ -1,0 +1,42 @@
+// The summary at the top of the results (issue 23): what to do first, then the answer: the verdict
+// and what the pass will leave (views/measured.js writes them), the rake face's class with its
+// conformity (views/inspection.js), the face's rms before and after, the axes to run with their
+// Copy and NC program buttons (views/machine-axes.js) and "Use as next run". This view writes the
+// line on what to do and the rms; the others write their own elements, which stand here.
+import { fixed } from '../format.js';
+import { fieldUnit } from '../result-fields.js';
+
+const $ = (selector) => document.querySelector(selector);
+
+// What to do next, by where the job is: no measured face yet, or a correction to run.
+export function firstStepText(result) {
+  if (!result || !result.correction) {
+    return 'First type the hob\'s data at the left (or load a case); then load the measured face in step 2 below, ' +
+      'and the verdict, the class and the axes to run show here.';
+  }
+  return result.correction.stop === true
+    ? 'The face is within the probe noise: there is no pass to run.'
+    : 'Run the axes below, measure the face and load it in step 2; "Use as next run" keeps this pass in the history first.';
+}
+
+// The face's rms before (measured, or simulated for the axes run) and after the pass (predicted),
+// with the module's units: "Face rms: 3.214 µm measured → 0.004 µm predicted after the pass."
+export function rmsText(result, unitOf = fieldUnit) {
+  if (!result) return '';
+  const c = result.correction;
+  if (c) {
+    const [before, after] = [unitOf('correction.rmsBefore'), unitOf('correction.rmsAfter')];
+    if (!before || !after) return '';
+    return `Face rms: ${fixed(c.rmsBefore, 3)} ${before} measured → ${fixed(c.rmsAfter, 3)} ${after} predicted after the pass.`;
+  }
+  const unit = unitOf('topography.rms');
+  return unit ? `Face rms: ${fixed(result.topography.rms, 3)} ${unit} simulated for the axes run; no measured face yet.` : '';
+}
+
+export function mountSummary(store) {
+  store.on('result', ({ result }) => {
+    $('#first-step').textContent = firstStepText(result);
+    $('#summary-rms').textContent = rmsText(result);
+    $('#summary-class').hidden = !result.inspection;
+  });
+}
