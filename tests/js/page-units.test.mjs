@@ -171,3 +171,27 @@ test('a meaning the page shows (a tooltip) names no result path: each is said by
   for (const f of fields) assert.doesNotMatch(fieldMeaning(f.path), PATH, f.path);
   assert.match(fieldMeaning('correction.residual'), /re-simulated with the correction's axes and the identified error/);
 });
+
+// The maps, the surfaces, their colour bar, the wheel plot and the gallery: no grid unit typed in
+// their code (comments aside), and, drawn with a schema of tokens, the tokens in their titles.
+test('the plots of a grid and of the wheel take their units from the schema', async () => {
+  const plotFiles = ['web/src/plots/maps.js', 'web/src/plots/surface.js', 'web/src/plots/colours.js',
+    'web/src/plots/gallery.js', 'web/src/views/wheel.js'];
+  for (const file of plotFiles) {
+    const code = readFileSync(path.join(root, file), 'utf8').split('\n').map((l) => l.replace(/\/\/.*$/, '')).join('\n');
+    assert.doesNotMatch(code, /['`"(,\s](µm|mm)\b/, `${file} types a unit`);
+  }
+  const { setResultFields } = await import('../../web/src/result-fields.js');
+  const { gridAxisTitles, gridHover } = await import('../../web/src/plots/grid-units.js');
+  const { deviationColourBar } = await import('../../web/src/plots/colours.js');
+  setResultFields(fields.map((f) => ({ ...f, unit: f.unit && `U[${f.path}]` })));
+  try {
+    assert.deepEqual(gridAxisTitles(), {
+      x: 'x along the gash (U[topography.x])', y: 'r root to tip (U[topography.r])', z: 'deviation (U[topography.normal])',
+    });
+    assert.match(gridHover(), /^r = %\{y:\.2f\} U\[topography\.r\]<br>x = %\{x:\.2f\} U\[topography\.x\]<br>deviation %\{z:\.3f\} U\[topography\.normal\]/);
+    assert.match(deviationColourBar().title.text, /^U\[topography\.normal\]<br>/);
+  } finally {
+    setResultFields(fields);
+  }
+});

@@ -1,5 +1,6 @@
 // The deviation colour scale, the same in every plot: red is a deficit of material, grey none,
 // blue an excess (Plotly's RdBu, reversed), symmetric about zero.
+import { gridUnits } from './grid-units.js';
 export const DEVIATION_SCALE = [
   [0, 'rgb(178,10,28)'], [0.3, 'rgb(230,145,90)'], [0.4, 'rgb(220,170,132)'],
   [0.5, 'rgb(190,190,190)'], [0.65, 'rgb(106,137,247)'], [1, 'rgb(5,10,172)'],
@@ -13,10 +14,10 @@ export function colourRange(...grids) {
   return Math.max(m, 0.1);
 }
 
-// The colour bar beside a deviation plot says what the colours mean.
+// The colour bar beside a deviation plot says what the colours mean, in the grids' unit.
 export function deviationColourBar() {
   return {
-    title: { text: 'µm<br><span style="color:rgb(5,10,172)">blue: excess<br>material</span><br>' +
+    title: { text: `${gridUnits().z}<br><span style="color:rgb(5,10,172)">blue: excess<br>material</span><br>` +
                    '<span style="color:rgb(178,10,28)">red: deficit</span>', side: 'top' },
     thickness: 14, len: 0.9, outlinewidth: 0,
   };

@@ -1,11 +1,11 @@
-// A deviation topography as a map (Plotly heatmap), in µm, with the colour bar that says which
+// A deviation topography as a map (Plotly heatmap), in the module's units (grid-units.js), with the colour bar that says which
 // colour is excess material; and, for a measurement at the measuring machine's own points
 // (docs/measured-points.md), those points marked on it (a scatter trace on the same axes).
 import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
-import { AXIS_TITLES } from './surface.js';
+import { gridAxisTitles, gridHover } from './grid-units.js';
 import { PLOT_CONFIG } from './config.js';
 
-// The probe points as a scatter trace: list holds [r (mm), x (mm), deviation (µm)] per point, the
+// The probe points as a scatter trace: list holds [r, x, deviation] per point (grid-units.js), the
 // deviation named by `what` when the pointer is on a point.
 export function probePointsTrace(list, what) {
   return {
@@ -14,7 +14,7 @@ export function probePointsTrace(list, what) {
     // A few points as rings; many (a scanning probe's thousands) as small dots the map shows through.
     marker: list.length > 300 ? { symbol: 'circle', size: 3, color: 'rgba(0,0,0,0.6)' }
       : { symbol: 'circle-open', size: 7, color: '#111', line: { width: 1.5 } },
-    hovertemplate: `probe point<br>r = %{y:.2f} mm<br>x = %{x:.2f} mm<br>${what} %{customdata:.3f} µm<extra></extra>`,
+    hovertemplate: gridHover(undefined, { what, value: '%{customdata:.3f}', lead: 'probe point<br>' }),
   };
 }
 
@@ -24,13 +24,13 @@ export function drawMap(Plotly, el, { x, y, z, range, title, points = null }) {
   const traces = [{
     type: 'heatmap', x, y, z, showlegend: false,
     colorscale: DEVIATION_SCALE, zmin: -range, zmax: range, colorbar: deviationColourBar(),
-    hovertemplate: 'r = %{y:.2f} mm<br>x = %{x:.2f} mm<br>deviation %{z:.3f} µm<extra></extra>',
+    hovertemplate: gridHover(),
   }];
   if (points) traces.push(probePointsTrace(points.list, points.what));
   return Plotly.react(el, traces, {
     title: { text: `${title} (map)`, font: { size: 14 } }, height: points ? 330 : 300,
     margin: { t: 40, r: 10, b: points ? 80 : 50, l: 60 },
-    xaxis: { title: { text: AXIS_TITLES.x } }, yaxis: { title: { text: AXIS_TITLES.y } },
+    xaxis: { title: { text: gridAxisTitles().x } }, yaxis: { title: { text: gridAxisTitles().y } },
     showlegend: Boolean(points), legend: { orientation: 'h', x: 0, xanchor: 'left', y: -0.32, yanchor: 'top' },
   }, PLOT_CONFIG);
 }

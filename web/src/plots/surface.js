@@ -2,8 +2,7 @@
 // wheel zooms, and the pointer shows the grid point's r, x and deviation with their units.
 import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
 import { PLOT_CONFIG } from './config.js';
-
-export const AXIS_TITLES = { x: 'x along the gash (mm)', y: 'r root to tip (mm)', z: 'deviation (µm)' };
+import { gridAxisTitles, gridHover } from './grid-units.js';
 
 // The box is 1.4 : 1 : 0.6, seen from far enough that the axis titles stay inside the plot.
 const SCENE = {
@@ -21,17 +20,18 @@ const axis = (title, extra = {}) => ({
 // The surface trace is registered on first use (see plotly-bundle.js).
 export function drawSurface(Plotly, el, { x, y, z, range, title }) {
   self.plotlySurface();
+  const titles = gridAxisTitles();
   return Plotly.react(el, [{
     type: 'surface', x, y, z, cmin: -range, cmax: range, colorscale: DEVIATION_SCALE,
     colorbar: deviationColourBar(),
-    hovertemplate: 'r = %{y:.2f} mm<br>x = %{x:.2f} mm<br>deviation %{z:.3f} µm<extra></extra>',
+    hovertemplate: gridHover(),
   }], {
     // The title on the left, clear of the mode bar.
     title: { text: `${title} (3D)`, font: { size: 14 }, x: 0.02, xanchor: 'left' }, height: 400, margin: { t: 36, r: 10, b: 0, l: 0 },
     scene: {
       ...SCENE,
-      xaxis: axis(AXIS_TITLES.x), yaxis: axis(AXIS_TITLES.y),
-      zaxis: axis(AXIS_TITLES.z, { range: [-range, range] }),
+      xaxis: axis(titles.x), yaxis: axis(titles.y),
+      zaxis: axis(titles.z, { range: [-range, range] }),
     },
   }, PLOT_CONFIG);
 }

@@ -5,6 +5,7 @@ import { escapeHtml, fixed, fmt, motionUnit } from '../format.js';
 import { colourRange } from '../plots/colours.js';
 import { drawGallery } from '../plots/gallery.js';
 import { PLOT_CONFIG } from '../plots/config.js';
+import { gridUnits } from '../plots/grid-units.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -19,7 +20,7 @@ function drawSensitivities({ Plotly, result: r }) {
     const step = (isRotary(axis) ? 0.01 : 0.1) / Math.pow(range, k);
     const z = s.normal[j].map((row) => row.map((v) => v * step));
     const m = colourRange(z);
-    return { z, range: m, title: [`${name} + ${fmt(step, 3)} ${coefficientUnit(axis, k, per)}`, `±${fixed(m, 2)} µm`] };
+    return { z, range: m, title: [`${name} + ${fmt(step, 3)} ${coefficientUnit(axis, k, per)}`, `±${fixed(m, 2)} ${gridUnits().z}`] };
   });
   return drawGallery(Plotly, $('#gallery'), $('#gallery-titles'), r.topography.x, r.topography.r, items);
 }

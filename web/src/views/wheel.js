@@ -7,11 +7,17 @@ import { dresserCsv, profileCsv } from '../io/results-csv.js';
 import { offsetRange, wheelOffsetCurves } from '../wheel-offsets.js';
 import { pinnedProfile } from './pin.js';
 import { PLOT_CONFIG } from '../plots/config.js';
+import { fieldUnit } from '../result-fields.js';
 
 const OFFSET_COLOURS = ['#1b7837', '#b35806', '#542788'];
 
+// The profile's and the offsets' units as the module states them (result-fields.js).
+const units = () => ({ R: fieldUnit('wheelProfile.R') || '', Z: fieldUnit('wheelProfile.Z') || '', r: fieldUnit('wheelProfile.r') || '',
+  offset: fieldUnit('wheelProfile.offset') || '' });
+
 function drawWheel(Plotly, r, state) {
   const p = r.wheelProfile;
+  const u = units();
   const pinned = pinnedProfile(state);
   const note = document.querySelector('#wheel-pin');
   note.hidden = !pinned;
@@ -20,25 +26,25 @@ function drawWheel(Plotly, r, state) {
   const curves = wheelOffsetCurves(r);
   const traces = [...(pinned ? [pinned.trace] : []), {
     x: p.Z, y: p.R, mode: 'lines+markers', marker: { size: 4 }, name: p.dressedR ? 'conjugate profile (Eqs. 3-6)' : 'axial profile',
-    text: p.r.map((v) => `tooth-face radius r = ${fixed(v, 3)} mm`),
-    hovertemplate: 'Z = %{x:.4f} mm<br>R = %{y:.4f} mm<br>%{text}<extra></extra>',
+    text: p.r.map((v) => `tooth-face radius r = ${fixed(v, 3)} ${u.r}`),
+    hovertemplate: `Z = %{x:.4f} ${u.Z}<br>R = %{y:.4f} ${u.R}<br>%{text}<extra></extra>`,
   }];
   if (dresser) {
     traces.push({ x: dresser.Z, y: dresser.R, mode: 'lines', name: 'dresser path (corrected)', line: { dash: 'dash', color: '#542788' },
-      hovertemplate: 'dresser path<br>Z = %{x:.5f} mm<br>R = %{y:.4f} mm<extra></extra>' });
+      hovertemplate: `dresser path<br>Z = %{x:.5f} ${u.Z}<br>R = %{y:.4f} ${u.R}<extra></extra>` });
   }
   curves.forEach((c, i) => {
     const color = OFFSET_COLOURS[i % OFFSET_COLOURS.length];
     traces.push({
-      x: c.offset, y: c.R, xaxis: 'x2', mode: c.R.length > 12 ? 'lines' : 'lines+markers', name: `${c.name} (µm, top scale)`,
+      x: c.offset, y: c.R, xaxis: 'x2', mode: c.R.length > 12 ? 'lines' : 'lines+markers', name: `${c.name} (${u.offset}, top scale)`,
       line: { color, width: 2 }, legendgroup: c.name,
-      hovertemplate: `${c.name}<br>R = %{y:.3f} mm<br>offset %{x:.3f} µm<extra></extra>`,
+      hovertemplate: `${c.name}<br>R = %{y:.3f} ${u.R}<br>offset %{x:.3f} ${u.offset}<extra></extra>`,
     });
     if (c.knots) {
       traces.push({
         x: c.knots.offset, y: c.knots.R, xaxis: 'x2', mode: 'markers', name: `${c.name}: spline points`, showlegend: false,
         legendgroup: c.name, marker: { color, size: 8, symbol: 'diamond' },
-        hovertemplate: `${c.name}, spline point<br>R = %{y:.3f} mm<br>offset %{x:.3f} µm<extra></extra>`,
+        hovertemplate: `${c.name}, spline point<br>R = %{y:.3f} ${u.R}<br>offset %{x:.3f} ${u.offset}<extra></extra>`,
       });
     }
   });
@@ -46,12 +52,12 @@ function drawWheel(Plotly, r, state) {
     // With the offsets' scale at the top, its title takes the title's place (the section's heading names the plot).
     title: { text: curves.length ? '' : 'Wheel axial profile (R against Z)' }, height: curves.length ? 400 : 360,
     margin: { t: curves.length ? 60 : 40, r: 20, b: 50, l: 60 },
-    xaxis: { title: { text: 'Z, along the wheel axis (mm)' } },
-    yaxis: { title: { text: 'R, wheel radius (mm)' }, scaleanchor: 'x', scaleratio: 1 },
+    xaxis: { title: { text: `Z, along the wheel axis (${u.Z})` } },
+    yaxis: { title: { text: `R, wheel radius (${u.R})` }, scaleanchor: 'x', scaleratio: 1 },
     legend: { orientation: 'h', y: -0.2 },
   };
   if (curves.length) {
-    layout.xaxis2 = { title: { text: 'offset along the profile normal, µm (+ = more wheel), exaggerated' }, overlaying: 'x',
+    layout.xaxis2 = { title: { text: `offset along the profile normal, ${u.offset} (+ = more wheel), exaggerated` }, overlaying: 'x',
       side: 'top', range: offsetRange(curves), zeroline: true, showgrid: false };
   }
   return Plotly.react('plot-wheel', traces, layout, PLOT_CONFIG);
