@@ -1,7 +1,8 @@
 // The five axis motions over the motion range. With a correction, what it changes: corrected
-// minus nominal, X, Y, Z in µm and A, B in arc-seconds (µm-level changes vanish in a plot of the
-// motions themselves); without one, the nominal motions in mm and rad.
-import { AXES, isRotary } from '../limits.js';
+// minus nominal, X, Y, Z in µm and A, B in arc-seconds (the page's display units for a change:
+// µm-level changes vanish in a plot of the motions themselves); without one, the nominal motions
+// in the axes' own units as the module states them (limits().axes: mm and rad).
+import { AXES, AXIS_UNIT, isRotary } from '../limits.js';
 import { motionSymbol, motionUnit } from '../format.js';
 import { polynomialAt } from '../../../wasm/lib/polynomial.js';
 import { PLOT_CONFIG } from './config.js';
@@ -14,7 +15,7 @@ export function drawAxisMotion(Plotly, el, r) {
   const corrected = r.correction && r.correction.axes;
   const traces = AXES.map((a) => {
     const scale = corrected ? (isRotary(a) ? ARCSEC_PER_RAD : 1000) : 1;
-    const unit = corrected ? (isRotary(a) ? '″' : 'µm') : (isRotary(a) ? 'rad' : 'mm');
+    const unit = corrected ? (isRotary(a) ? '″' : 'µm') : AXIS_UNIT[a];
     const y = t.map((v) => scale * (corrected ? polynomialAt(corrected[a], v) - polynomialAt(r.axes[a], v) : polynomialAt(r.axes[a], v)));
     return {
       x: t, y, name: corrected ? `Δ${a}` : a, mode: 'lines', yaxis: isRotary(a) ? 'y2' : 'y',
@@ -29,8 +30,8 @@ export function drawAxisMotion(Plotly, el, r) {
     title: { text: title, font: { size: 14 }, y: 0.97 }, height: 340, margin: { t: 64, r: 70, b: 50, l: 70 },
     hovermode: 'x unified',
     xaxis: { title: { text: `motion parameter ${motionSymbol(r)} (${motionUnit(r)})` } },
-    yaxis: { title: { text: corrected ? 'ΔX, ΔY, ΔZ (µm)' : 'X, Y, Z (mm)' } },
-    yaxis2: { title: { text: corrected ? 'ΔA, ΔB (arc-seconds)' : 'A, B (rad)' }, overlaying: 'y', side: 'right', showgrid: false },
+    yaxis: { title: { text: corrected ? 'ΔX, ΔY, ΔZ (µm)' : `X, Y, Z (${AXIS_UNIT.X})` } },
+    yaxis2: { title: { text: corrected ? 'ΔA, ΔB (arc-seconds)' : `A, B (${AXIS_UNIT.A})` }, overlaying: 'y', side: 'right', showgrid: false },
     // Above the plot, under its title: clear of the axis titles and of the curves.
     legend: { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' },
   }, PLOT_CONFIG);
