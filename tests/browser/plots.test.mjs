@@ -35,6 +35,9 @@ test('the plot bundle registers the heatmap, bar and scatter traces, the surface
     .map((id) => [id, [...new Set(document.getElementById(id)._fullData.map((t) => t.type))]])));
   assert.deepEqual(types, { 'plot-axes': ['scatter'], 'plot-wheel': ['scatter'], 'plot-before-2d': ['heatmap'], gallery: ['heatmap'] });
   assert.equal(await page.evaluate(() => document.getElementById('gallery')._fullData.length), 25);
+  // Without a correction the axis plot shows the nominal motions in the axes' own units (limits().axes).
+  assert.deepEqual(await page.evaluate(() => { const l = document.getElementById('plot-axes').layout; return [l.yaxis.title.text, l.yaxis2.title.text]; }),
+    ['X, Y, Z (mm)', 'A, B (rad)']);
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
