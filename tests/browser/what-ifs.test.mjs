@@ -29,7 +29,7 @@ test('a pinned result: the views show the difference to it, until unpinned', asy
   assert.doesNotMatch(dY, /: 0$/);
   assert.match(await page.textContent('#tab2 td[data-set="nominal"][data-axis="X"] .pin-diff'), /^difference to pinned: 0$/, 'X does not depend on the tilt');
   assert.match(await page.textContent('#figures-before'), /difference to pinned: sum of squares (±0|[+−]\d)/);
-  assert.match(await page.textContent('#wheel-pin'), /difference to pinned .*largest \|ΔR\| [1-9]/);
+  assert.match(await page.textContent('#wheel-pin'), /difference to pinned .*largest \|ΔR\| [1-9][\d.]* µm \(r = \d+\.\d\d mm\)/);
   // The map shows the difference: titled so.
   assert.match(await page.textContent('#plot-before-2d'), /difference to pinned/);
   await page.locator('#topography-section').screenshot({ path: path.join(shots, 'pinned-topography.png') });

@@ -6,6 +6,7 @@ import { escapeHtml, fixed, motionSymbol, polynomialText } from '../format.js';
 import { figureTexts } from '../figures.js';
 import { axesDifference, changedInputs, gridDifference, profileDifference } from '../pin-diff.js';
 import { fieldNames } from './field-names.js';
+import { fieldUnit } from '../result-fields.js';
 
 const $ = (selector) => document.querySelector(selector);
 export const PINNED = 'difference to pinned';
@@ -61,8 +62,9 @@ export function pinnedProfile(state) {
   if (!p) return null;
   const q = p.result.wheelProfile;
   const d = profileDifference(state.result.wheelProfile, q);
+  const r = fieldUnit('wheelProfile.r') || '';  // the tooth-face radius as the module states it; ΔR, ΔZ the page's µm of a change
   const text = d ? `Wheel profile, ${PINNED} at the same tooth-face radius: largest |ΔR| ${fixed(Math.abs(d.maxR.value), 3)} µm ` +
-    `(r = ${fixed(d.maxR.r, 2)} mm), largest |ΔZ| ${fixed(Math.abs(d.maxZ.value), 3)} µm (r = ${fixed(d.maxZ.r, 2)} mm).`
+    `(r = ${fixed(d.maxR.r, 2)} ${r}), largest |ΔZ| ${fixed(Math.abs(d.maxZ.value), 3)} µm (r = ${fixed(d.maxZ.r, 2)} ${r}).`
     : `Wheel profile, ${PINNED}: not comparable (the radii do not overlap).`;
   return { text, trace: { x: q.Z, y: q.R, mode: 'lines', name: 'pinned', line: { dash: 'dot', color: '#8a4b00' } } };
 }
