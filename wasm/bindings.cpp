@@ -134,19 +134,27 @@ val evaluateJsonText(const std::string& caseText) {
   return guarded(caseText, [](const Evaluation& e) { return val(resultJson(e, 1)); });
 }
 
-val resultFieldList() {
+// A description list as a JS array of objects, each given its members by `members(object, d)`.
+template <class Description, class Members>
+val descriptionList(const std::vector<Description>& list, Members members) {
   val a = val::array();
-  for (const FieldDescription& d : resultFields()) {
+  for (const Description& d : list) {
     val o = val::object();
+    members(o, d);
+    a.call<void>("push", o);
+  }
+  return a;
+}
+
+val resultFieldList() {
+  return descriptionList(resultFields(), [](val& o, const FieldDescription& d) {
     o.set("path", d.path);
     o.set("kind", d.kind);
     o.set("unit", d.unit);
     o.set("meaning", d.meaning);
     o.set("when", d.when);
     o.set("label", d.label);
-    a.call<void>("push", o);
-  }
-  return a;
+  });
 }
 
 // The limits as JS data: each entry set at its path (limits_model.h), a range as {default, min,
@@ -178,16 +186,12 @@ class JsLimits final : public LimitsVisitor {
 
 // The limits' entries as core/io/limits_model.h describes them: [{path, kind, unit, words}].
 val limitFieldList() {
-  val a = val::array();
-  for (const LimitDescription& d : limitFields()) {
-    val o = val::object();
+  return descriptionList(limitFields(), [](val& o, const LimitDescription& d) {
     o.set("path", d.path);
     o.set("kind", d.kind);
     o.set("unit", d.unit);
     o.set("words", d.words);
-    a.call<void>("push", o);
-  }
-  return a;
+  });
 }
 
 // What the page needs to know before it has a result: the case file's limits and defaults.

@@ -6,18 +6,9 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { createStore } from '../../web/src/store.js';
 import { startRecompute } from '../../web/src/recompute.js';
+import { settle, standIn } from './stand-in-calculator.mjs';
 import { giveText, inUseText, mountMeasurement, typed, useFile, useMeasurement } from '../../web/src/measurement.js';
 
-function standIn() {
-  const calls = [];
-  return {
-    calls,
-    evaluate(caseObject) {
-      return new Promise((resolve, reject) => calls.push({ caseObject, resolve, reject }));
-    },
-  };
-}
-const settle = () => new Promise((resolve) => setImmediate(resolve));
 const topography = { r: [10, 20], x: [-5, 0, 5] };  // 2 radial lines of 3 values
 const gridA = '1, 2, 3\n4, 5, 6\n';
 const gridB = '7, 8, 9\n10, 11, 12\n';

@@ -5,17 +5,8 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { caseOf, createStore } from '../../web/src/store.js';
 import { startRecompute } from '../../web/src/recompute.js';
+import { settle, standIn } from './stand-in-calculator.mjs';
 
-function standIn() {
-  const calls = [];
-  return {
-    calls,
-    evaluate(caseObject) {
-      return new Promise((resolve, reject) => calls.push({ caseObject, resolve, reject }));
-    },
-  };
-}
-const settle = () => new Promise((resolve) => setImmediate(resolve));
 const form = (tilt) => ({ format: 'hobsharp-case/1', setup: { tilt } });
 
 function watch(store) {
