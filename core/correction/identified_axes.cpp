@@ -32,15 +32,35 @@ const char* unitOf(Axis a) { return isRotary(a) ? "µrad" : "µm"; }
 // Per axis, the columns of its free coefficients.
 using Blocks = std::array<std::vector<int>, kAxisCount>;
 
-// The curves' values at w as functionals of the coefficients in machine steps (q x 5): column a
-// gives axis a's error at w in µm or µrad.
-Eigen::MatrixXd curvesAt(const std::vector<Coefficient>& cs, const Eigen::VectorXd& step, double w) {
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(static_cast<int>(cs.size()), kAxisCount);
+// The motion range sampled where the axes' curves are judged: w^d at each of kSamples points
+// (rows) for d = 0 .. the highest degree (columns), and each power's mean over the samples.
+struct MotionSamples {
+  Eigen::MatrixXd power;     // kSamples x (degree + 1)
+  Eigen::RowVectorXd mean;   // the columns' means
+};
+MotionSamples motionSamples(const std::vector<Coefficient>& cs, double min, double max) {
+  int degree = 0;
+  for (const Coefficient& c : cs) degree = std::max(degree, c.degree);
+  MotionSamples m;
+  m.power.resize(kSamples, degree + 1);
+  for (int i = 0; i < kSamples; ++i) {
+    const double w = min + (max - min) * i / (kSamples - 1);
+    m.power(i, 0) = 1;
+    for (int d = 1; d <= degree; ++d) m.power(i, d) = m.power(i, d - 1) * w;
+  }
+  m.mean = m.power.colwise().mean();
+  return m;
+}
+
+// The curves' values at sample i as functionals of the coefficients in machine steps (q x 5):
+// column a gives axis a's error there in µm or µrad. G is q x 5, set to zero elsewhere.
+void curvesAt(const std::vector<Coefficient>& cs, const Eigen::VectorXd& step, const MotionSamples& m, int i,
+              Eigen::MatrixXd& G) {
+  G.setZero();
   for (size_t j = 0; j < cs.size(); ++j) {
     const int J = static_cast<int>(j);
-    G(J, static_cast<int>(cs[j].axis)) = std::pow(w, cs[j].degree) * step(J) * displayFactor(cs[j].axis);
+    G(J, static_cast<int>(cs[j].axis)) = m.power(i, cs[j].degree) * step(J) * displayFactor(cs[j].axis);
   }
-  return G;
 }
 
 // A least-squares fit over some columns, in machine steps: its solution and covariance per unit
@@ -83,17 +103,13 @@ struct CurveFigures {
   double value = 0, perNoise = 0;
 };
 CurveFigures curveOf(const Fit& f, Axis a, const std::vector<Coefficient>& cs, const Eigen::VectorXd& step,
-                     double min, double max) {
+                     const MotionSamples& m) {
   CurveFigures c;
   const int n = static_cast<int>(f.columns.size());
   Eigen::VectorXd g = Eigen::VectorXd::Zero(n);
-  for (int i = 0; i < kSamples; ++i) {
-    const double w = min + (max - min) * i / (kSamples - 1);
-    for (int k = 0; k < n; ++k) {
-      const int j = f.columns[static_cast<size_t>(k)];
-      if (cs[static_cast<size_t>(j)].axis == a)
-        g(k) += std::pow(w, cs[static_cast<size_t>(j)].degree) * step(j) * displayFactor(a) / kSamples;
-    }
+  for (int k = 0; k < n; ++k) {
+    const int j = f.columns[static_cast<size_t>(k)];
+    if (cs[static_cast<size_t>(j)].axis == a) g(k) = m.mean(cs[static_cast<size_t>(j)].degree) * step(j) * displayFactor(a);
   }
   c.value = g.dot(f.x);
   c.perNoise = std::sqrt(std::max(0.0, g.dot(f.cov * g)));
@@ -231,12 +247,13 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
   std::array<bool, kAxisCount> leaks{};
   std::array<double, kAxisCount> spread{}, correlation{};
   Eigen::MatrixXd pair = Eigen::MatrixXd::Zero(kAxisCount, kAxisCount);
+  const MotionSamples samples = motionSamples(cs, min, max);
+  Eigen::MatrixXd G(q, kAxisCount), T(W.cols(), kAxisCount), C(kAxisCount, kAxisCount), L(N.cols(), kAxisCount);
   for (int sample = 0; sample < kSamples; ++sample) {
-    const double w = min + (max - min) * sample / (kSamples - 1);
-    const Eigen::MatrixXd G = curvesAt(cs, step, w);
-    const Eigen::MatrixXd T = W.transpose() * G;
-    const Eigen::MatrixXd C = T.transpose() * T;  // the curves' covariance at w, per unit noise variance
-    const Eigen::MatrixXd L = N.transpose() * G;
+    curvesAt(cs, step, samples, sample, G);
+    T.noalias() = W.transpose() * G;
+    C.noalias() = T.transpose() * T;  // the curves' covariance at the sample, per unit noise variance
+    L.noalias() = N.transpose() * G;
     for (int i = 0; i < kAxisCount; ++i) {
       if (!seen[static_cast<size_t>(i)]) continue;
       const double g = G.col(i).norm();
@@ -332,7 +349,7 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
   for (Axis a : kAxes) {
     AxisIdentification& x = out.axes[static_cast<int>(a)];
     if (x.reading != AxisReading::Alone) continue;
-    const CurveFigures c = curveOf(joint, a, cs, step, min, max);
+    const CurveFigures c = curveOf(joint, a, cs, step, samples);
     x.value = c.value;
     x.perNoise = c.perNoise;
   }
@@ -346,7 +363,7 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
     std::vector<int> others;
     for (int m : groups[gi])
       if (m != r) combination.axes.push_back(kAxes[static_cast<size_t>(m)]), others.push_back(m);
-    const CurveFigures c = curveOf(joint, ra, cs, step, min, max);
+    const CurveFigures c = curveOf(joint, ra, cs, step, samples);
     combination.value = c.value;
     combination.perNoise = c.perNoise;
     // Each member alone: the fit with the axes read alone, the other groups as they are read and
@@ -359,7 +376,7 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
         if (h != gi) members.insert(members.end(), block[representative[h]].begin(), block[representative[h]].end());
       members.insert(members.end(), block[m].begin(), block[m].end());
       const Fit f = fitColumns(A, y, members, s0);
-      const CurveFigures mc = curveOf(f, member, cs, step, min, max);
+      const CurveFigures mc = curveOf(f, member, cs, step, samples);
       combination.aloneValue.push_back(mc.value);
       combination.alonePerNoise.push_back(mc.perNoise);
       misfit.push_back(f.misfit);
@@ -376,7 +393,7 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
       for (int m : others) otherColumns.insert(otherColumns.end(), block[m].begin(), block[m].end());
       const Fit mimic = fitColumns(A, face, otherColumns, 0, kAlikeCutoff);
       combination.alike = face.norm() > 0 ? std::max(0.0, 1 - std::sqrt(mimic.misfit) / face.norm()) : 0;
-      for (int m : others) combination.amounts.push_back(curveOf(mimic, kAxes[static_cast<size_t>(m)], cs, step, min, max).value);
+      for (int m : others) combination.amounts.push_back(curveOf(mimic, kAxes[static_cast<size_t>(m)], cs, step, samples).value);
     }
     std::vector<std::string> names, otherNames;
     for (Axis a : combination.axes) names.push_back(axisName(a));
