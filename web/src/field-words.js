@@ -26,7 +26,8 @@ const ELEMENT = {
   passes: (i) => `pass ${i}`, measuredPoints: (i) => `measured point ${i}`, measuredProfile: (i) => `wheel file, point ${i}`,
   gashDeviations: (i) => `gash ${i}'s deviation`, gashTopographies: (i) => `gash ${i}'s topography`,
 };
-const splitName = (name) => name.replace(/([a-z])([A-Z])/g, '$1 $2').toLowerCase();
+// A member's name in words: "gashDeviations" is "gash deviations" (result-fields.js says result paths so).
+export const splitName = (name) => name.replace(/([a-z])([A-Z])/g, '$1 $2').toLowerCase();
 
 // Words for a path that has no name on screen, in the words of the case's members, counted from
 // 1: "passes[0].axes.X[2]" is "Pass 1, run axis X, coefficient a2"; "inspection.gashDeviations[3]"

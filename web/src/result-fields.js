@@ -2,6 +2,8 @@
 // meaning, when, label}], docs/api.md's table of result fields): the page takes a figure's unit,
 // its label and its meaning from here, not from words of its own (tests/js/page-units.test.mjs). Filled once the worker is ready, with the limits
 // (main.js); until then, and for a path the module does not describe, there is none.
+import { splitName } from './field-words.js';
+
 const FIELDS = new Map();
 
 // fields: what Module.resultFields() returns. Refuses a shape it cannot use.
@@ -24,7 +26,6 @@ export function fieldUnit(path) {
 // A result path inside a meaning ("re-simulated with correction.axes"): a top-level member of the
 // result with a dot and more.
 const RESULT_PATH = /\b(?:nominal|correction|inspection|gearEffect|face|wheel|setup|machine|measured|passes|job|hob|grid)(?:\.[A-Za-z]\w*)+/g;
-const splitName = (name) => name.replace(/([a-z])([A-Z])/g, '$1 $2').toLowerCase();
 
 // What a field means, in the module's words ('' when it does not describe it), for the page: a
 // path it names is said in words, by that field's label or its last name ("the correction's
