@@ -52,6 +52,13 @@ export function mountPlots(store) {
     if (current()) store.emit('plots', { at: performance.now() });
   }
 
+  // The drawers that waited while their plots were on demand and are no longer: taken to be drawn.
+  function takeWaiting() {
+    const waiting = drawers.filter((d) => d.pending && !onDemand(d));
+    for (const d of waiting) d.pending = false;
+    return waiting;
+  }
+
   // A <details> opened: the plots in it that waited are drawn, those drawn while it was closed are
   // laid out again at their width (drawn hidden, Plotly took its default size).
   async function opened(details) {
@@ -59,10 +66,9 @@ export function mountPlots(store) {
     const Plotly = await loadPlotly().catch(() => null);
     if (!Plotly || !store.state.result) return;
     for (const el of details.querySelectorAll('.js-plotly-plot')) Plotly.Plots.resize(el);
-    const waiting = drawers.filter((d) => d.pending && !onDemand(d));
+    const waiting = takeWaiting();
     for (const d of waiting) {
       if (mine !== generation) return;  // a newer pass draws them
-      d.pending = false;
       await d.draw({ Plotly, result: store.state.result, state: store.state, current: () => mine === generation });
     }
     if (waiting.length && mine === generation) store.emit('plots', { at: performance.now() });
@@ -72,8 +78,7 @@ export function mountPlots(store) {
   // cartesian plot of Plotly's is drawn within the call), so that the report can size them.
   store.on('print', () => {
     if (!self.Plotly || !store.state.result) return;
-    for (const d of drawers.filter((x) => x.pending && !onDemand(x))) {
-      d.pending = false;
+    for (const d of takeWaiting()) {
       Promise.resolve(d.draw({ Plotly: self.Plotly, result: store.state.result, state: store.state, current: () => true })).catch(() => {});
     }
   });
