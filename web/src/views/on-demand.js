@@ -5,19 +5,21 @@
 // header's menu also closes on Escape.
 // (Their plots are drawn, or laid out again, when they open: plots/passes.js.)
 
+import { isWheelField } from './wheel-input.js';
+
 const $$ = (selector) => Array.from(document.querySelectorAll(selector));
 
 // The parts that hold the messages of the fields the form has no input for: the correction's own
 // options (its method, noise, resolution, locks), the inspection's (uncertainty, tolerances, gash
 // deviations) and the wheel's files.
-const HOLDERS = [[/^correction\.(method|wheel|probeNoise|resolution|locked)/, '#correction-options-details'],
-  [/^inspection\./, '#inspection-details'], [/^wheel\.(profileOffset|measuredProfile)/, '#wheel-details']];
+const HOLDERS = [[(f) => /^correction\.(method|wheel|probeNoise|resolution|locked)/.test(f), '#correction-options-details'],
+  [(f) => /^inspection\./.test(f), '#inspection-details'], [isWheelField, '#wheel-details']];
 
 // The <details> around what a refusal names: its form field's, else the part that shows its message.
 function holderOf(field) {
   const input = document.querySelector(`[data-field="${CSS.escape(field)}"]`);
   if (input) return input.closest('details');
-  const [, part] = HOLDERS.find(([pattern]) => pattern.test(field)) || [];
+  const [, part] = HOLDERS.find(([holds]) => holds(field)) || [];
   return part ? document.querySelector(part) : null;
 }
 
