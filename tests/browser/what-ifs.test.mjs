@@ -23,6 +23,13 @@ test('a pinned result: the views show the difference to it, until unpinned', asy
   assert.match(await page.textContent('#tab2 td[data-set="nominal"][data-axis="Y"] .pin-diff'), /^difference to pinned: 0$/);
   await after_(page, 'draws', () => enter(page, 'setup.tilt', '16'));
   assert.match(await page.textContent('#pin-note'), /Changed since pinning: Tilt of the wheel η 15 → 16/);
+  // An input with no field of the form's (the gash deviations) is named in words, not by its path.
+  await page.evaluate(() => { document.querySelector('#gash-deviations').closest('details').open = true; });
+  await page.locator('#gash-deviations').waitFor({ state: 'visible' });
+  await after_(page, 'draws', async () => { await page.fill('#gash-deviations', '0; 3; −2; 1,5'); await page.dispatchEvent('#gash-deviations', 'change'); });
+  assert.match(await page.textContent('#pin-note'), /Changed since pinning: Tilt of the wheel η 15 → 16; Inspection, gash deviations empty → given\./);
+  assert.doesNotMatch(await page.textContent('#pin-note'), /inspection\./);
+  await after_(page, 'draws', async () => { await page.fill('#gash-deviations', ''); await page.dispatchEvent('#gash-deviations', 'change'); });
   assert.notDeepEqual(await tab2(page, 'nominal'), shown, 'Tab. 2 shows the new result');
   const dY = await page.textContent('#tab2 td[data-set="nominal"][data-axis="Y"] .pin-diff');
   assert.match(dY, /^difference to pinned: −?\d/);

@@ -6,6 +6,7 @@ import { escapeHtml, fixed, motionSymbol, polynomialText } from '../format.js';
 import { figureTexts } from '../figures.js';
 import { axesDifference, changedInputs, gridDifference, profileDifference } from '../pin-diff.js';
 import { fieldNames } from './field-names.js';
+import { pathWords } from '../field-words.js';
 import { fieldUnit } from '../result-fields.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -73,7 +74,7 @@ function changedText(now, pinned) {
   const names = fieldNames();
   const value = (v) => (v === undefined ? 'empty' : typeof v === 'object' ? 'given' : String(v));
   const changes = changedInputs(now, pinned).map(({ path, from, to }) => {
-    const name = names[path] ? names[path].text : { measured: 'measured grid', axes: 'run axes', correction: 'locks' }[path] || path;
+    const name = names[path] ? names[path].text : { measured: 'measured grid', axes: 'run axes', correction: 'locks' }[path] || pathWords(path);
     return /^(measured|axes|correction)$/.test(path) ? `${name} changed` : `${name} ${value(from)} → ${value(to)}`;
   });
   return changes.length ? `Changed since pinning: ${changes.join('; ')}.` : 'No input changed since pinning.';
