@@ -2,13 +2,12 @@
 // waits (older ones are dropped), and a result is shown only if no newer input is waiting. A
 // calculation cancelled (views/cancel.js) shows nothing new: the 'cancelled' event says so.
 import { caseOf } from './store.js';
-import { OPTION_FIELD } from './correction-options.js';
+import { isMeasuredField } from './measurement.js';
 
 // The calculator refused the measured grid or its locks: an input error (code InvalidInput)
 // that names them. A fault (Internal) or a timeout says nothing about the grid, and neither does
 // a refused option of the correction (its view shows it at its input; the grid stays in use).
-const refusesMeasured = (error) => error.code === 'InvalidInput' && /^(measured|correction)/.test(error.field || '') &&
-  !OPTION_FIELD.test(error.field);
+const refusesMeasured = (error) => error.code === 'InvalidInput' && isMeasuredField(error.field);
 
 export function startRecompute(store, calculator) {
   let running = false;
