@@ -1,6 +1,6 @@
 // The effect on the gear as figures (docs/gear-effect.md), as the page's table
 // (views/gear-effect.js), the results CSV and the printed report give them.
-import { fieldLabel, fieldUnit } from './result-fields.js';
+import { fieldLabel, unitText } from './result-fields.js';
 
 // The two flanks, as the result names them and in words.
 export const FLANKS = [['left', 'left flank (faces −x₁)'], ['right', 'right flank (faces +x₁)']];
@@ -14,5 +14,5 @@ const FIGURES = ['profileSlope', 'pressureAngleError', 'profileForm', 'slopeScat
 // The figures' rows: [label, unit, left flank, right flank], from the result's gearEffect; the
 // labels and units are the module's (result-fields.js), the same for both flanks.
 export function gearEffectRows(g) {
-  return FIGURES.map((q) => [fieldLabel(`gearEffect.left.${q}`), fieldUnit(`gearEffect.left.${q}`) || '', g.left[q], g.right[q]]);
+  return FIGURES.map((q) => [fieldLabel(`gearEffect.left.${q}`), unitText(`gearEffect.left.${q}`), g.left[q], g.right[q]]);
 }

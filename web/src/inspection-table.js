@@ -5,7 +5,7 @@
 // predicted after the correction. Units are the result fields' own (unitOf: a field's path to its
 // unit, result-fields.js); nothing here types one.
 import { fixed, fmt, signed, withUnit } from './format.js';
-import { fieldUnit } from './result-fields.js';
+import { unitText } from './result-fields.js';
 
 // The checks DIN 3968 grades, in the order the table shows them.
 export const CHECK_WORDS = {
@@ -17,7 +17,6 @@ export const CHECK_WORDS = {
 };
 
 export const SERIES_NOTE = 'series value, not confirmed: enter the hob maker\'s table';
-const describedUnit = (path) => fieldUnit(path) || '';
 const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
 const label = (check) => (CHECK_WORDS[check] || { label: check }).label;
 const shortLabel = (check) => (CHECK_WORDS[check] || {}).short || label(check);
@@ -37,7 +36,7 @@ export function gradeTolerance(c) {
 // {graded, same, klass, conformity, proven, text, classText, provenText}. `text` is one line:
 // "Class A — conforms (ISO 14253-1, U95 = 2 µm); proven class A". When the proven class differs,
 // classText and provenText are the two halves the page shows side by side.
-export function classLead(inspection, unitOf = describedUnit) {
+export function classLead(inspection, unitOf = unitText) {
   if (!inspection) return null;
   const klass = inspection.class, proven = inspection.provenClass, conformity = inspection.conformity;
   if (klass === 'not graded') {
@@ -66,7 +65,7 @@ export function verdictSentence(inspection) {
 // "The measurement's uncertainty U95 exceeds a tenth of the tolerance for the radial alignment (U 3
 // µm, tolerance AA 25 µm): its class rests on a measurement too coarse for it. Measure with a
 // smaller uncertainty."
-export function uncertaintyWarningText(inspection, unitOf = describedUnit) {
+export function uncertaintyWarningText(inspection, unitOf = unitText) {
   const names = String((inspection && inspection.uncertaintyWarning) || '').split(',').map((s) => s.trim()).filter(Boolean);
   if (!names.length) return '';
   const parts = names.map((name) => {
@@ -85,7 +84,7 @@ export function uncertaintyWarningText(inspection, unitOf = describedUnit) {
 // The rake error in a line, with what it does to the gear when the case has the hob's relief:
 // "Rake error: hook 2.1′ (0.050 mm into the tooth); the gear's pressure angle changes by −0.19′
 // (−4.8′ per degree of hook)." Null when the result has no rake error.
-export function rakeText(inspection, gearEffect, unitOf = describedUnit) {
+export function rakeText(inspection, gearEffect, unitOf = unitText) {
   const angle = num(inspection && inspection.rakeAngle), offset = num(inspection && inspection.rakeOffset);
   if (angle === null || offset === null) return null;
   const angleUnit = unitOf('inspection.rakeAngle'), offsetUnit = unitOf('inspection.rakeOffset');
@@ -109,7 +108,7 @@ export function rakeText(inspection, gearEffect, unitOf = describedUnit) {
 
 // "Cumulative spread of the cutting faces (largest minus smallest gash deviation; information, not
 // graded): 10.000 µm; predicted after the correction 0.006 µm." Null without gash deviations.
-export function cumulativeText(inspection, unitOf = describedUnit) {
+export function cumulativeText(inspection, unitOf = unitText) {
   const v = num(inspection && inspection.cumulativeSpacing);
   if (v === null) return null;
   const unit = unitOf('inspection.cumulativeSpacing');
@@ -125,7 +124,7 @@ export function cumulativeText(inspection, unitOf = describedUnit) {
 // grade's own when it is the same class). With the table in use and the band
 // (table, band, confidenceOf(check, klass) from tolerance-edit.js's cellConfidence), the class
 // tolerances carry the * of their own cells.
-export function inspectionRows(inspection, { unitOf = describedUnit, confidenceOf = null } = {}) {
+export function inspectionRows(inspection, { unitOf = unitText, confidenceOf = null } = {}) {
   if (!inspection || !inspection.checks) return [];
   return Object.keys(CHECK_WORDS).filter((k) => inspection.checks[k]).map((k) => {
     const c = inspection.checks[k], a = inspection.after || {};

@@ -27,6 +27,9 @@ export function fieldUnit(path) {
 // result with a dot and more.
 const RESULT_PATH = /\b(?:nominal|correction|inspection|gearEffect|face|wheel|setup|machine|measured|passes|job|hob|grid)(?:\.[A-Za-z]\w*)+/g;
 
+// A field's unit as text: '' where it has none or the module does not describe it.
+export const unitText = (path) => fieldUnit(path) || '';
+
 // What a field means, in the module's words ('' when it does not describe it), for the page: a
 // path it names is said in words, by that field's label or its last name ("the correction's
 // axes" for correction.axes) - the page shows no path (docs/api.md's table keeps them).

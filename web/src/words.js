@@ -2,9 +2,8 @@
 // Node tests): the status after a calculation, the setting angle the calculator derived, and the
 // correction's verdict.
 import { fixed, fmt, signed, withUnit } from './format.js';
-import { fieldUnit } from './result-fields.js';
+import { fieldUnit, unitText } from './result-fields.js';
 
-const describedUnit = (path) => fieldUnit(path) || '';
 
 // The status line once the newest inputs are computed.
 export function updatedText(ms) {
@@ -14,7 +13,7 @@ export function updatedText(ms) {
 // What the setting angle γm beside its field says: the value used, or the derived one and where
 // it comes from (the gash helix angle, signed by the hand; a straight gash has none: 0°). Its unit
 // is the module's (setup.settingAngle).
-export function settingAngleNote(setup, unitOf = describedUnit) {
+export function settingAngleNote(setup, unitOf = unitText) {
   const angle = (text) => withUnit(text, unitOf('setup.settingAngle'));
   if (!setup.settingAngleDerived) return `used: ${angle(fmt(setup.settingAngle))}`;
   if (setup.gash === 'straight') return `auto: ${angle(fixed(setup.settingAngle, 4))} (straight gash: no helix to follow)`;
@@ -28,7 +27,7 @@ const plural = (n, one, many) => `${n} ${n === 1 ? one : many}`;
 // correction moves; amplifyingDropped: combinations it leaves alone because a visible change of
 // the face would need axis moves far larger than the deviation they remove (docs/method.md,
 // "Correction").
-export function verdictText(c, unitOf = describedUnit) {
+export function verdictText(c, unitOf = unitText) {
   const u = (q) => unitOf(`correction.${q}Before`);
   // Stop (correction.stop): the measured face is within the probe noise. Its figures as measured,
   // and nothing predicted: another pass would only move noise.

@@ -8,7 +8,7 @@ import { AXES, coefficientUnit } from '../limits.js';
 import { motionUnit } from '../format.js';
 import { FACE_FIGURES } from '../figures.js';
 import { FLANKS, gearEffectRows, hasGearEffect } from '../gear-effect-figures.js';
-import { fieldLabel, fieldMeaning, fieldUnit } from '../result-fields.js';
+import { fieldLabel, fieldMeaning, fieldUnit, unitText } from '../result-fields.js';
 import { POINTS_HEADER } from '../../../wasm/lib/points-csv.js';
 import { inputRows } from './input-rows.js';
 
@@ -69,17 +69,16 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
       lines.push(row(`${a} a${k}`, coefficientUnit(a, k, per), v, ran, corrected, c ? corrected - ran : ''));
     });
   }
-  const unit = (path) => fieldUnit(path) || '';
   const grid = (title, z) => {
-    lines.push('', `# ${title}; rows r (${unit('topography.r')}) root to tip, columns x (${unit('topography.x')}) along the gash`);
+    lines.push('', `# ${title}; rows r (${unitText('topography.r')}) root to tip, columns x (${unitText('topography.x')}) along the gash`);
     lines.push(row('r \\ x', ...r.topography.x));
     z.forEach((values, i) => lines.push(row(r.topography.r[i], ...values)));
   };
   // The measured grid is the case's: an input, in the case format's µm (docs/case-format.md).
   if (caseObject && caseObject.measured) grid('measured normal deviation (µm)', caseObject.measured);
-  grid(`simulated normal deviation (${unit('topography.normal')}) for the axes run`, r.topography.normal);
-  grid(`simulated circular deviation (${unit('topography.circular')} at the mean radius)`, r.topography.circular);
-  if (c) grid(`predicted normal deviation after correction (${unit('correction.residual')})`, c.residual);
+  grid(`simulated normal deviation (${unitText('topography.normal')}) for the axes run`, r.topography.normal);
+  grid(`simulated circular deviation (${unitText('topography.circular')} at the mean radius)`, r.topography.circular);
+  if (c) grid(`predicted normal deviation after correction (${unitText('correction.residual')})`, c.residual);
   // At the measuring machine's points (docs/measured-points.md): each block reads back as a
   // points CSV (wasm/lib/points-csv.js), its title line a comment; its header is that format's.
   const points = (title, list) => {
@@ -90,7 +89,7 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
     points('measured points', c.pointMeasured);
     points('predicted at the measured points after correction', c.pointResidual);
   }
-  lines.push('', row(`# ${fieldMeaning('topography.thickness')} (${unit('topography.thickness')})`, r.topography.thickness));
+  lines.push('', row(`# ${fieldMeaning('topography.thickness')} (${unitText('topography.thickness')})`, r.topography.thickness));
   return BOM + lines.join('\n') + '\n';
 }
 

@@ -2,10 +2,10 @@
 // topography's grid lines and the deviation of every grid the maps and surfaces draw (the
 // topography, the correction's residual, the wheel split, a difference to a pinned result: each
 // in the topography's unit). '' until the module has described its results.
-import { fieldUnit } from '../result-fields.js';
+import { unitText } from '../result-fields.js';
 
 export const gridUnits = () => ({
-  r: fieldUnit('topography.r') || '', x: fieldUnit('topography.x') || '', z: fieldUnit('topography.normal') || '',
+  r: unitText('topography.r'), x: unitText('topography.x'), z: unitText('topography.normal'),
 });
 
 // The axis titles of a map or a surface, with those units.

@@ -1,11 +1,11 @@
 // The derived values beside the form's fields: what the calculator used where a field was left
 // empty, and the lead or helix angle that goes with the other.
 import { fixed, fmt, withUnit } from '../format.js';
-import { fieldLabel, fieldPresent, fieldUnit } from '../result-fields.js';
+import { fieldLabel, fieldPresent, unitText } from '../result-fields.js';
 import { settingAngleNote } from '../words.js';
 
 const $ = (selector) => document.querySelector(selector);
-const unit = (name) => fieldUnit(`setup.${name}`) || '';
+const unit = (name) => unitText(`setup.${name}`);
 
 export function mountDerived(store) {
   store.on('result', ({ result }) => {

@@ -5,12 +5,12 @@
 // calculator's sentence says what is missing.
 import { escapeHtml, fixed, withUnit } from '../format.js';
 import { FLANKS, gearEffectRows, hasGearEffect } from '../gear-effect-figures.js';
-import { fieldUnit } from '../result-fields.js';
+import { unitText } from '../result-fields.js';
 import { PLOT_CONFIG } from '../plots/config.js';
 
 const $ = (selector) => document.querySelector(selector);
 // A field's unit as the module gives it (result-fields.js).
-const unit = (path) => fieldUnit(`gearEffect.${path}`) || '';
+const unit = (path) => unitText(`gearEffect.${path}`);
 
 function show(result) {
   const g = result.gearEffect;

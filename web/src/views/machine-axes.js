@@ -4,7 +4,7 @@
 // degrees to the digits the program carries, a copy button, and the axis positions over the
 // motion range as CSV at the step the user chooses.
 import { AXES, CORRECTION } from '../limits.js';
-import { fieldUnit } from '../result-fields.js';
+import { unitText } from '../result-fields.js';
 import { download } from '../io/files.js';
 import { axisPositions, coefficientsText, machineUnit, positionsCsv, programNote, programmed, roundedFiguresText } from '../machine-axes.js';
 import { axesToRun, machineCoefficients, programFor } from '../../../wasm/lib/axes-to-run.js';
@@ -26,7 +26,7 @@ export function mountMachineAxes(store) {
     const m = machineCoefficients(axes, h);
     const degree = axes.X.length - 1;
     $('#machine-axes-source').textContent = source;
-    $('#machine-axes-figures').textContent = roundedFiguresText(state.result.correction, (path) => fieldUnit(path) || '');
+    $('#machine-axes-figures').textContent = roundedFiguresText(state.result.correction, unitText);
     $('#positions-step-unit').textContent = h ? 'deg' : 'mm';
     $('#machine-coefficients thead').innerHTML = `<tr><th>axis</th>${Array.from({ length: degree + 1 }, (_, k) => `<th>a${k}</th>`).join('')}</tr>`;
     $('#machine-coefficients tbody').innerHTML = AXES.map((a) => `<tr data-axis="${a}"><th>${a}</th>${m[a].map((c, k) =>

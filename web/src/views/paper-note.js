@@ -2,11 +2,11 @@
 // empty), so that they follow the hob, the wheel and the hand. This note says that the derived
 // values equal the paper's (Tab. 1: 12.626°, 69.446 mm), for as long as they do.
 import { fixed, withUnit } from '../format.js';
-import { fieldUnit } from '../result-fields.js';
+import { unitText } from '../result-fields.js';
 
 // The paper's values in the units of the result's (setup.settingAngle, setup.centerDistance).
-const angle = (text) => withUnit(text, fieldUnit('setup.settingAngle') || '');
-const distance = (text) => withUnit(text, fieldUnit('setup.centerDistance') || '');
+const angle = (text) => withUnit(text, unitText('setup.settingAngle'));
+const distance = (text) => withUnit(text, unitText('setup.centerDistance'));
 
 const close = (derived, paper) => typeof paper === 'number' && Math.abs(derived - paper) < 5e-4;
 

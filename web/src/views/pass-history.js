@@ -7,12 +7,12 @@ import { escapeHtml, faceFigure, fixed, signed } from '../format.js';
 import { STOP_WHY, historyRows, historySeries, nextRunInputs, passCase, resultFigures } from '../pass-history.js';
 import { drawPassHistory } from '../plots/pass-history.js';
 import { loadPlotly } from '../plots/passes.js';
-import { fieldMeaning, fieldUnit } from '../result-fields.js';
+import { fieldMeaning, fieldUnit, unitText } from '../result-fields.js';
 
 const $ = (selector) => document.querySelector(selector);
 
 // The figures' units as the module gives them (the measured ones; the predicted have the same).
-const units = () => Object.fromEntries(['rms', 'sse', 'max', 'thickness'].map((q) => [q, fieldUnit(`correction.${q}Before`) || '']));
+const units = () => Object.fromEntries(['rms', 'sse', 'max', 'thickness'].map((q) => [q, unitText(`correction.${q}Before`)]));
 
 // The figures on the scale a probe reads (issue 22): an rms below 0.001 µm and a sum of squares
 // below 1e-6 µm² are "below" that, not the solver's 3e-11.

@@ -7,7 +7,7 @@ import { figureTexts } from '../figures.js';
 import { axesDifference, changedInputs, gridDifference, profileDifference } from '../pin-diff.js';
 import { fieldNames } from './field-names.js';
 import { pathWords } from '../field-words.js';
-import { fieldUnit } from '../result-fields.js';
+import { unitText } from '../result-fields.js';
 
 const $ = (selector) => document.querySelector(selector);
 export const PINNED = 'difference to pinned';
@@ -63,7 +63,7 @@ export function pinnedProfile(state) {
   if (!p) return null;
   const q = p.result.wheelProfile;
   const d = profileDifference(state.result.wheelProfile, q);
-  const r = fieldUnit('wheelProfile.r') || '';  // the tooth-face radius as the module states it; ΔR, ΔZ the page's µm of a change
+  const r = unitText('wheelProfile.r');  // the tooth-face radius as the module states it; ΔR, ΔZ the page's µm of a change
   const text = d ? `Wheel profile, ${PINNED} at the same tooth-face radius: largest |ΔR| ${fixed(Math.abs(d.maxR.value), 3)} µm ` +
     `(r = ${fixed(d.maxR.r, 2)} ${r}), largest |ΔZ| ${fixed(Math.abs(d.maxZ.value), 3)} µm (r = ${fixed(d.maxZ.r, 2)} ${r}).`
     : `Wheel profile, ${PINNED}: not comparable (the radii do not overlap).`;

@@ -9,7 +9,7 @@
 import QRCode from 'qrcode';
 import { AXES, CORRECTION } from '../limits.js';
 import { escapeHtml } from '../format.js';
-import { fieldUnit } from '../result-fields.js';
+import { unitText } from '../result-fields.js';
 import { machineUnit, programmed, roundedFiguresText } from '../machine-axes.js';
 import { axesToRun, machineCoefficients } from '../../../wasm/lib/axes-to-run.js';
 import { LINK_TOO_LONG, QR_MOST_BYTES, jobRows, linkBytes, reportDateLine, reportInputRows, reportInspectionLine, verdictLine } from '../report-lines.js';
@@ -17,7 +17,6 @@ import { fieldNames } from './field-names.js';
 import { openForPrint } from './on-demand.js';
 
 const $ = (selector) => document.querySelector(selector);
-const unitOf = (path) => fieldUnit(path) || '';
 
 // The form's labels (as HTML, with their symbols) and units of the case's fields, and its groups'
 // headings: what the report's inputs table shows instead of the case's field paths.
@@ -65,7 +64,7 @@ function renderProgramAxes(state) {
     `<th>a${k}${k ? ` <span class="unit">(per ${per(k)})</span>` : ''}</th>`).join('')}</tr>`;
   $('#report-axes tbody').innerHTML = AXES.map((a) => `<tr data-axis="${a}"><th>${a} <span class="unit">(${machineUnit(a, 0, helical)})</span></th>${m[a].map((c, k) =>
     `<td class="num" title="${machineUnit(a, k, helical)}">${programmed(c, CORRECTION.coefficientDigits)}</td>`).join('')}</tr>`).join('');
-  $('#report-axes-figures').textContent = roundedFiguresText(state.result.correction, unitOf);
+  $('#report-axes-figures').textContent = roundedFiguresText(state.result.correction, unitText);
 }
 
 // The NC program the axes belong to, printed under them: the one the page offers beside "Axes to
@@ -120,7 +119,7 @@ function printWidth(el) {
 export function mountReport(store) {
   store.on('ncProgram', ({ program }) => showReportProgram(program));
   store.on('result', ({ result, caseObject }, state) => {
-    $('#report-verdict').textContent = verdictLine(result, unitOf);
+    $('#report-verdict').textContent = verdictLine(result, unitText);
     $('#report-date').textContent = reportDateLine(caseObject);
     $('#report-inspection').textContent = reportInspectionLine(result.inspection);
     renderInputs(result, caseObject);

@@ -7,7 +7,7 @@
 import { INSPECTION } from '../limits.js';
 import { CHECK_WORDS, SERIES_NOTE } from '../inspection-table.js';
 import { escapeHtml, fmt } from '../format.js';
-import { fieldUnit } from '../result-fields.js';
+import { unitText } from '../result-fields.js';
 import { cellConfidence, cellTexts, gashText, gashTopographyCount, isEdited, parseGashDeviations, tableInUse, uncertaintyText, withCell,
   withDefaultTable, withGashDeviations, withGashTopographies, withUncertainty } from '../tolerance-edit.js';
 import { checkGashFileCount, readGashTopographies } from '../../../wasm/lib/gash-files.js';
@@ -39,7 +39,7 @@ function render(state) {
   $('#tolerance-table thead').innerHTML = `<tr><th>check</th>${INSPECTION.classes.map((k) => `<th>${k}</th>`).join('')}</tr>`;
   const active = document.activeElement;
   if (active && active.closest && active.closest('#tolerance-table')) return;  // not under the user's typing
-  const unit = (check) => fieldUnit(`inspection.checks.${check}.tolerances`) || '';
+  const unit = (check) => unitText(`inspection.checks.${check}.tolerances`);
   $('#tolerance-table tbody').innerHTML = INSPECTION.checks.map((check) => `<tr data-check="${check}"><th>${
     escapeHtml(label(check))} <span class="unit">${escapeHtml(unit(check))}</span></th>${INSPECTION.classes.map((k) => {
     const series = band >= 0 && texts[check][k] !== '' && cellConfidence(table, { band, check, klass: k, edited }) === 'series';
@@ -70,7 +70,7 @@ function renderUncertainty(state) {
   const input = $('#inspection-uncertainty');
   if (document.activeElement !== input) input.value = uncertaintyText(state.extra);
   const u = INSPECTION.uncertainty;
-  const unit = fieldUnit('inspection.uncertainty') || '';
+  const unit = unitText('inspection.uncertainty');
   $('#inspection-uncertainty-unit').textContent = unit;
   if (!u) return;
   input.placeholder = fmt(u.default, 3);

@@ -2,7 +2,7 @@
 // remove, what the wheel's proposed offset removes, and what is left (correction.residual), as
 // three maps on one colour range, with the share of the measured sum of squares each removes.
 import { fixed, withUnit } from '../format.js';
-import { fieldLabel, fieldUnit } from '../result-fields.js';
+import { fieldLabel, unitText } from '../result-fields.js';
 import { colourRange } from '../plots/colours.js';
 import { drawMap } from '../plots/maps.js';
 
@@ -14,7 +14,7 @@ const PLOTS = [['plot-removed-axes', 'removedByAxes', 'Removed by the axes'], ['
 export function shareText(c) {
   const pct = (v) => `${fixed(100 * v, 1)} %`;
   return `Of the measured sum of squares, the axes remove ${pct(c.axesShare)} and the wheel's proposed offset ${pct(c.wheelShare)}; ` +
-    `${withUnit(fixed(c.rmsAfter, 3), fieldUnit('correction.rmsAfter') || '')} ${fieldLabel('correction.rmsAfter')} is left (re-simulated with both).`;
+    `${withUnit(fixed(c.rmsAfter, 3), unitText('correction.rmsAfter'))} ${fieldLabel('correction.rmsAfter')} is left (re-simulated with both).`;
 }
 
 function drawSplit({ Plotly, result: r }) {

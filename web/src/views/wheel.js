@@ -7,13 +7,13 @@ import { dresserCsv, profileCsv } from '../io/results-csv.js';
 import { offsetRange, wheelOffsetCurves } from '../wheel-offsets.js';
 import { pinnedProfile } from './pin.js';
 import { PLOT_CONFIG } from '../plots/config.js';
-import { fieldUnit } from '../result-fields.js';
+import { unitText } from '../result-fields.js';
 
 const OFFSET_COLOURS = ['#1b7837', '#b35806', '#542788'];
 
 // The profile's and the offsets' units as the module states them (result-fields.js).
-const units = () => ({ R: fieldUnit('wheelProfile.R') || '', Z: fieldUnit('wheelProfile.Z') || '', r: fieldUnit('wheelProfile.r') || '',
-  offset: fieldUnit('wheelProfile.offset') || '' });
+const units = () => ({ R: unitText('wheelProfile.R'), Z: unitText('wheelProfile.Z'), r: unitText('wheelProfile.r'),
+  offset: unitText('wheelProfile.offset') });
 
 function drawWheel(Plotly, r, state) {
   const p = r.wheelProfile;
