@@ -119,9 +119,11 @@ nlohmann::json targetJson(const Target& t) {
   return j;
 }
 
+// Whole percent, rounded down: a share just under the one asked (89.6 % of 90 %) never reads as
+// the share asked.
 std::string percent(double share) {
   std::ostringstream s;
-  s << std::fixed << std::setprecision(0) << 100 * share << " %";
+  s << std::floor(100 * share + 1e-9) << " %";
   return s.str();
 }
 
@@ -159,7 +161,7 @@ nlohmann::json toJson(const Campaign& c) {
                           {"predictedRms", p.predictedRms}, {"predictedRmsHigh", p.predictedRmsHigh},
                           {"status", p.status}, {"verdict", p.verdict}, {"rank", p.rank},
                           {"withinNoise", p.withinNoise}, {"amplifying", p.amplifying}, {"iterations", p.iterations},
-                          {"linearisedAtNominal", p.linearisedAtNominal}, {"stop", p.stopAdvised},
+                          {"linearisedAtNominal", p.linearisedAtNominal}, {"passesJoined", p.passesJoined}, {"stop", p.stopAdvised},
                           {"unsolvableTrials", p.unsolvableTrials}};
       if (!p.message.empty()) q["message"] = p.message;
       s["passes"].push_back(q);
