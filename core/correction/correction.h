@@ -79,6 +79,9 @@ struct Correction {
   // The axes run alone grind no face the wheel envelops (a pass after a large machine error): the
   // correction was linearised at the nominal axes instead, from the face measured.
   bool linearisedAtNominal = false;
+  // The earlier passes whose measured faces the identified error explains together with this one
+  // (machine_error.h); 0 when identified from this face alone.
+  int passesJoined = 0;
 
   // With a measurement at probe points (correctMeasuredPoints, docs/measured-points.md): `before`,
   // `after` and `afterRounded` hold one column, a value per point in the points' order, and their
@@ -103,14 +106,17 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
 // is the setup the predicted faces are ground with: the wheel as a dressing leaves it
 // (wheel_correction.h), not the wheel `runFace` was ground with. `linearisedAt`, when given, is the
 // axes `runFace` was simulated for instead of `run` (the nominal ones, where the run alone cannot be
-// simulated); `identified`, when given with it, is the error identified from those axes.
+// simulated); `identified`, when given with it, is the error identified from those axes. `history`,
+// when given, is the earlier passes the error is identified together with (machine_error.h).
 struct MachineErrorEstimate;
+struct PassHistory;
 Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                         const AxisPolynomials& run, const GroundFace& runFace,
                                         const Eigen::MatrixXd& measured, const CorrectionOptions& options,
                                         const MachineErrorEstimate* identified = nullptr,
                                         const SharpeningSetup* dressed = nullptr,
-                                        const AxisPolynomials* linearisedAt = nullptr);
+                                        const AxisPolynomials* linearisedAt = nullptr,
+                                        const PassHistory* history = nullptr);
 
 // The same for a measurement at a measuring machine's probe points (µm, one per point): the
 // correction's rows are exactly those points (the run face simulated there, its sensitivities

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include <Eigen/SVD>
@@ -22,6 +23,12 @@ constexpr unsigned kUnseenSeed = 20;
 // A direction of the coefficients moves the face no more than this share of the strongest one: it
 // is a direction the face cannot show.
 constexpr double kUnseenShare = 1e-4;
+// The same over the faces of several passes (shownBy): their singular values fall with no gap
+// down to about 1e-6 of the strongest, and the identification takes directions that far (faces at
+// two operating points show what one face does not). Set on the campaign's seed 20261125 and
+// checked on seeds 3, 7, 11 and 2026 (docs/validation.md): 1e-4 here makes the bound 10 to 100
+// times the face left on passes that end at nanometres.
+constexpr double kUnseenShareJoined = 1e-6;
 // The unseen part is sampled at no more than this many of the face's points, evenly through them:
 // an rms over a couple of hundred points is as good a figure, at a tenth of the cost for a
 // measuring machine's 2,000.
@@ -52,7 +59,7 @@ Eigen::MatrixXd rowsOf(const Eigen::MatrixXd& m, const std::vector<int>& at) {
 
 FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,
                            const AxisPolynomials& run, const GroundFace& runFace, const Correction& c,
-                           const Eigen::MatrixXd& unexplained, double sigma) {
+                           const Eigen::MatrixXd& unexplained, double sigma, const Eigen::MatrixXd* shownBy) {
   FacePrediction p;
   const double n = std::max(1, runFace.size());
   const int k = c.rank;
@@ -92,9 +99,19 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
     for (int i = 0; i < q; ++i) (i >= s.size() || s(i) <= kUnseenShare * s(0) ? unseen : seen).push_back(i);
     Eigen::MatrixXd U(S.rows(), static_cast<int>(seen.size()));  // the face directions the axes make
     for (size_t i = 0; i < seen.size(); ++i) U.col(static_cast<int>(i)) = svd.matrixU().col(seen[i]);
+    // What none of the faces identified from shows: those of the history too, when given.
+    std::optional<Eigen::JacobiSVD<Eigen::MatrixXd>> all;
+    if (shownBy && shownBy->cols() == q) {
+      all.emplace(*shownBy * w.cwiseInverse().asDiagonal(), Eigen::ComputeFullV);
+      const Eigen::VectorXd t = all->singularValues();
+      unseen.clear();
+      for (int i = 0; i < q; ++i)
+        if (i >= t.size() || t(i) <= kUnseenShareJoined * t(0)) unseen.push_back(i);
+    }
+    const Eigen::MatrixXd& V = all ? all->matrixV() : svd.matrixV();
     if (size > 0 && !unseen.empty()) {
       Eigen::MatrixXd N(q, static_cast<int>(unseen.size()));
-      for (size_t i = 0; i < unseen.size(); ++i) N.col(static_cast<int>(i)) = svd.matrixV().col(unseen[i]);
+      for (size_t i = 0; i < unseen.size(); ++i) N.col(static_cast<int>(i)) = V.col(unseen[i]);
       const AxisPolynomials actual = plusError(c.axes, c.identifiedError);
       const AxisPolynomials measuredAt = plusError(run, c.identifiedError);
       Eigen::VectorXd base = flat(c.after.normal) - flat(unexplained);      // the model's face after

@@ -37,8 +37,12 @@ struct FacePrediction {
 // with (the dressed wheel when there is one); `run` the axes run; `runFace` the face they ground
 // without error, with its sensitivities, at the measurement's points; `unexplained` measured minus
 // the identified model.
+// `shownBy`, when given, is the sensitivity matrix (points x c.coefficients, µm per unit) of every
+// face the error was identified from (the pass history's and this one, machine_error.h): the
+// directions the face cannot show are then those none of them shows.
 FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,
                            const AxisPolynomials& run, const GroundFace& runFace, const Correction& c,
-                           const Eigen::MatrixXd& unexplained, double probeNoise);
+                           const Eigen::MatrixXd& unexplained, double probeNoise,
+                           const Eigen::MatrixXd* shownBy = nullptr);
 
 }  // namespace hobsharp

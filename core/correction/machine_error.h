@@ -7,6 +7,7 @@
 // E = 0 and again at the solution.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -16,6 +17,7 @@
 #include "ground_face.h"
 #include "least_squares_options.h"
 #include "outcome.h"
+#include "earlier_passes.h"
 #include "sharpening_setup.h"
 #include "structural_null_space.h"
 
@@ -42,10 +44,21 @@ struct MachineErrorEstimate {
   int withinNoise = 0;  // directions of the space the measurement does not show above the noise
   int amplifying = 0;   // directions left out because their step would be wild (spanAmplification)
   LeastSquaresSummary summary;
+  // The earlier passes whose faces E explains together with this one (identifyMachineError with a
+  // history), and, when there were earlier passes but E is this face's alone, why (a sentence).
+  int passesJoined = 0;
+  Eigen::MatrixXd historyJacobian;  // when joined: the sensitivities of every face, at E (points x q)
+  std::string historyNote;
 };
 
+// With a `history` of earlier passes measured on the grid, E is then sought once more over every
+// free coefficient (the structural null space too) so that it explains every pass's face together,
+// started at E0 = history.nominal - run (the error the run compensates); that E is kept when it
+// explains all of them to the probe noise (a converged solve), else this face's own E stands and
+// `historyNote` says why. The history's axes are those its faces were ground with, as `run` is.
 Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup, const AxisPolynomials& run,
                                                    const GroundFace& runFace, const Eigen::MatrixXd& measured,
-                                                   const CorrectionOptions& options);
+                                                   const CorrectionOptions& options,
+                                                   const PassHistory* history = nullptr);
 
 }  // namespace hobsharp

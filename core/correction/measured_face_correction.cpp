@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -92,13 +93,15 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
                                         const AxisPolynomials& run, const GroundFace& runFace,
                                         const Eigen::MatrixXd& measured, const CorrectionOptions& o,
                                         const MachineErrorEstimate* identified, const SharpeningSetup* dressed,
-                                        const AxisPolynomials* linearisedAt) {
+                                        const AxisPolynomials* linearisedAt, const PassHistory* history) {
   Correction c;
   // The axes runFace was ground with: the run, or the nominal ones where the run alone cannot be
   // simulated (a pass after a large machine error; correction.h).
   const AxisPolynomials& at = linearisedAt ? *linearisedAt : run;
   c.linearisedAtNominal = linearisedAt != nullptr;
   Eigen::MatrixXd unexplained;
+  std::string historyNote;  // why the earlier passes were not joined (machine_error.h)
+  Eigen::MatrixXd historyJacobian;  // when joined: every face's sensitivities
   const MotionRange range = motionRange(runFace);
   const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
   // What the face tells of the axes (identified_axes.h): the sensitivities at the identified error,
@@ -132,8 +135,18 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     const IdentifiableSpace space = identifiableSpace(setup.face, run.degree(), o, reach);
     if (space.coefficients == c.coefficients) basis = space.basis;
   } else {
+    // The history's faces were ground with their axes and the error; identified from `at`, its axes
+    // move as the run's do.
+    std::optional<PassHistory> shifted;
+    if (history && linearisedAt) {
+      shifted = *history;
+      for (EarlierPass& p : shifted->passes)
+        for (Axis a : kAxes)
+          for (size_t k = 0; k < p.axes[a].a.size(); ++k)
+            p.axes[a].a[k] += at[a].coefficient(static_cast<int>(k)) - run[a].coefficient(static_cast<int>(k));
+    }
     auto m = identified ? Outcome<MachineErrorEstimate>(*identified)
-                        : identifyMachineError(setup, at, runFace, measured, o);
+                        : identifyMachineError(setup, at, runFace, measured, o, shifted ? &*shifted : history);
     if (!m) return m.error();
     MachineErrorEstimate est = std::move(m).value();
     // Identified from `at`: the machine ran `run`, so its error is at - run more.
@@ -152,6 +165,9 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.amplifyingDropped = est.amplifying;
     c.withinNoise = est.withinNoise;
     c.unobservable = est.space.structural;
+    c.passesJoined = est.passesJoined;
+    historyNote = est.historyNote;
+    historyJacobian = est.historyJacobian;
     unexplained = est.unexplained;
     // nominal - E; a locked coefficient stays as run.
     c.axes = run;
@@ -225,13 +241,21 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   }
   {
     const FacePrediction p =
-        predictFace(setup, dressing ? *dressed : setup, run, runFace, c, unexplained, o.probeNoise);
+        predictFace(setup, dressing ? *dressed : setup, run, runFace, c, unexplained, o.probeNoise,
+                    c.passesJoined > 0 ? &historyJacobian : nullptr);
     c.predictedRms = p.rms;
     c.predictedRmsHigh = p.rmsHigh;
     c.predictedNoisePart = p.noisePart;
     c.predictedUnseenPart = p.unseenPart;
   }
   c.verdict = verdictOf(c, o, runFace.size());
+  // A stop is the whole instruction: the history's sentence would only lengthen it.
+  if (!c.stop && c.passesJoined > 0)
+    c.verdict += " The machine's error was identified from this face and the " + std::to_string(c.passesJoined) +
+                 (c.passesJoined == 1 ? " earlier pass's face" : " earlier passes' faces") +
+                 " together: one error explains them all to the probe noise.";
+  else if (!c.stop && !historyNote.empty())
+    c.verdict += " " + historyNote;
   if (c.linearisedAtNominal)
     c.verdict += " The face the axes run grind without the machine's error cannot be simulated (the wheel would not "
                  "envelop it): the correction was linearised at the nominal axes, from the face measured.";

@@ -653,6 +653,8 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
            c.stop);
     v.flag({"correction.linearisedAtNominal", "", "the axes run alone grind no face the wheel envelops: the correction was linearised at the nominal axes, from the face measured", kWithMeasured},
            c.linearisedAtNominal);
+    v.count({"correction.passesJoined", "", "the earlier passes (the case's passes measured on the grid) whose faces the identified machine error explains together with this one; 0: identified from this face alone", kWithMeasured},
+            c.passesJoined);
     v.number({"correction.peakToValleyBefore", "µm", "largest minus smallest deviation, measured", kWithMeasured, "peak-to-valley"},
              c.before.peakToValley);
     v.number({"correction.peakToValleyAfter", "µm", "largest minus smallest deviation predicted after the pass", kWithMeasured, "peak-to-valley"},

@@ -23,4 +23,15 @@ Outcome<void> checkPasses(const std::vector<PassInput>& passes, int degree, cons
   return success();
 }
 
+PassHistory passHistory(const std::vector<PassInput>& passes, const AxisPolynomials& nominal, bool wheelCorrected) {
+  PassHistory h;
+  h.nominal = nominal;
+  for (const PassInput& p : passes)
+    if (p.correction && p.correction->wheel.value_or(false)) wheelCorrected = true;
+  if (wheelCorrected) return h;
+  for (const PassInput& p : passes)
+    if (!p.measuredPoints && p.measured.size() > 0) h.passes.push_back({p.axes, p.measured});
+  return h;
+}
+
 }  // namespace hobsharp

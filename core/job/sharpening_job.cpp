@@ -103,6 +103,7 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   auto options = correctionOptions(in.correction, in.degree, "correction");
   if (!options) return options.error();
   job.correction = *options;
+  job.history = passHistory(in.passes, job.nominalAxes, job.correction.wheel);
   if (job.correction.wheel && job.measured.atPoints())
     return refuse("correction.wheel", "is not available for measured points off the grid yet: give the points at the "
                                       "grid's positions (or the grid as `measured`) to correct the wheel too.");

@@ -11,6 +11,7 @@
 #include "inspection_plan.h"
 #include "measured_face.h"
 #include "outcome.h"
+#include "earlier_passes.h"
 #include "sharpening_setup.h"
 
 namespace hobsharp {
@@ -28,6 +29,7 @@ struct SharpeningJob {
   FaceGrid grid;                 // grid_input.h
   CorrectionOptions correction;  // correction_input.h
   MeasuredFace measured;         // the measured grid or points (measured_face.h)
+  PassHistory history;           // the earlier passes measured on the grid (pass_history.h)
   InspectionPlan inspection;     // inspection_plan.h
   GearPlan gear;                 // gear_plan.h
 };

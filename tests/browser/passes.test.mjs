@@ -131,6 +131,8 @@ test('measure, correct, use as next run, measure again; the history is saved and
   rows = await table(page);
   assert.deepEqual(rows.map((r) => r[0]), ['1', '2 (under way)', '3 (next, predicted)']);
   assert.equal(await page.isDisabled('#next-run'), false);
+  // The kept pass's face is in the identification too (docs/method.md §Correction from the pass history).
+  assert.match(await page.textContent('#verdict'), /The machine's error was identified from this face and the 1 earlier pass's face together: one error explains them all to the probe noise\./);
 
   // Kept again: two passes in the history; the case and the link hold them.
   await afterResult(page, () => page.click('#next-run'));

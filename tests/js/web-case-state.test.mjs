@@ -105,7 +105,7 @@ test('the grinding passes are saved and loaded with the case, and the calculator
   const state = stateWith({ passes: structuredClone(history), axes, measured: grid(0.1) });
   const saved = JSON.parse(JSON.stringify(savedCase(state)));
   assert.deepEqual(saved.passes, history);
-  assert.equal('passes' in caseOf(state), false, 'nothing computed depends on the history');
+  assert.deepEqual(caseOf(state).passes, history, 'the correction identifies the machine from the history too');
   const back = inputsFromCase(saved);
   assert.deepEqual(back.passes, history);
   assert.deepEqual(back.formCase, paper, 'the history is not taken for a field of the form');
@@ -113,10 +113,14 @@ test('the grinding passes are saved and loaded with the case, and the calculator
   assert.deepEqual(inputsFromCase(paper).passes, []);
   assert.deepEqual(userData(stateWith({ passes: history })), ['the history of 3 grinding passes']);
   assert.equal('measured' in back.passes[2], false, 'a pass of points has no grid');
-  // The C++ case reader (in the module) takes the saved case, and the result is the one without the history.
+  // The C++ case reader (in the module) takes the saved case and reads the history. These faces
+  // are made up, not ground by one machine error: the history is not joined, the verdict says so,
+  // and the axes are those from the face alone.
   const hobsharp = await loadHobSharp();
   const withHistory = hobsharp.evaluate(calculatorCase(saved));
-  const without = hobsharp.evaluate(caseOf(state));
+  const without = hobsharp.evaluate({ ...caseOf(state), passes: undefined });
+  assert.equal(withHistory.correction.passesJoined, 0);
+  assert.match(withHistory.correction.verdict, /No one machine error explains this face and the 2 earlier passes' faces/);
   assert.deepEqual(withHistory.correction.axes, without.correction.axes);
 });
 

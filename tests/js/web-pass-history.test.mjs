@@ -59,6 +59,11 @@ test('"Use as next run" with the measuring machine\'s points: the pass keeps the
   assert.equal('measured' in c, false);
   assert.deepEqual(c.axes, nominal);
   assert.deepEqual(c.inspection, inspection);
+  assert.equal('passes' in c, false, 'the first pass had no history');
+  // A later kept pass is computed with the history as it was then: the passes before it.
+  const later = { ...second, passes: [...second.passes, { axes: proposed, measured: [[0.1]] }, { axes: nominal, measured: [[0.2]] }] };
+  assert.deepEqual(passCase(later, later.passes[1]).passes, [second.passes[0]]);
+  assert.deepEqual(passCase(later, later.passes[2]).passes, later.passes.slice(0, 2));
   // A grid pass kept while points are under way: the pass's case has its grid and no points.
   const gridPass = passCase(computed({ extra: { measuredPoints: points } }), { axes: nominal, measured: [[1, 2]] });
   assert.deepEqual(gridPass.measured, [[1, 2]]);

@@ -70,6 +70,7 @@ ScenarioOutcome runScenario(const Scenario& s) {
     return out;
   }
   AxisPolynomials run = first->nominalAxes;
+  std::vector<PassInput> history;  // the passes so far, oldest first
   const FaceGrid dense = denseGrid(first->grid);
   {
     auto machine = machineJob(s, recorded);
@@ -107,6 +108,7 @@ ScenarioOutcome runScenario(const Scenario& s) {
     CaseInput c = s.input;
     c.axes = run;
     c.measured = measured;
+    c.passes = history;  // the earlier passes, as the page's "Use as next run" keeps them
     c.correction.probeNoise = s.spec.sigma > 0 ? s.spec.sigma : kNoiseFreeDeclared;
     if (s.spec.wheel) c.correction.wheel = true;
     if (recorded) c.wheelProfileOffset = recorded;
@@ -123,6 +125,7 @@ ScenarioOutcome runScenario(const Scenario& s) {
     p.predictedRmsHigh = k.predictedRmsHigh;
     p.stopAdvised = k.stop;
     p.linearisedAtNominal = k.linearisedAtNominal;
+    p.passesJoined = k.passesJoined;
     p.unsolvableTrials = k.summary.unsolvableFaces;
     p.rank = k.rank;
     p.withinNoise = k.withinNoise;
@@ -150,6 +153,13 @@ ScenarioOutcome runScenario(const Scenario& s) {
     p.denseRms = *denseRms;
     p.denseRmsRounded = *rounded;
     out.passes.push_back(p);
+    PassInput done;
+    done.axes = run;
+    done.measured = measured;
+    done.correction = CorrectionInput{};
+    done.correction->probeNoise = c.correction.probeNoise;
+    if (s.spec.wheel) done.correction->wheel = true;
+    history.push_back(done);
     run = k.axes;
     recorded = next;
   }

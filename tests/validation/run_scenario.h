@@ -28,6 +28,7 @@ struct PassOutcome {
   int rank = 0, withinNoise = 0, amplifying = 0, iterations = 0;  // how the identification went
   bool stopAdvised = false;
   bool linearisedAtNominal = false;  // the axes run alone could not be simulated
+  int passesJoined = 0;              // correction.passesJoined: earlier passes identified with
   int unsolvableTrials = 0;          // trial faces the wheel could not grind (rejected steps)  // the verdict says to stop: the face is within the probe noise
 };
 

@@ -41,19 +41,20 @@ TEST(Validation, CampaignTargets) {
   for (const Target& t : classOf(ScenarioClass::Noisy).targets) EXPECT_GE(t.share(), t.required) << t.what;
   EXPECT_GE(campaign().bounds[0].share(), campaign().bounds[0].required) << campaign().bounds[0].what;
   EXPECT_GE(campaign().bounds[1].share(), campaign().bounds[1].required) << campaign().bounds[1].what;
+  // The bound informs in 197/216 passes since the second passes are identified from the pass
+  // history too (was 191/216, just under the 90 % asked).
+  EXPECT_GE(campaign().bounds[2].share(), campaign().bounds[2].required) << campaign().bounds[2].what;
 
   for (const Target& t : classOf(ScenarioClass::Wheel).targets) EXPECT_GE(t.share(), t.required) << t.what;
   for (const Target& t : classOf(ScenarioClass::NoiseOnly).targets) EXPECT_GE(t.share(), t.required) << t.what;
 
   // Held at the share measured with g++ -O2 less one scenario (the sanitizer build's clang rounds
-  // differently, and a scenario at a threshold may fall either way): the bound informs in 191/216,
-  // just under the 90 % (216 passes since scenario 182 is no longer refused, below);
-  // not yet met (docs/validation.md): 25/33 and 16/34 of the 95 and 90 %.
-  EXPECT_GE(campaign().bounds[2].share(), 190.0 / 216 - 1e-9) << campaign().bounds[2].what;
+  // differently, and a scenario at a threshold may fall either way); not yet met
+  // (docs/validation.md): 25/33 of the 95 %, and 27/33 with the rounded axes of its 90 %.
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[0].share(), 24.0 / 33 - 1e-9);
-  // With the rounded axes (coefficients as the NC program carries them): 27/33 of the 90 %.
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[1].share(), 26.0 / 33 - 1e-9);
-  EXPECT_GE(classOf(ScenarioClass::Large).targets[0].share(), 15.0 / 34 - 1e-9);
+  // Two passes at 150 µm: 30/34 (was 16/34 before the second pass used the first pass's face).
+  EXPECT_GE(classOf(ScenarioClass::Large).targets[0].share(), 29.0 / 34 - 1e-9);
   std::printf("%s", tableText(campaign()).c_str());
 }
 

@@ -23,8 +23,8 @@ function checkedCase(c) {
   const given = calculatorCase(c);
   let sent;
   try {
-    const { formCase, measured, locked, lockedAxes, tuning, axes, extra } = inputsFromCase(c);
-    sent = caseOf({ form: formCase, measured, locked, lockedAxes, tuning, axes, extra });
+    const { formCase, measured, locked, lockedAxes, tuning, axes, passes, extra } = inputsFromCase(c);
+    sent = caseOf({ form: formCase, measured, locked, lockedAxes, tuning, axes, passes, extra });
   } catch {
     return given;  // (members the page cannot take in: the calculator names them)
   }

@@ -54,11 +54,13 @@ export function nextRunInputs(state) {
   return { inputs: { passes: [...state.passes, pass], axes: structuredClone(c.axes), measured: null, extra } };
 }
 
-// The case that gives a kept pass's figures: the form, with the pass's axes and grid, and the
-// correction's options the pass kept (a pass from an older case without them: those in use now).
+// The case that gives a kept pass's figures: the form, with the pass's axes and grid, the
+// correction's options the pass kept (a pass from an older case without them: those in use now),
+// and the history as it was then: the passes before it.
 export function passCase(state, pass) {
   const { measuredPoints, ...extra } = state.extra || {};
-  const c = caseOf({ ...state, axes: pass.axes, measured: pass.measured || null,
+  const at = state.passes.indexOf(pass);
+  const c = caseOf({ ...state, axes: pass.axes, measured: pass.measured || null, passes: at < 0 ? state.passes : state.passes.slice(0, at),
     extra: pass.measuredPoints ? { ...extra, measuredPoints: pass.measuredPoints } : extra });
   if (pass.correction) c.correction = structuredClone(pass.correction);
   return c;

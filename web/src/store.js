@@ -60,8 +60,9 @@ export function initialState() {
   };
 }
 
-// The case sent to the calculator: the form, the run axes, and the measured grid with the locks.
-// The pass history is not: nothing computed depends on it (io/case-state.js saves it).
+// The case sent to the calculator: the form, the run axes, the measured grid with the locks, and
+// the pass history (the correction identifies the machine's error from its faces too,
+// docs/method.md §Correction from the pass history).
 export function caseOf(state) {
   const c = structuredClone(state.form);
   for (const [k, v] of Object.entries(state.extra || {})) {
@@ -69,6 +70,7 @@ export function caseOf(state) {
   }
   if (state.axes) c.axes = structuredClone(state.axes);
   if (state.measured) c.measured = state.measured;
+  if (state.passes?.length) c.passes = structuredClone(state.passes);
   // A measurement as a grid, or as the measuring machine's points (kept in extra), is corrected
   // with the locks and options.
   if (state.measured || c.measuredPoints) {

@@ -30,7 +30,6 @@ export function savedCase(state) {
   if (!c.correction && (state.locked.length || state.lockedAxes.length || Object.keys(state.tuning).length)) {
     c.correction = correction;
   }
-  if (state.passes.length) c.passes = structuredClone(state.passes);
   const whatIf = offsetsToSave(state.offsets);
   const page = {
     ...(Object.keys(whatIf).length ? { whatIf } : {}),

@@ -1,0 +1,29 @@
+// The earlier passes an identification explains together with the face measured now (docs/method.md
+// §Correction from the pass history; issue 20, item 3). The machine's error E is the same in every
+// pass (the correction proposes nominal - E for the next pass on that premise), so each earlier
+// face is the face its axes grind with E: faces measured at different operating points show
+// directions that no single face shows (an error along the structural null space, null at one
+// operating point only, structural_null_space.h).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "axis_polynomials.h"
+
+namespace hobsharp {
+
+struct EarlierPass {
+  AxisPolynomials axes;      // the axes the machine ran
+  Eigen::MatrixXd measured;  // the face measured after it, µm, on the job's grid
+};
+
+struct PassHistory {
+  AxisPolynomials nominal;          // the axes every run aims at: run = nominal - E of the pass before
+  std::vector<EarlierPass> passes;  // on the same machine and wheel, oldest first
+
+  bool empty() const { return passes.empty(); }
+};
+
+}  // namespace hobsharp

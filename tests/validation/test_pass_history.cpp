@@ -1,0 +1,131 @@
+// The correction from the pass history (docs/method.md §Correction from the pass history): a second
+// pass identifies the machine's error from its own face and the first pass's together. Checked on
+// campaign scenarios of the default seed, each pass measured as the campaign measures it (the
+// module as the machine, noise-free, judged on the probe grid).
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "evaluation.h"
+#include "face_vectors.h"
+#include "ground_face.h"
+#include "pass_history.h"
+#include "scenario.h"
+#include "sharpening_job.h"
+#include "topography.h"
+
+namespace hobsharp::validation {
+namespace {
+
+constexpr std::uint64_t kSeed = 20261125;
+
+struct Passes {
+  Scenario s;
+  SharpeningJob job;
+  AxisPolynomials firstRun, secondRun;
+  Eigen::MatrixXd firstMeasured, secondMeasured;
+};
+
+// The face `axes` grind on the machine (with its error), on the probe grid: µm, and its rms.
+Eigen::MatrixXd groundOnMachine(const Passes& p, const AxisPolynomials& axes) {
+  auto f = simulateGroundFace(p.job.setup, plusError(axes, p.s.error), p.job.grid, Sensitivities::Skip);
+  EXPECT_TRUE(f.ok());
+  return f ? topographyOf(*f).normal : Eigen::MatrixXd();
+}
+double rms(const Eigen::MatrixXd& m) { return std::sqrt(m.squaredNorm() / static_cast<double>(m.size())); }
+
+// Scenario `index`'s first pass (nominal axes, corrected from its face alone) and the face its
+// proposal grinds: the second pass's measurement.
+Passes twoPasses(int index) {
+  Passes p;
+  auto s = makeScenario(kSeed, index);
+  EXPECT_TRUE(s.ok());
+  p.s = *s;
+  p.job = *resolveJob(p.s.input);
+  p.firstRun = p.job.nominalAxes;
+  p.firstMeasured = groundOnMachine(p, p.firstRun);
+  CaseInput c = p.s.input;
+  c.measured = p.firstMeasured;
+  c.correction.probeNoise = 0.01;
+  auto e = evaluate(*resolveJob(c));
+  EXPECT_TRUE(e.ok() && e->correction);
+  p.secondRun = e->correction->axes;
+  p.secondMeasured = groundOnMachine(p, p.secondRun);
+  return p;
+}
+
+// The second pass's case: its run and face, with the first pass in `passes` or without it.
+CaseInput secondCase(const Passes& p, bool withHistory, const Eigen::MatrixXd* firstMeasured = nullptr) {
+  CaseInput c = p.s.input;
+  c.axes = p.secondRun;
+  c.measured = p.secondMeasured;
+  c.correction.probeNoise = 0.01;
+  if (withHistory) c.passes.push_back(PassInput{p.firstRun, firstMeasured ? *firstMeasured : p.firstMeasured, {}, {}});
+  return c;
+}
+
+Correction corrected(const CaseInput& c) {
+  auto e = evaluate(*resolveJob(c));
+  EXPECT_TRUE(e.ok() && e->correction) << (e ? "" : e.error().message);
+  return *e->correction;
+}
+
+// Scenario 206 (helical gash, 150 µm rms): from its own face alone, the second pass's estimate
+// explains that face with a wrong error and its proposal grinds tens of µm; from both faces the
+// error is found and the face left is below 0.1 µm rms.
+TEST(PassHistory, TheFirstPasssFaceFindsTheErrorTheSecondFaceAloneCannot) {
+  const Passes p = twoPasses(206);
+  const Correction alone = corrected(secondCase(p, false));
+  const Correction joined = corrected(secondCase(p, true));
+  EXPECT_EQ(alone.passesJoined, 0);
+  EXPECT_EQ(joined.passesJoined, 1);
+  EXPECT_EQ(joined.summary.status, SolveStatus::Converged);
+  EXPECT_NE(joined.verdict.find("identified from this face and the 1 earlier pass's face together"), std::string::npos)
+      << joined.verdict;
+  const double leftAlone = rms(groundOnMachine(p, alone.axes)), leftJoined = rms(groundOnMachine(p, joined.axes));
+  EXPECT_GT(leftAlone, 1.0);
+  EXPECT_LT(leftJoined, 0.1);
+  EXPECT_LE(leftJoined, joined.predictedRmsHigh);
+}
+
+// The same second pass with a first face the machine's error did not grind (another error's):
+// no one error explains both, so the face's own estimate stands and the verdict says why.
+TEST(PassHistory, AHistoryNoErrorExplainsIsNotJoined) {
+  const Passes p = twoPasses(206);
+  AxisPolynomials other = p.s.error;
+  for (Axis a : kAxes)
+    for (double& v : other[a].a) v *= 0.5;
+  auto f = simulateGroundFace(p.job.setup, plusError(p.firstRun, other), p.job.grid, Sensitivities::Skip);
+  ASSERT_TRUE(f.ok());
+  const Eigen::MatrixXd notThisMachine = topographyOf(*f).normal;
+  const Correction c = corrected(secondCase(p, true, &notThisMachine));
+  const Correction alone = corrected(secondCase(p, false));
+  EXPECT_EQ(c.passesJoined, 0);
+  EXPECT_NE(c.verdict.find("No one machine error explains this face and the 1 earlier pass's face to the probe noise ("), std::string::npos)
+      << c.verdict;
+  for (Axis a : kAxes)
+    for (size_t k = 0; k < c.axes[a].a.size(); ++k) EXPECT_EQ(c.axes[a].a[k], alone.axes[a].a[k]);
+}
+
+// Where the wheel is corrected, a dressing may have changed the wheel between passes: the earlier
+// faces were ground with another wheel, and the history is not used.
+TEST(PassHistory, NotUsedWhereTheWheelMayHaveChanged) {
+  const Passes p = twoPasses(206);
+  CaseInput c = secondCase(p, true);
+  EXPECT_EQ(resolveJob(c)->history.passes.size(), 1u);
+  c.correction.wheel = true;
+  EXPECT_TRUE(resolveJob(c)->history.empty());
+  c.correction.wheel.reset();
+  c.passes[0].correction = CorrectionInput{};
+  c.passes[0].correction->wheel = true;
+  EXPECT_TRUE(resolveJob(c)->history.empty());
+  // A pass measured at the measuring machine's own points is not on the grid: not used either.
+  c = secondCase(p, true);
+  c.passes[0].measured.resize(0, 0);
+  c.passes[0].measuredPoints = std::vector<MeasuredPoint>{};
+  EXPECT_TRUE(passHistory(c.passes, p.job.nominalAxes, false).empty());
+}
+
+}  // namespace
+}  // namespace hobsharp::validation
