@@ -31,6 +31,29 @@ GroundFace slice(const GroundFace& all, int from, int n) {
   return f;
 }
 
+// m's estimate from an identification whose last n points, from `at`, are the face measured now
+// (all of them with one face): E = e0 + the identified value, the face, what it explains and the
+// Jacobian there, the covariance, the directions decided and the summary.
+void keep(MachineErrorEstimate& m, Identification&& id, const Eigen::VectorXd& e0, const Eigen::MatrixXd& measured,
+          int at) {
+  const std::vector<Coefficient>& cs = m.space.coefficients;
+  const int n = static_cast<int>(measured.size());
+  m.coefficientError = e0 + id.value[0];
+  for (Axis a : kAxes) std::fill(m.error[a].a.begin(), m.error[a].a.end(), 0.0);
+  for (size_t j = 0; j < cs.size(); ++j) m.error[cs[j].axis].a[cs[j].degree] = m.coefficientError(static_cast<int>(j));
+  m.explained = gridOf(id.explained.segment(at, n), static_cast<int>(measured.rows()), static_cast<int>(measured.cols()));
+  m.unexplained = measured - m.explained;
+  m.jacobian = id.jacobian[0].middleRows(at, n);
+  m.covariancePerNoise = id.covariancePerNoise(0);
+  const BlockDirections& decided = id.blocks[0];
+  m.singularValues = decided.singularValues;
+  m.used = decided.decision.used;
+  m.withinNoise = decided.decision.withinNoise;
+  m.amplifying = decided.decision.amplifying;
+  m.summary = id.summary;
+  m.face = at == 0 && id.face.size() == n ? std::move(id.face) : slice(id.face, at, n);
+}
+
 std::string passesWord(int n) { return std::to_string(n) + (n == 1 ? " earlier pass" : " earlier passes"); }
 // "the 1 earlier pass's face", "the 2 earlier passes' faces"
 std::string facesWord(int n) { return "the " + passesWord(n) + (n == 1 ? "'s face" : "' faces"); }
@@ -123,22 +146,8 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
                     ": identified from this face alone (has the machine or the setup changed?).";
     return;
   }
-  Identification id = std::move(found).value();
-  const int n = runFace.size(), at = from.back();
-  m.coefficientError = e0 + id.value[0];
-  for (int j = 0; j < q; ++j) m.error[cs[j].axis].a[cs[j].degree] = m.coefficientError(j);
-  m.face = slice(id.face, at, n);
-  m.explained = gridOf(id.explained.segment(at, n), runFace.rows(), runFace.cols());
-  m.unexplained = measured - m.explained;
-  m.jacobian = id.jacobian[0].middleRows(at, n);
-  m.historyJacobian = id.jacobian[0];
-  m.covariancePerNoise = id.covariancePerNoise(0);
-  const BlockDirections& decided = id.blocks[0];
-  m.singularValues = decided.singularValues;
-  m.used = decided.decision.used;
-  m.withinNoise = decided.decision.withinNoise;
-  m.amplifying = decided.decision.amplifying;
-  m.summary = id.summary;
+  m.historyJacobian = found->jacobian[0];
+  keep(m, std::move(found).value(), e0, measured, from.back());
   m.summary.reason += " Identified from " + these + " together" + left + ".";
   m.passesJoined = earlier;
   // Nothing is left out by construction: the faces decide every direction.
@@ -190,22 +199,8 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
       [&](const GroundFace& f, int) { return sensitivityMatrix(f, cs).normal; }};
   auto found = identify(model, runFace, flat(measured), {axes}, o, {"the axes", "no identified axis direction"});
   if (!found) return found.error();
-  Identification id = std::move(found).value();
-  const BlockDirections& decided = id.blocks[0];
-  m.singularValues = decided.singularValues;
-  m.used = decided.decision.used;
-  m.withinNoise = decided.decision.withinNoise;
-  m.amplifying = decided.decision.amplifying;
-  m.coefficientError = id.value[0];
   m.error = run;
-  for (Axis a : kAxes) std::fill(m.error[a].a.begin(), m.error[a].a.end(), 0.0);
-  for (int j = 0; j < q; ++j) m.error[cs[j].axis].a[cs[j].degree] = m.coefficientError(j);
-  m.explained = gridOf(id.explained, rows, cols);
-  m.unexplained = measured - m.explained;
-  m.jacobian = std::move(id.jacobian[0]);
-  m.covariancePerNoise = id.covariancePerNoise(0);
-  m.face = std::move(id.face);
-  m.summary = id.summary;
+  keep(m, std::move(found).value(), Eigen::VectorXd::Zero(q), measured, 0);
   if (history && !history->empty() && !runFace.atProbes()) joinHistory(m, setup, run, runFace, measured, o, *history);
   return m;
 }
