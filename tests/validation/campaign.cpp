@@ -158,7 +158,7 @@ nlohmann::json toJson(const Campaign& c) {
     for (const PassOutcome& p : o.passes) {
       nlohmann::json q = {{"refused", p.refused}, {"measuredRms", p.measuredRms}, {"probeRms", p.probeRms},
                           {"denseRms", p.denseRms}, {"denseRmsRounded", p.denseRmsRounded},
-                          {"predictedRms", p.predictedRms}, {"predictedRmsHigh", p.predictedRmsHigh},
+                          {"predictedRms", p.predictedRms}, {"predictedRmsHigh", p.predictedRmsHigh}, {"predictedUnseenPart", p.predictedUnseenPart},
                           {"status", p.status}, {"verdict", p.verdict}, {"rank", p.rank},
                           {"withinNoise", p.withinNoise}, {"amplifying", p.amplifying}, {"iterations", p.iterations},
                           {"linearisedAtNominal", p.linearisedAtNominal}, {"passesJoined", p.passesJoined}, {"stop", p.stopAdvised},

@@ -123,6 +123,7 @@ ScenarioOutcome runScenario(const Scenario& s) {
     p.verdict = k.verdict;
     p.predictedRms = k.predictedRms;
     p.predictedRmsHigh = k.predictedRmsHigh;
+    p.predictedUnseenPart = k.predictedUnseenPart;
     p.stopAdvised = k.stop;
     p.linearisedAtNominal = k.linearisedAtNominal;
     p.passesJoined = k.passesJoined;
