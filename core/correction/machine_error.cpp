@@ -136,7 +136,9 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
       [&](const GroundFace& f, int) { return sensitivityMatrix(f, cs).normal; }};
   // Every free coefficient, each a machine step: the directions are decided by the faces.
   const ParameterBlock all{m.space.step.asDiagonal() * Eigen::MatrixXd::Identity(q, q), Wild::TakenWhenNeeded};
-  auto found = identify(model, stacked(faces), d, {all}, o, {"the axes", "no axis direction"});
+  CorrectionOptions withHistory = o;
+  withHistory.solver.maxIterations = o.solver.maxIterationsWithHistory;
+  auto found = identify(model, stacked(faces), d, {all}, withHistory, {"the axes", "no axis direction"});
   const std::string these = "this face and " + facesWord(earlier);
   if (!found || found->summary.status != SolveStatus::Converged) {
     std::ostringstream misfit;

@@ -53,8 +53,9 @@ TEST(Validation, CampaignTargets) {
   // (docs/validation.md): 25/33 of the 95 %, and 27/33 with the rounded axes of its 90 %.
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[0].share(), 24.0 / 33 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[1].share(), 26.0 / 33 - 1e-9);
-  // Two passes at 150 µm: 30/34 (was 16/34 before the second pass used the first pass's face).
-  EXPECT_GE(classOf(ScenarioClass::Large).targets[0].share(), 29.0 / 34 - 1e-9);
+  // Two passes at 150 µm: 31/34 here (16/34 before the second pass used the first pass's face);
+  // 84/99 on the whole run, short of the 90 % asked.
+  EXPECT_GE(classOf(ScenarioClass::Large).targets[0].share(), 30.0 / 34 - 1e-9);
   std::printf("%s", tableText(campaign()).c_str());
 }
 
