@@ -86,12 +86,15 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
     const double m = subset ? kUnseenPoints : n;
     const Eigen::MatrixXd Sall = sensitivityMatrix(runFace, cs).normal;
     const Eigen::MatrixXd S = (subset ? rowsOf(Sall, at) : Sall) * w.cwiseInverse().asDiagonal();
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeThinU | Eigen::ComputeFullV);
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeFullV);
     const Eigen::VectorXd s = svd.singularValues();
     std::vector<int> unseen, seen;
     for (int i = 0; i < q; ++i) (i >= s.size() || s(i) <= kUnseenShare * s(0) ? unseen : seen).push_back(i);
-    Eigen::MatrixXd U(S.rows(), static_cast<int>(seen.size()));  // the face directions the axes make
-    for (size_t i = 0; i < seen.size(); ++i) U.col(static_cast<int>(i)) = svd.matrixU().col(seen[i]);
+    // The face directions the axes make: the left singular vectors u_i = S v_i / s_i (S = U S V^T),
+    // formed for the seen directions only (s_i above 1e-4 s_0) instead of all of U by the SVD.
+    Eigen::MatrixXd U(S.rows(), static_cast<int>(seen.size()));
+    for (size_t i = 0; i < seen.size(); ++i)
+      U.col(static_cast<int>(i)).noalias() = S * svd.matrixV().col(seen[i]) / s(seen[i]);
     if (size > 0 && !unseen.empty()) {
       Eigen::MatrixXd N(q, static_cast<int>(unseen.size()));
       for (size_t i = 0; i < unseen.size(); ++i) N.col(static_cast<int>(i)) = svd.matrixV().col(unseen[i]);
