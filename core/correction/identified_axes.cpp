@@ -239,43 +239,64 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
   Eigen::MatrixXd pair = Eigen::MatrixXd::Zero(kAxisCount, kAxisCount);
   const MotionSamples samples = motionSamples(cs, min, max);
   // The curves at a sample as functionals of the coefficients in machine steps, G (q x 5: column a
-  // gives axis a's error there in µm or µrad), have one entry a row: axis a's column holds c_j p_j
-  // for its own coefficients j (c_j the machine step in µm or µrad, p_j the sample's power w^d_j).
-  // So W^T G's column a is (W's rows at a's coefficients, scaled by c)^T p, and N^T G's likewise:
-  // the same sums as the whole products less their terms in G's zeros, the rows scaled once here.
-  std::array<Eigen::MatrixXd, kAxisCount> Wc, Nc;
-  std::array<Eigen::VectorXd, kAxisCount> scale, power, ga;  // per axis, over its coefficients: c, p, c p
+  // gives axis a's error there in µm or µrad), have one entry a row: axis a's column is c_a o p_a
+  // over its own coefficients (c the machine steps in µm or µrad, p the sample's powers w^d). So
+  // every figure at a sample is a quadratic form in the powers, its matrix formed once here:
+  //   the covariance C = G^T W W^T G:  C(a, b) = p_a^T (Wc_a Wc_b^T) p_b, Wc_a = diag(c_a) W's rows at a;
+  //   |N^T g_a|² = p_a^T (Nc_a Nc_a^T) p_a, likewise; |ownN_a^T g_a|², |ownW_a^T g_a|² with diag(c_a).
+  std::array<Eigen::VectorXd, kAxisCount> scale, power;  // per axis, over its coefficients: c, p
+  std::array<Eigen::MatrixXd, kAxisCount> Wc, unseenGram, ownUnseenGram, ownGram;
   for (int i = 0; i < kAxisCount; ++i) {
     const int n = static_cast<int>(block[i].size());
+    Eigen::MatrixXd Nc(n, N.cols());
     Wc[i].resize(n, W.cols());
-    Nc[i].resize(n, N.cols());
     scale[i].resize(n);
     power[i].resize(n);
-    ga[i].resize(n);
     for (int k = 0; k < n; ++k) {
       const int j = block[i][static_cast<size_t>(k)];
       scale[i](k) = step(j) * displayFactor(cs[static_cast<size_t>(j)].axis);
       Wc[i].row(k) = W.row(j) * scale[i](k);
-      Nc[i].row(k) = N.row(j) * scale[i](k);
+      Nc.row(k) = N.row(j) * scale[i](k);
     }
+    unseenGram[i] = Nc * Nc.transpose();
+    const auto scaled = [&](const Eigen::MatrixXd& V) -> Eigen::MatrixXd {
+      if (V.rows() != n || V.cols() == 0) return Eigen::MatrixXd::Zero(n, n);
+      const Eigen::MatrixXd cV = scale[i].asDiagonal() * V;
+      return cV * cV.transpose();
+    };
+    ownUnseenGram[i] = scaled(ownN[i]);
+    ownGram[i] = scaled(ownW[i]);
   }
-  Eigen::MatrixXd T(W.cols(), kAxisCount), C(kAxisCount, kAxisCount);
+  std::array<std::array<Eigen::MatrixXd, kAxisCount>, kAxisCount> gram;  // Wc_a Wc_b^T, a <= b
+  for (int i = 0; i < kAxisCount; ++i)
+    for (int k = i; k < kAxisCount; ++k) gram[i][k] = Wc[i] * Wc[k].transpose();
+  // a^T M b over small vectors, without temporaries.
+  const auto form = [](const Eigen::MatrixXd& M, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    double sum = 0;
+    for (Eigen::Index r = 0; r < M.rows(); ++r) {
+      double row = 0;
+      for (Eigen::Index c = 0; c < M.cols(); ++c) row += M(r, c) * b(c);
+      sum += a(r) * row;
+    }
+    return sum;
+  };
+  Eigen::MatrixXd C(kAxisCount, kAxisCount);
   for (int sample = 0; sample < kSamples; ++sample) {
-    for (int i = 0; i < kAxisCount; ++i) {
+    for (int i = 0; i < kAxisCount; ++i)
       for (int k = 0; k < power[i].size(); ++k)
         power[i](k) = samples.power(sample, cs[static_cast<size_t>(block[i][static_cast<size_t>(k)])].degree);
-      ga[i] = scale[i].cwiseProduct(power[i]);  // axis i's curve at the sample: G's column i
-      T.col(i).noalias() = Wc[i].transpose() * power[i];
-    }
-    C.noalias() = T.transpose() * T;  // the curves' covariance at the sample, per unit noise variance
+    // the curves' covariance at the sample, per unit noise variance
+    for (int i = 0; i < kAxisCount; ++i)
+      for (int k = i; k < kAxisCount; ++k) C(i, k) = C(k, i) = form(gram[i][k], power[i], power[k]);
     for (int i = 0; i < kAxisCount; ++i) {
       if (!seen[static_cast<size_t>(i)]) continue;
-      const double g = ga[i].norm();
+      const double g = scale[i].cwiseProduct(power[i]).norm();  // |G's column i|
       if (!(g > 0)) continue;
+      const double leak2 = kLeak * g * kLeak * g;
       spread[i] = std::max(spread[i], std::sqrt(std::max(0.0, C(i, i))));
-      if (N.cols() > 0 && (Nc[i].transpose() * power[i]).norm() > kLeak * g) leaks[i] = true;
-      if (ownN[i].cols() > 0 && (ownN[i].transpose() * ga[i]).norm() > kLeak * g) leaks[i] = true;
-      const double conditional = (ownW[i].transpose() * ga[i]).squaredNorm();
+      if (form(unseenGram[i], power[i], power[i]) > leak2) leaks[i] = true;
+      if (ownN[i].cols() > 0 && form(ownUnseenGram[i], power[i], power[i]) > leak2) leaks[i] = true;
+      const double conditional = form(ownGram[i], power[i], power[i]);
       if (C(i, i) > 0) correlation[i] = std::max(correlation[i], std::sqrt(std::max(0.0, 1 - conditional / C(i, i))));
       for (int k = i + 1; k < kAxisCount; ++k)
         if (C(i, i) > 0 && C(k, k) > 0)
