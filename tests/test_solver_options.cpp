@@ -92,6 +92,32 @@ TEST(SolverOptions, AFirstOrderStartFromANearbyFaceEndsWhereTheColdStartDoes) {
   EXPECT_LT(nearJacobians, coldJacobians);
 }
 
+// On a grid simulateGroundFaceLike simulates afresh by default (the identification's figures rest
+// on the cold start's last bits), and with FaceStart::Near starts each point from the nearby
+// face's solution (the prediction's bound): the same face to within the solver's tolerance, with
+// fewer Jacobians, and the default the same to the bit as simulating the face.
+TEST(SolverOptions, AGridFaceStartsFromANearbyFaceOnlyWhenAsked) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials run = runWithError(job.nominalAxes);
+  auto nominal = simulateGroundFace(job.setup, job.nominalAxes, job.grid, Sensitivities::Skip);
+  auto cold = simulateGroundFace(job.setup, run, job.grid, Sensitivities::Skip);
+  auto asSimulated = simulateGroundFaceLike(*nominal, job.setup, run, Sensitivities::Skip);
+  auto near = simulateGroundFaceLike(*nominal, job.setup, run, Sensitivities::Skip, FaceStart::Near);
+  ASSERT_TRUE(nominal.ok() && cold.ok() && asSimulated.ok() && near.ok());
+  ASSERT_EQ(near->size(), cold->size());
+  int nearJacobians = 0, coldJacobians = 0;
+  for (int k = 0; k < cold->size(); ++k) {
+    const EnvelopePoint &c = cold->envelope[static_cast<size_t>(k)], &n = near->envelope[static_cast<size_t>(k)];
+    EXPECT_EQ(asSimulated->envelope[static_cast<size_t>(k)].t, c.t) << "grid point " << k;
+    EXPECT_LT(std::abs(n.t - c.t), 1e-12) << "grid point " << k;  // mm
+    EXPECT_NE(n.jacobians, 0) << "grid point " << k;
+    nearJacobians += n.jacobians;
+    coldJacobians += c.jacobians;
+  }
+  EXPECT_LT(std::abs(near->meanEnvelope.t - cold->meanEnvelope.t), 1e-12);
+  EXPECT_LT(nearJacobians, coldJacobians);
+}
+
 TEST(SolverOptions, EnvelopeIterationLimitAndStepLimitsAreHonoured) {
   const SharpeningJob job = jobOf(paperCase());
   const AxisPolynomials run = runWithError(job.nominalAxes);

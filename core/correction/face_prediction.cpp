@@ -93,12 +93,15 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
     const double m = subset ? kUnseenPoints : n;
     const Eigen::MatrixXd Sall = sensitivityMatrix(runFace, cs).normal;
     const Eigen::MatrixXd S = (subset ? rowsOf(Sall, at) : Sall) * w.cwiseInverse().asDiagonal();
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeThinU | Eigen::ComputeFullV);
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeFullV);
     const Eigen::VectorXd s = svd.singularValues();
     std::vector<int> unseen, seen;
     for (int i = 0; i < q; ++i) (i >= s.size() || s(i) <= kUnseenShare * s(0) ? unseen : seen).push_back(i);
-    Eigen::MatrixXd U(S.rows(), static_cast<int>(seen.size()));  // the face directions the axes make
-    for (size_t i = 0; i < seen.size(); ++i) U.col(static_cast<int>(i)) = svd.matrixU().col(seen[i]);
+    // The face directions the axes make: the left singular vectors u_i = S v_i / s_i (S = U S V^T),
+    // formed for the seen directions only (s_i above 1e-4 s_0) instead of all of U by the SVD.
+    Eigen::MatrixXd U(S.rows(), static_cast<int>(seen.size()));
+    for (size_t i = 0; i < seen.size(); ++i)
+      U.col(static_cast<int>(i)).noalias() = S * svd.matrixV().col(seen[i]) / s(seen[i]);
     // What none of the faces identified from shows: those of the history too, when given.
     std::optional<Eigen::JacobiSVD<Eigen::MatrixXd>> all;
     if (shownBy && shownBy->cols() == q) {
@@ -129,8 +132,11 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
         Eigen::VectorXd d(q);
         for (int j = 0; j < q; ++j) d(j) = g() * size;
         const Eigen::VectorXd dc = (N * (N.transpose() * d)).cwiseQuotient(w);  // what the face cannot show
-        auto after = simulateGroundFaceLike(like, passSetup, plusChange(actual, cs, dc), Sensitivities::Skip);
-        auto before = simulateGroundFaceLike(like, measuredSetup, plusChange(measuredAt, cs, dc), Sensitivities::Skip);
+        // Started from the run face's solutions on a grid too: the bound is a figure, no decision
+        // rests on its last bits.
+        auto after = simulateGroundFaceLike(like, passSetup, plusChange(actual, cs, dc), Sensitivities::Skip, FaceStart::Near);
+        auto before = simulateGroundFaceLike(like, measuredSetup, plusChange(measuredAt, cs, dc), Sensitivities::Skip,
+                                             FaceStart::Near);
         if (!after || !before) {
           worst = std::max(worst, std::sqrt(afterSquares / n) + size * 1e3);  // cannot say: as large as the error
           continue;

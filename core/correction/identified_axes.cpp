@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <sstream>
 
@@ -50,17 +51,6 @@ MotionSamples motionSamples(const std::vector<Coefficient>& cs, double min, doub
   }
   m.mean = m.power.colwise().mean();
   return m;
-}
-
-// The curves' values at sample i as functionals of the coefficients in machine steps (q x 5):
-// column a gives axis a's error there in µm or µrad. G is q x 5, set to zero elsewhere.
-void curvesAt(const std::vector<Coefficient>& cs, const Eigen::VectorXd& step, const MotionSamples& m, int i,
-              Eigen::MatrixXd& G) {
-  G.setZero();
-  for (size_t j = 0; j < cs.size(); ++j) {
-    const int J = static_cast<int>(j);
-    G(J, static_cast<int>(cs[j].axis)) = m.power(i, cs[j].degree) * step(J) * displayFactor(cs[j].axis);
-  }
 }
 
 // A least-squares fit over some columns, in machine steps: its solution and covariance per unit
@@ -248,22 +238,65 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
   std::array<double, kAxisCount> spread{}, correlation{};
   Eigen::MatrixXd pair = Eigen::MatrixXd::Zero(kAxisCount, kAxisCount);
   const MotionSamples samples = motionSamples(cs, min, max);
-  Eigen::MatrixXd G(q, kAxisCount), T(W.cols(), kAxisCount), C(kAxisCount, kAxisCount), L(N.cols(), kAxisCount);
+  // The curves at a sample as functionals of the coefficients in machine steps, G (q x 5: column a
+  // gives axis a's error there in µm or µrad), have one entry a row: axis a's column is c_a o p_a
+  // over its own coefficients (c the machine steps in µm or µrad, p the sample's powers w^d). So
+  // every figure at a sample is a quadratic form in the powers, its matrix formed once here:
+  //   the covariance C = G^T W W^T G:  C(a, b) = p_a^T (Wc_a Wc_b^T) p_b, Wc_a = diag(c_a) W's rows at a;
+  //   |N^T g_a|² = p_a^T (Nc_a Nc_a^T) p_a, likewise; |ownN_a^T g_a|², |ownW_a^T g_a|² with diag(c_a).
+  std::array<Eigen::VectorXd, kAxisCount> scale, power;  // per axis, over its coefficients: c, p
+  std::array<Eigen::MatrixXd, kAxisCount> Wc, unseenGram, ownUnseenGram, ownGram;
+  for (int i = 0; i < kAxisCount; ++i) {
+    const int n = static_cast<int>(block[i].size());
+    Eigen::MatrixXd Nc(n, N.cols());
+    Wc[i].resize(n, W.cols());
+    scale[i].resize(n);
+    power[i].resize(n);
+    for (int k = 0; k < n; ++k) {
+      const int j = block[i][static_cast<size_t>(k)];
+      scale[i](k) = step(j) * displayFactor(cs[static_cast<size_t>(j)].axis);
+      Wc[i].row(k) = W.row(j) * scale[i](k);
+      Nc.row(k) = N.row(j) * scale[i](k);
+    }
+    unseenGram[i] = Nc * Nc.transpose();
+    const auto scaled = [&](const Eigen::MatrixXd& V) -> Eigen::MatrixXd {
+      if (V.rows() != n || V.cols() == 0) return Eigen::MatrixXd::Zero(n, n);
+      const Eigen::MatrixXd cV = scale[i].asDiagonal() * V;
+      return cV * cV.transpose();
+    };
+    ownUnseenGram[i] = scaled(ownN[i]);
+    ownGram[i] = scaled(ownW[i]);
+  }
+  std::array<std::array<Eigen::MatrixXd, kAxisCount>, kAxisCount> gram;  // Wc_a Wc_b^T, a <= b
+  for (int i = 0; i < kAxisCount; ++i)
+    for (int k = i; k < kAxisCount; ++k) gram[i][k] = Wc[i] * Wc[k].transpose();
+  // a^T M b over small vectors, without temporaries.
+  const auto form = [](const Eigen::MatrixXd& M, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+    double sum = 0;
+    for (Eigen::Index r = 0; r < M.rows(); ++r) {
+      double row = 0;
+      for (Eigen::Index c = 0; c < M.cols(); ++c) row += M(r, c) * b(c);
+      sum += a(r) * row;
+    }
+    return sum;
+  };
+  Eigen::MatrixXd C(kAxisCount, kAxisCount);
   for (int sample = 0; sample < kSamples; ++sample) {
-    curvesAt(cs, step, samples, sample, G);
-    T.noalias() = W.transpose() * G;
-    C.noalias() = T.transpose() * T;  // the curves' covariance at the sample, per unit noise variance
-    L.noalias() = N.transpose() * G;
+    for (int i = 0; i < kAxisCount; ++i)
+      for (int k = 0; k < power[i].size(); ++k)
+        power[i](k) = samples.power(sample, cs[static_cast<size_t>(block[i][static_cast<size_t>(k)])].degree);
+    // the curves' covariance at the sample, per unit noise variance
+    for (int i = 0; i < kAxisCount; ++i)
+      for (int k = i; k < kAxisCount; ++k) C(i, k) = C(k, i) = form(gram[i][k], power[i], power[k]);
     for (int i = 0; i < kAxisCount; ++i) {
       if (!seen[static_cast<size_t>(i)]) continue;
-      const double g = G.col(i).norm();
+      const double g = scale[i].cwiseProduct(power[i]).norm();  // |G's column i|
       if (!(g > 0)) continue;
+      const double leak2 = kLeak * g * kLeak * g;
       spread[i] = std::max(spread[i], std::sqrt(std::max(0.0, C(i, i))));
-      if (L.col(i).norm() > kLeak * g) leaks[i] = true;
-      Eigen::VectorXd ga(static_cast<int>(block[i].size()));
-      for (size_t k = 0; k < block[i].size(); ++k) ga(static_cast<int>(k)) = G(block[i][k], i);
-      if (ownN[i].cols() > 0 && (ownN[i].transpose() * ga).norm() > kLeak * g) leaks[i] = true;
-      const double conditional = (ownW[i].transpose() * ga).squaredNorm();
+      if (form(unseenGram[i], power[i], power[i]) > leak2) leaks[i] = true;
+      if (ownN[i].cols() > 0 && form(ownUnseenGram[i], power[i], power[i]) > leak2) leaks[i] = true;
+      const double conditional = form(ownGram[i], power[i], power[i]);
       if (C(i, i) > 0) correlation[i] = std::max(correlation[i], std::sqrt(std::max(0.0, 1 - conditional / C(i, i))));
       for (int k = i + 1; k < kAxisCount; ++k)
         if (C(i, i) > 0 && C(k, k) > 0)
@@ -331,6 +364,15 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
   // axes read alone fitted with it). The members grind alike, so the noise may choose between them:
   // the sentence names every member that alone grinds it as well to within the noise, each with the
   // value it would take (a linear fit each, so each value's spread is the noise's).
+  // The fits below repeat their columns (with one group, each member's fit is made for the choice
+  // of the representative, for the joint fit and again for the member's value): each set of
+  // columns is fitted once, here, and its fit kept for this call.
+  std::map<std::vector<int>, Fit> fits;
+  const auto fitOf = [&](const std::vector<int>& columns) -> const Fit& {
+    auto it = fits.find(columns);
+    if (it == fits.end()) it = fits.emplace(columns, fitColumns(A, y, columns, s0)).first;
+    return it->second;
+  };
   std::vector<int> representative;
   for (const std::vector<int>& g : groups) {
     int best = g[0];
@@ -338,14 +380,14 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
     for (int m : g) {
       std::vector<int> members = aloneColumns;
       members.insert(members.end(), block[m].begin(), block[m].end());
-      const double misfit = fitColumns(A, y, members, s0).misfit;
+      const double misfit = fitOf(members).misfit;
       if (m == g[0] || misfit < bestMisfit) best = m, bestMisfit = misfit;
     }
     representative.push_back(best);
   }
   std::vector<int> columns = aloneColumns;
   for (int r : representative) columns.insert(columns.end(), block[r].begin(), block[r].end());
-  const Fit joint = fitColumns(A, y, columns, s0);
+  const Fit& joint = fitOf(columns);
   for (Axis a : kAxes) {
     AxisIdentification& x = out.axes[static_cast<int>(a)];
     if (x.reading != AxisReading::Alone) continue;
@@ -375,7 +417,7 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
       for (size_t h = 0; h < representative.size(); ++h)
         if (h != gi) members.insert(members.end(), block[representative[h]].begin(), block[representative[h]].end());
       members.insert(members.end(), block[m].begin(), block[m].end());
-      const Fit f = fitColumns(A, y, members, s0);
+      const Fit& f = fitOf(members);
       const CurveFigures mc = curveOf(f, member, cs, step, samples);
       combination.aloneValue.push_back(mc.value);
       combination.alonePerNoise.push_back(mc.perNoise);

@@ -98,11 +98,15 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
 }
 
 Outcome<GroundFace> simulateGroundFaceLike(const GroundFace& like, const SharpeningSetup& setup,
-                                           const AxisPolynomials& axes, Sensitivities sensitivities) {
-  if (!like.atProbes()) return simulateGroundFace(setup, axes, like.grid, sensitivities);
-  // At probe points each solve starts from `like`'s solution at the same point, moved to first
-  // order (solveEnvelopePointNear): axes that differ by a correction move the envelope point
-  // little, so Newton's method needs a few steps, and no contact line is solved for.
+                                           const AxisPolynomials& axes, Sensitivities sensitivities, FaceStart start) {
+  const auto fresh = [&] {
+    return like.atProbes() ? simulateGroundFace(setup, axes, like.probes, like.grid, sensitivities)
+                           : simulateGroundFace(setup, axes, like.grid, sensitivities);
+  };
+  if (!like.atProbes() && start == FaceStart::AsSimulated) return fresh();
+  // Each solve starts from `like`'s solution at the same point, moved to first order
+  // (solveEnvelopePointNear): axes that differ by a correction move the envelope point little, so
+  // Newton's method needs a few steps, and no contact line is solved for.
   GroundFace f;
   f.gash = like.gash;
   f.grid = like.grid;
@@ -110,18 +114,13 @@ Outcome<GroundFace> simulateGroundFaceLike(const GroundFace& like, const Sharpen
   f.points = like.points;
   f.envelope.reserve(like.envelope.size());
   for (std::size_t k = 0; k < like.points.size(); ++k) {
-    const EnvelopePoint& from = like.envelope[k];
-    auto e = solveEnvelopePointNear(setup, axes, like.points[k], from, sensitivities);
-    if (!e) {  // too far for the warm start: from the nominal motion, as the first simulation did
-      auto fresh = simulateGroundFace(setup, axes, like.probes, like.grid, sensitivities);
-      return fresh;
-    }
+    auto e = solveEnvelopePointNear(setup, axes, like.points[k], like.envelope[k], sensitivities);
+    if (!e) return fresh();  // too far for the warm start: from the nominal motion, as the first simulation did
     f.envelope.push_back(*e);
   }
   f.meanPoint = like.meanPoint;
-  const EnvelopePoint& m = like.meanEnvelope;
-  auto e = solveEnvelopePointNear(setup, axes, f.meanPoint, m, sensitivities);
-  if (!e) return simulateGroundFace(setup, axes, like.probes, like.grid, sensitivities);
+  auto e = solveEnvelopePointNear(setup, axes, f.meanPoint, like.meanEnvelope, sensitivities);
+  if (!e) return fresh();
   f.meanEnvelope = *e;
   return f;
 }

@@ -50,10 +50,19 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
                                        Sensitivities sensitivities = Sensitivities::Compute,
                                        const EnvelopeSolverOptions& options = {});
 
+// Where simulateGroundFaceLike starts each point's solve. At probe points always from `like`'s
+// solution at the point, moved to first order (solveEnvelopePointNear). On a grid, by default as
+// the first simulation did (from the row's neighbour): the same figures as simulating the face
+// afresh, which the identification's decisions (a step taken, convergence) rest on, as they turn on
+// the last bits; with FaceStart::Near from `like`'s solutions, as at probe points (the same
+// solutions to within the solver's tolerance, in fewer Newton steps: the prediction's bound).
+enum class FaceStart { AsSimulated, Near };
+
 // The face ground with `axes` at the points `like` was simulated at (its grid, or its probes).
 Outcome<GroundFace> simulateGroundFaceLike(const GroundFace& like, const SharpeningSetup& setup,
                                            const AxisPolynomials& axes,
-                                           Sensitivities sensitivities = Sensitivities::Compute);
+                                           Sensitivities sensitivities = Sensitivities::Compute,
+                                           FaceStart start = FaceStart::AsSimulated);
 
 // Gives a face simulated with Sensitivities::Skip its sensitivities at the same solutions, in
 // place: equal to simulating it with Sensitivities::Compute (the identification's trial steps need
