@@ -154,5 +154,19 @@ TEST(PassHistory, AJointSolveOutOfStepsIsNotCalledAHistoryNoErrorExplains) {
       << m->historyNote;
 }
 
+// A second pass whose axes alone grind no face the wheel envelops (linearised at the nominal
+// axes): identified from the nominal axes, the first pass's axes move as the run's do (by nominal
+// - run; measured_face_correction.cpp). The campaign's scenario 110 (150 µm rms): joined, and the
+// face left is below 0.1 µm. With the shift's sign turned, it is not joined and leaves 3.2 µm.
+TEST(PassHistory, JoinedWhereTheRunIsLinearisedAtTheNominalAxes) {
+  auto s = makeScenario(kSeed, 110);
+  ASSERT_TRUE(s.ok());
+  const ScenarioOutcome o = runScenario(*s);
+  ASSERT_GE(o.passes.size(), 2u);
+  EXPECT_TRUE(o.passes[1].linearisedAtNominal);
+  EXPECT_EQ(o.passes[1].passesJoined, 1) << o.passes[1].verdict;
+  EXPECT_LT(o.passes[1].denseRms, 0.1);
+}
+
 }  // namespace
 }  // namespace hobsharp::validation
