@@ -141,11 +141,24 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
   auto found = identify(model, stacked(faces), d, {all}, withHistory, {"the axes", "no axis direction"});
   const std::string these = "this face and " + facesWord(earlier);
   if (!found || found->summary.status != SolveStatus::Converged) {
+    // Only a solve that ended above the noise shows that no one error explains the faces; one that
+    // ran out of iterations or stalled may have explained them already (a misfit within the noise).
     std::ostringstream misfit;
     misfit.precision(2);
     if (found) misfit << " (" << std::sqrt(found->summary.finalCost / static_cast<double>(total)) << " µm rms left)";
-    m.historyNote = "No one machine error explains " + these + " to the probe noise" + misfit.str() + left +
-                    ": identified from this face alone (has the machine or the setup changed?).";
+    const SolveStatus st = found ? found->summary.status : SolveStatus::Failed;
+    if (st == SolveStatus::AboveNoise)
+      m.historyNote = "No one machine error explains " + these + " to the probe noise" + misfit.str() + left +
+                      ": identified from this face alone (has the machine or the setup changed?).";
+    else if (st == SolveStatus::NoConvergence)
+      m.historyNote = "The search for one machine error explaining " + these + " did not converge in " +
+                      std::to_string(withHistory.solver.maxIterations) + " iterations" + misfit.str() + left +
+                      ": identified from this face alone.";
+    else if (st == SolveStatus::Stalled)
+      m.historyNote = "The search for one machine error explaining " + these + " stalled" + misfit.str() + left +
+                      ": identified from this face alone.";
+    else
+      m.historyNote = "One machine error could not be sought over " + these + left + ": identified from this face alone.";
     return;
   }
   m.historyJacobian = found->jacobian[0];
