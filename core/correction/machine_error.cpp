@@ -24,6 +24,7 @@ GroundFace stacked(const std::vector<GroundFace>& faces) {
   return all;
 }
 
+// (The mean point stays the first face's: nothing reads a slice's thickness.)
 GroundFace slice(const GroundFace& all, int from, int n) {
   GroundFace f = all;
   f.points.assign(all.points.begin() + from, all.points.begin() + from + n);
@@ -162,6 +163,8 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
     return;
   }
   m.historyJacobian = found->jacobian[0];
+  m.historyLinearised = d - found->explained + m.historyJacobian * (e0 + found->value[0]);
+  m.historyLeftOut = left;
   keep(m, std::move(found).value(), e0, measured, from.back());
   m.summary.reason += " Identified from " + these + " together" + left + ".";
   m.passesJoined = earlier;

@@ -47,7 +47,12 @@ struct MachineErrorEstimate {
   // The earlier passes whose faces E explains together with this one (identifyMachineError with a
   // history), and, when there were earlier passes but E is this face's alone, why (a sentence).
   int passesJoined = 0;
-  Eigen::MatrixXd historyJacobian;  // when joined: the sensitivities of every face, at E (points x q)
+  // When joined: the sensitivities of every face at E (all their points x q), and the data E
+  // explains there, linearised: every face's misfit left plus historyJacobian * E (µm). What is
+  // read of each axis (identified_axes.h) rests on all the faces, as E does.
+  Eigen::MatrixXd historyJacobian;
+  Eigen::VectorXd historyLinearised;
+  std::string historyLeftOut;  // when joined: which earlier passes were left out and why, or ""
   std::string historyNote;
 };
 

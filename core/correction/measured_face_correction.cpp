@@ -101,7 +101,9 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   c.linearisedAtNominal = linearisedAt != nullptr;
   Eigen::MatrixXd unexplained;
   std::string historyNote;  // why the earlier passes were not joined (machine_error.h)
-  Eigen::MatrixXd historyJacobian;  // when joined: every face's sensitivities
+  Eigen::MatrixXd historyJacobian;  // when joined: every face's sensitivities, and the data linearised
+  Eigen::VectorXd historyLinearised;
+  std::string historyLeftOut;
   const MotionRange range = motionRange(runFace);
   const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
   // What the face tells of the axes (identified_axes.h): the sensitivities at the identified error,
@@ -116,6 +118,9 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     if (!step) return step.error();
     c = std::move(step).value();
     c.method = CorrectionMethod::Linear;
+    if (history && !history->empty())
+      historyNote = "The linear step (Eq. 17) takes this face alone; the earlier passes' faces are used by the "
+                    "nonlinear method.";
     c.summary.status = SolveStatus::Converged;
     c.summary.reason = "one linear step (Eq. 17).";
     c.summary.iterations = 1;
@@ -168,6 +173,8 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.passesJoined = est.passesJoined;
     historyNote = est.historyNote;
     historyJacobian = est.historyJacobian;
+    historyLinearised = est.historyLinearised;
+    historyLeftOut = est.historyLeftOut;
     unexplained = est.unexplained;
     // nominal - E; a locked coefficient stays as run.
     c.axes = run;
@@ -228,11 +235,14 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   }
   c.resolutionFloor = resolutionFloor(S.normal, o.resolution);
   // The data the identified error explains, linearised at it: the misfit left plus what it makes.
+  // Joined with the pass history: what every face shows (machine_error.h).
+  const bool joined = c.passesJoined > 0 && historyJacobian.rows() == historyLinearised.size();
   const Eigen::VectorXd linearised =
-      sensitivities.cols() == errorCoefficients.size() && sensitivities.rows() == unexplained.size()
+      joined ? historyLinearised
+      : sensitivities.cols() == errorCoefficients.size() && sensitivities.rows() == unexplained.size()
           ? Eigen::VectorXd(flat(unexplained) + sensitivities * errorCoefficients)
           : Eigen::VectorXd();
-  c.identified = identifiedAxes(c.coefficients, steps, sensitivities, alongside, linearised, range.min, range.max,
+  c.identified = identifiedAxes(c.coefficients, steps, joined ? historyJacobian : sensitivities, alongside, linearised, range.min, range.max,
                                 o.probeNoise, o, basis);
   // One quantity: the uncertainty is the change per µm of noise times sigma.
   for (int i = 0; i < kAxisCount; ++i) {
@@ -253,7 +263,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   if (!c.stop && c.passesJoined > 0)
     c.verdict += " The machine's error was identified from this face and the " + std::to_string(c.passesJoined) +
                  (c.passesJoined == 1 ? " earlier pass's face" : " earlier passes' faces") +
-                 " together: one error explains them all to the probe noise.";
+                 " together: one error explains them all to the probe noise" + historyLeftOut + ".";
   else if (!c.stop && !historyNote.empty())
     c.verdict += " " + historyNote;
   if (c.linearisedAtNominal)

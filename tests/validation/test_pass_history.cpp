@@ -2,6 +2,7 @@
 // pass identifies the machine's error from its own face and the first pass's together. Checked on
 // campaign scenarios of the default seed, each pass measured as the campaign measures it (the
 // module as the machine, noise-free, judged on the probe grid).
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -166,6 +167,26 @@ TEST(PassHistory, JoinedWhereTheRunIsLinearisedAtTheNominalAxes) {
   EXPECT_TRUE(o.passes[1].linearisedAtNominal);
   EXPECT_EQ(o.passes[1].passesJoined, 1) << o.passes[1].verdict;
   EXPECT_LT(o.passes[1].denseRms, 0.1);
+}
+
+// What is read of each axis after a joined identification rests on every face, as the error does
+// (review finding: it was read from this face's sensitivities alone, with nothing left out).
+// Scenario 2 (straight gash, 150 µm rms), second pass: one straight-gash face cannot show X, Y
+// or B; the two faces together do, weakly, so every axis is read with the others, none unseen,
+// with the spread the faces give it. Per µm of probe noise, X 14,297 µm, Y 433,901 µm, Z 38 µm,
+// A 340 µrad, B 22,869 µrad; read from this face's rows alone they were 400 to 40 times that
+// (X 5.6e6 µm, Z 1,673 µm).
+TEST(PassHistory, WhatIsReadOfTheAxesRestsOnEveryFace) {
+  const Passes p = twoPasses(2);
+  const Correction joined = corrected(secondCase(p, true));
+  ASSERT_EQ(joined.passesJoined, 1);
+  EXPECT_TRUE(joined.identified.unseen.empty());
+  for (int i = 0; i < kAxisCount; ++i) {
+    EXPECT_EQ(joined.identified.axes[i].reading, AxisReading::Together) << "XYZAB"[i];
+    EXPECT_TRUE(std::isfinite(joined.changePerNoise[i]) && joined.changePerNoise[i] > 0) << "XYZAB"[i];
+  }
+  const std::array<double, kAxisCount> atMost{1e5, 4e6, 200, 3000, 2e5};  // µm or µrad per µm of noise
+  for (int i = 0; i < kAxisCount; ++i) EXPECT_LT(joined.changePerNoise[i], atMost[i]) << "XYZAB"[i];
 }
 
 }  // namespace

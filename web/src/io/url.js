@@ -25,7 +25,7 @@ const without = (c, group, key) => {
 };
 const member = (c, group, key) => (isObject(c[group]) ? c[group][key] : undefined);
 const PARTS = [
-  { words: 'the history of grinding passes', value: (c) => c.passes, drop: (c) => { delete c.passes; } },
+  { words: 'the history of grinding passes (a correction from the link uses the face measured now alone)', value: (c) => c.passes, drop: (c) => { delete c.passes; } },
   { words: 'the measured grid (with its locks)', value: (c) => c.measured,
     drop: (c) => { delete c.measured; if (c.measuredPoints === undefined) delete c.correction; } },
   { words: 'the per-gash topographies', value: (c) => member(c, 'inspection', 'gashTopographies'),
