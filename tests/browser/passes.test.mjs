@@ -133,6 +133,7 @@ test('measure, correct, use as next run, measure again; the history is saved and
   assert.equal(await page.isDisabled('#next-run'), false);
   // The kept pass's face is in the identification too (docs/method.md §Correction from the pass history).
   assert.match(await page.textContent('#verdict'), /The machine's error was identified from this face and the 1 earlier pass's face together: one error explains them all to the probe noise\./);
+  await page.locator('#verdict').screenshot({ path: path.join(shots, 'passes-history-verdict.png') });
 
   // Kept again: two passes in the history; the case and the link hold them.
   await afterResult(page, () => page.click('#next-run'));
