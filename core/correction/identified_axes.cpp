@@ -255,8 +255,9 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
     for (int k = 0; k < n; ++k) {
       const int j = block[i][static_cast<size_t>(k)];
       scale[i](k) = step(j) * displayFactor(cs[static_cast<size_t>(j)].axis);
-      Wc[i].row(k) = W.row(j) * scale[i](k);
-      Nc.row(k) = N.row(j) * scale[i](k);
+      // (A matrix of no columns has no rows to take: Eigen's row() of it offsets a null pointer.)
+      if (W.cols() > 0) Wc[i].row(k) = W.row(j) * scale[i](k);
+      if (N.cols() > 0) Nc.row(k) = N.row(j) * scale[i](k);
     }
     unseenGram[i] = Nc * Nc.transpose();
     const auto scaled = [&](const Eigen::MatrixXd& V) -> Eigen::MatrixXd {
