@@ -140,24 +140,22 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     const IdentifiableSpace space = identifiableSpace(setup.face, run.degree(), o, reach);
     if (space.coefficients == c.coefficients) basis = space.basis;
   } else {
-    // The history's faces were ground with their axes and the error; identified from `at`, its axes
-    // move as the run's do.
+    // Identified from `at` instead of the run: at - run, by which the error found is short of the
+    // machine's and the history's axes are moved as the run's are.
+    AxisPolynomials shift = at;
+    for (Axis a : kAxes)
+      for (size_t k = 0; k < shift[a].a.size(); ++k) shift[a].a[k] -= run[a].coefficient(static_cast<int>(k));
     std::optional<PassHistory> shifted;
     if (history && linearisedAt) {
       shifted = *history;
-      for (EarlierPass& p : shifted->passes)
-        for (Axis a : kAxes)
-          for (size_t k = 0; k < p.axes[a].a.size(); ++k)
-            p.axes[a].a[k] += at[a].coefficient(static_cast<int>(k)) - run[a].coefficient(static_cast<int>(k));
+      for (EarlierPass& p : shifted->passes) p.axes = plusError(p.axes, shift);
     }
     auto m = identified ? Outcome<MachineErrorEstimate>(*identified)
                         : identifyMachineError(setup, at, runFace, measured, o, shifted ? &*shifted : history);
     if (!m) return m.error();
     MachineErrorEstimate est = std::move(m).value();
-    // Identified from `at`: the machine ran `run`, so its error is at - run more.
-    if (linearisedAt)
-      for (Axis a : kAxes)
-        for (size_t k = 0; k < est.error[a].a.size(); ++k) est.error[a].a[k] += at[a].coefficient(static_cast<int>(k)) - run[a].coefficient(static_cast<int>(k));
+    // The machine ran `run`, so its error is at - run more than the one found from `at`.
+    if (linearisedAt) est.error = plusError(est.error, shift);
     c.method = CorrectionMethod::Nonlinear;
     c.before = topographyFromNormal(runFace, measured);
     c.coefficients = est.space.coefficients;
