@@ -72,6 +72,9 @@ struct Correction {
   // What the pass will leave on the probe grid, µm rms, and its bound (face_prediction.h).
   double predictedRms = 0, predictedRmsHigh = 0;
   double predictedNoisePart = 0, predictedUnseenPart = 0;  // the bound's shares, µm rms
+  // Of the errors the bound samples in the directions the face cannot show, those with which the
+  // proposed (or the run) axes grind a face the wheel does not envelop everywhere.
+  int predictedUngrindable = 0;
   // The measured face is within the probe noise: another pass would only move noise.
   bool stop = false;
   // The axes run are proposed unchanged (run kept, or stop): so is the wheel, with no dressing.

@@ -59,7 +59,8 @@ Eigen::MatrixXd rowsOf(const Eigen::MatrixXd& m, const std::vector<int>& at) {
 
 FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,
                            const AxisPolynomials& run, const GroundFace& runFace, const Correction& c,
-                           const Eigen::MatrixXd& unexplained, double sigma, const Eigen::MatrixXd* shownBy) {
+                           const Eigen::MatrixXd& unexplained, double sigma, const Eigen::MatrixXd* shownBy,
+                           bool passes) {
   FacePrediction p;
   const double n = std::max(1, runFace.size());
   const int k = c.rank;
@@ -109,7 +110,7 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
       const Eigen::VectorXd t = all->singularValues();
       unseen.clear();
       for (int i = 0; i < q; ++i)
-        if (i >= t.size() || t(i) <= kUnseenShareJoined * t(0)) unseen.push_back(i);
+        if (i >= t.size() || t(i) <= (passes ? kUnseenShareJoined : kUnseenShare) * t(0)) unseen.push_back(i);
     }
     const Eigen::MatrixXd& V = all ? all->matrixV() : svd.matrixV();
     if (size > 0 && !unseen.empty()) {
@@ -138,6 +139,7 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
         auto before = simulateGroundFaceLike(like, measuredSetup, plusChange(measuredAt, cs, dc), Sensitivities::Skip,
                                              FaceStart::Near);
         if (!after || !before) {
+          ++p.ungrindable;
           worst = std::max(worst, std::sqrt(afterSquares / n) + size * 1e3);  // cannot say: as large as the error
           continue;
         }

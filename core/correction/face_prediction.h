@@ -30,6 +30,7 @@ struct FacePrediction {
   double rms = 0;      // µm: the predicted face, the misfit less its expected noise
   double rmsHigh = 0;  // µm: the bound
   double noisePart = 0, unseenPart = 0;  // µm rms: the bound's noise and second-order shares
+  int ungrindable = 0;  // sampled errors with which a face cannot be simulated (bound: cannot say)
 };
 
 // `c` is the correction with its axes, identified error and predicted face (c.after) filled;
@@ -37,12 +38,16 @@ struct FacePrediction {
 // with (the dressed wheel when there is one); `run` the axes run; `runFace` the face they ground
 // without error, with its sensitivities, at the measurement's points; `unexplained` measured minus
 // the identified model.
-// `shownBy`, when given, is the sensitivity matrix (points x c.coefficients, µm per unit) of every
-// face the error was identified from (the pass history's and this one, machine_error.h): the
-// directions the face cannot show are then those none of them shows.
+// `shownBy`, when given, is the sensitivity matrix (points x c.coefficients, µm per unit) at the
+// identified error of the faces it was identified from, in place of the run face's at E = 0:
+//   - `passes`: every pass's face (the pass history's and this one, machine_error.h); the directions
+//     the face cannot show are those none of them shows (below kUnseenShareJoined of the strongest);
+//   - otherwise this face's, when the identification freed the structural null space
+//     (structuralFreed): at E the second-order change shows those directions, weakly; the ones it
+//     does not show are below kUnseenShare, as on the run face.
 FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,
                            const AxisPolynomials& run, const GroundFace& runFace, const Correction& c,
                            const Eigen::MatrixXd& unexplained, double probeNoise,
-                           const Eigen::MatrixXd* shownBy = nullptr);
+                           const Eigen::MatrixXd* shownBy = nullptr, bool passes = true);
 
 }  // namespace hobsharp

@@ -11,11 +11,12 @@ struct LeastSquaresOptions {
   // Iterations (Jacobian evaluations, each one re-simulated face with its sensitivities) before
   // the solve stops as not converged.
   int maxIterations = 50;
-  // The same for the identification over the pass history's faces (machine_error.h), which seeks
-  // every free coefficient at once, the directions one face barely shows among them. On the
-  // campaign's second passes (seed 20261125) 50 left 16 of 95 solves unfinished; 200 left none
-  // (9 end above the noise, 1 stalls), and 400 or 1000 change no outcome.
-  int maxIterationsWithHistory = 200;
+  // The same for the search over every free coefficient (machine_error.h): over the pass history's
+  // faces, or on one face with the structural null space freed; the directions one face barely
+  // shows are among them. On the campaign's second passes (seed 20261125) 50 left 16 of 95 joined
+  // solves unfinished; 200 left none (9 end above the noise, 1 stalls), and 400 or 1000 change no
+  // outcome. On one face freed, 50 in place of 200 leaves 5 more of the 150 µm class above 0.1 µm.
+  int maxIterationsEveryCoefficient = 200;
   // Converged when both the actual and the predicted relative reductions of the sum of squares
   // in one step are at most this (MINPACK's ftol).
   double functionTolerance = 1e-10;

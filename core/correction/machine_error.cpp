@@ -1,6 +1,7 @@
 #include "machine_error.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -59,21 +60,25 @@ std::string passesWord(int n) { return std::to_string(n) + (n == 1 ? " earlier p
 // "the 1 earlier pass's face", "the 2 earlier passes' faces"
 std::string facesWord(int n) { return "the " + passesWord(n) + (n == 1 ? "'s face" : "' faces"); }
 
-// E sought over every free coefficient so that it explains each pass's face and this one together
-// (machine_error.h). Replaces m's estimate when the solve converges (every face explained to the
-// probe noise); otherwise sets m.historyNote.
-void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const AxisPolynomials& run,
-                 const GroundFace& runFace, const Eigen::MatrixXd& measured, const CorrectionOptions& o,
-                 const PassHistory& history) {
+// One search for E over every free coefficient (the structural null space too), started at `e0`,
+// on this face and each earlier pass's face (none with an empty history): each pass ground at its
+// axes + e0 + x, the earlier ones first, this one last. An earlier pass whose face cannot be ground
+// there is left out (`skipped`).
+struct FreeSearch {
+  Eigen::VectorXd e0;
+  std::vector<int> from;  // where each face's points begin in the stacked residual
+  int total = 0, earlier = 0, skipped = 0;
+  Eigen::VectorXd data;
+  std::optional<Outcome<Identification>> found;  // empty when this face cannot be simulated at e0
+};
+
+FreeSearch freeSearch(const MachineErrorEstimate& m, const SharpeningSetup& setup, const AxisPolynomials& run,
+                        const GroundFace& runFace, const Eigen::MatrixXd& measured, const CorrectionOptions& o,
+                        const PassHistory& history, const Eigen::VectorXd& e0) {
   const std::vector<Coefficient>& cs = m.space.coefficients;
   const int q = static_cast<int>(cs.size());
-  if (q == 0) return;
-  // E0 = nominal - run: the error the run compensates (the previous pass proposed nominal - E).
-  Eigen::VectorXd e0(q);
-  for (int j = 0; j < q; ++j)
-    e0(j) = history.nominal[cs[j].axis].coefficient(cs[j].degree) - run[cs[j].axis].coefficient(cs[j].degree);
-  // Each pass ground at its axes + E0 + x; the earlier ones first, this one last. An earlier pass
-  // whose face cannot be ground there is left out.
+  FreeSearch j;
+  j.e0 = e0;
   std::vector<AxisPolynomials> base;
   std::vector<GroundFace> faces;
   std::vector<Eigen::VectorXd> data;
@@ -86,33 +91,20 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
     faces.push_back(std::move(f).value());
     data.push_back(flat(p.measured));
   }
-  const int earlier = static_cast<int>(faces.size());
-  const int skipped = static_cast<int>(history.passes.size()) - earlier;
-  const std::string left = skipped > 0 ? " (" + passesWord(skipped) + " left out: " +
-                                              (skipped == 1 ? "its face" : "their faces") +
-                                              " cannot be simulated with this estimate)"
-                                        : "";
-  if (earlier == 0) {
-    m.historyNote = std::string(skipped == 1 ? "The earlier pass's face" : "The earlier passes' faces") +
-                    " cannot be simulated with the error this run compensates: identified from this face alone.";
-    return;
-  }
+  j.earlier = static_cast<int>(faces.size());
+  j.skipped = static_cast<int>(history.passes.size()) - j.earlier;
+  if (j.earlier == 0 && !history.passes.empty()) return j;
   {
     AxisPolynomials at = plusChange(run, cs, e0);
     auto f = simulateGroundFace(setup, at, runFace.grid);
-    if (!f) {
-      m.historyNote = "This face cannot be simulated with the error the run compensates: identified from this face alone.";
-      return;
-    }
+    if (!f) return j;
     base.push_back(at);
     faces.push_back(std::move(f).value());
     data.push_back(flat(measured));
   }
-  std::vector<int> from;
-  int total = 0;
-  for (const GroundFace& f : faces) from.push_back(total), total += f.size();
-  Eigen::VectorXd d(total);
-  for (size_t i = 0; i < data.size(); ++i) d.segment(from[i], data[i].size()) = data[i];
+  for (const GroundFace& f : faces) j.from.push_back(j.total), j.total += f.size();
+  j.data.resize(j.total);
+  for (size_t i = 0; i < data.size(); ++i) j.data.segment(j.from[i], data[i].size()) = data[i];
 
   const FaceModel model{
       [&](const std::vector<Eigen::VectorXd>& x) -> Outcome<GroundFace> {
@@ -127,7 +119,7 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
       [&](GroundFace& all, const std::vector<Eigen::VectorXd>& x) {
         std::vector<GroundFace> fs;
         for (size_t i = 0; i < base.size(); ++i) {
-          GroundFace f = slice(all, from[i], faces[i].size());
+          GroundFace f = slice(all, j.from[i], faces[i].size());
           if (!addSensitivities(f, setup, plusChange(base[i], cs, x[0]))) return false;
           fs.push_back(std::move(f));
         }
@@ -137,23 +129,64 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
       [&](const GroundFace& f, int) { return sensitivityMatrix(f, cs).normal; }};
   // Every free coefficient, each a machine step: the directions are decided by the faces.
   const ParameterBlock all{m.space.step.asDiagonal() * Eigen::MatrixXd::Identity(q, q), Wild::TakenWhenNeeded};
-  CorrectionOptions withHistory = o;
-  withHistory.solver.maxIterations = o.solver.maxIterationsWithHistory;
-  auto found = identify(model, stacked(faces), d, {all}, withHistory, {"the axes", "no axis direction"});
-  const std::string these = "this face and " + facesWord(earlier);
+  CorrectionOptions limits = o;
+  limits.solver.maxIterations = o.solver.maxIterationsEveryCoefficient;
+  j.found = identify(model, stacked(faces), j.data, {all}, limits, {"the axes", "no axis direction"});
+  return j;
+}
+
+bool converged(const FreeSearch& j) {
+  return j.found && *j.found && (*j.found)->summary.status == SolveStatus::Converged;
+}
+
+// E sought over every free coefficient so that it explains each pass's face and this one together
+// (machine_error.h). Replaces m's estimate when the solve converges (every face explained to the
+// probe noise); otherwise sets m.historyNote.
+void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const AxisPolynomials& run,
+                 const GroundFace& runFace, const Eigen::MatrixXd& measured, const CorrectionOptions& o,
+                 const PassHistory& history) {
+  const std::vector<Coefficient>& cs = m.space.coefficients;
+  const int q = static_cast<int>(cs.size());
+  if (q == 0) return;
+  // Started first at E0 = nominal - run: the error the run compensates (the previous pass proposed
+  // nominal - E). Where that search does not explain the faces, once more from this face's own
+  // estimate, which explains this face; the one that explains them is kept.
+  Eigen::VectorXd e0(q);
+  for (int k = 0; k < q; ++k)
+    e0(k) = history.nominal[cs[k].axis].coefficient(cs[k].degree) - run[cs[k].axis].coefficient(cs[k].degree);
+  FreeSearch j = freeSearch(m, setup, run, runFace, measured, o, history, e0);
+  if (!converged(j)) {
+    FreeSearch own = freeSearch(m, setup, run, runFace, measured, o, history, m.coefficientError);
+    if (converged(own)) j = std::move(own);
+  }
+  const std::string left = j.skipped > 0 ? " (" + passesWord(j.skipped) + " left out: " +
+                                                (j.skipped == 1 ? "its face" : "their faces") +
+                                                " cannot be simulated with this estimate)"
+                                          : "";
+  if (j.earlier == 0) {
+    m.historyNote = std::string(j.skipped == 1 ? "The earlier pass's face" : "The earlier passes' faces") +
+                    " cannot be simulated with the error this run compensates: identified from this face alone.";
+    return;
+  }
+  if (!j.found) {
+    m.historyNote = "This face cannot be simulated with the error the run compensates: identified from this face alone.";
+    return;
+  }
+  Outcome<Identification>& found = *j.found;
+  const std::string these = "this face and " + facesWord(j.earlier);
   if (!found || found->summary.status != SolveStatus::Converged) {
     // Only a solve that ended above the noise shows that no one error explains the faces; one that
     // ran out of iterations or stalled may have explained them already (a misfit within the noise).
     std::ostringstream misfit;
     misfit.precision(2);
-    if (found) misfit << " (" << std::sqrt(found->summary.finalCost / static_cast<double>(total)) << " µm rms left)";
+    if (found) misfit << " (" << std::sqrt(found->summary.finalCost / static_cast<double>(j.total)) << " µm rms left)";
     const SolveStatus st = found ? found->summary.status : SolveStatus::Failed;
     if (st == SolveStatus::AboveNoise)
       m.historyNote = "No one machine error explains " + these + " to the probe noise" + misfit.str() + left +
                       ": identified from this face alone (has the machine or the setup changed?).";
     else if (st == SolveStatus::NoConvergence)
       m.historyNote = "The search for one machine error explaining " + these + " did not converge in " +
-                      std::to_string(withHistory.solver.maxIterations) + " iterations" + misfit.str() + left +
+                      std::to_string(o.solver.maxIterationsEveryCoefficient) + " iterations" + misfit.str() + left +
                       ": identified from this face alone.";
     else if (st == SolveStatus::Stalled)
       m.historyNote = "The search for one machine error explaining " + these + " stalled" + misfit.str() + left +
@@ -163,11 +196,11 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
     return;
   }
   m.historyJacobian = found->jacobian[0];
-  m.historyLinearised = d - found->explained + m.historyJacobian * (e0 + found->value[0]);
+  m.historyLinearised = j.data - found->explained + m.historyJacobian * (j.e0 + found->value[0]);
   m.historyLeftOut = left;
-  keep(m, std::move(found).value(), e0, measured, from.back());
+  keep(m, std::move(found).value(), j.e0, measured, j.from.back());
   m.summary.reason += " Identified from " + these + " together" + left + ".";
-  m.passesJoined = earlier;
+  m.passesJoined = j.earlier;
   // Nothing is left out by construction: the faces decide every direction.
   m.space.basis = Eigen::MatrixXd::Identity(q, q);
   m.space.structural.clear();
@@ -219,6 +252,20 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
   if (!found) return found.error();
   m.error = run;
   keep(m, std::move(found).value(), Eigen::VectorXd::Zero(q), measured, 0);
+  // Not explained to the noise, with directions left out that the geometry hides at first order
+  // (X, Y and B on a straight gash): away from E = 0 they move the face at second order, and the
+  // face may need them (issue 20: no direction left out while the misfit is above the noise). Kept
+  // when every free coefficient explains the face to the noise.
+  if (m.summary.status != SolveStatus::Converged && !m.space.structural.empty() && !runFace.atProbes()) {
+    FreeSearch j = freeSearch(m, setup, run, runFace, measured, o, PassHistory{}, m.coefficientError);
+    if (converged(j)) {
+      keep(m, std::move(*j.found).value(), j.e0, measured, 0);
+      m.summary.reason += " Sought over every coefficient, the directions the face shows only at second order too.";
+      m.space.basis = Eigen::MatrixXd::Identity(q, q);
+      m.space.structural.clear();
+      m.structuralFreed = true;
+    }
+  }
   if (history && !history->empty() && !runFace.atProbes()) joinHistory(m, setup, run, runFace, measured, o, *history);
   return m;
 }

@@ -47,6 +47,11 @@ struct MachineErrorEstimate {
   // The earlier passes whose faces E explains together with this one (identifyMachineError with a
   // history), and, when there were earlier passes but E is this face's alone, why (a sentence).
   int passesJoined = 0;
+  // True when the structural null space was freed on this face alone: the identification over
+  // the identifiable space ended above the noise, and E sought over every free coefficient from
+  // there explains the face to it (the second-order change shows those directions). The bound then
+  // samples what the sensitivities at E do not show (face_prediction.h).
+  bool structuralFreed = false;
   // When joined: the sensitivities of every face at E (all their points x q), and the data E
   // explains there, linearised: every face's misfit left plus historyJacobian * E (µm). What is
   // read of each axis (identified_axes.h) rests on all the faces, as E does.
@@ -56,7 +61,9 @@ struct MachineErrorEstimate {
   std::string historyNote;
 };
 
-// With a `history` of earlier passes measured on the grid, E is then sought once more over every
+// On a grid, an identification that ends above the noise with a structural null space left out is
+// sought once more over every free coefficient, started at its E, and kept when it converges
+// (structuralFreed). With a `history` of earlier passes measured on the grid, E is then sought once more over every
 // free coefficient (the structural null space too) so that it explains every pass's face together,
 // started at E0 = history.nominal - run (the error the run compensates); that E is kept when it
 // explains all of them to the probe noise (a converged solve), else this face's own E stands and

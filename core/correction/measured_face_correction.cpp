@@ -84,6 +84,16 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
          "shape along the radius); it stays in the residual: "
       << leaves.str() << ". Correct the wheel profile to remove it.";
   }
+  // A bound above the face measured: the pass may leave the face worse than it is.
+  if (!c.stop && !c.runKept && c.predictedRmsHigh > c.before.rms) {
+    v << " The bound is above the face measured: the face does not show enough of the machine's error to say "
+         "that this pass improves it";
+    if (c.predictedUngrindable > 0)
+      v << ", and with some of the errors it cannot show the wheel would not reach part of the face (part of it "
+           "would stay unground)";
+    v << ". If it is ground, keep this pass in the case: a next pass measured on the grid identifies the error from "
+         "this face and the next together.";
+  }
   return v.str();
 }
 
@@ -101,6 +111,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   c.linearisedAtNominal = linearisedAt != nullptr;
   Eigen::MatrixXd unexplained;
   std::string historyNote;  // why the earlier passes were not joined (machine_error.h)
+  bool freed = false;  // the structural null space freed on this face alone (machine_error.h)
   Eigen::MatrixXd historyJacobian;  // when joined: every face's sensitivities, and the data linearised
   Eigen::VectorXd historyLinearised;
   std::string historyLeftOut;
@@ -173,6 +184,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     historyJacobian = est.historyJacobian;
     historyLinearised = est.historyLinearised;
     historyLeftOut = est.historyLeftOut;
+    freed = est.structuralFreed;
     unexplained = est.unexplained;
     // nominal - E; a locked coefficient stays as run.
     c.axes = run;
@@ -250,11 +262,12 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   {
     const FacePrediction p =
         predictFace(setup, dressing ? *dressed : setup, run, runFace, c, unexplained, o.probeNoise,
-                    c.passesJoined > 0 ? &historyJacobian : nullptr);
+                    c.passesJoined > 0 ? &historyJacobian : freed ? &sensitivities : nullptr, c.passesJoined > 0);
     c.predictedRms = p.rms;
     c.predictedRmsHigh = p.rmsHigh;
     c.predictedNoisePart = p.noisePart;
     c.predictedUnseenPart = p.unseenPart;
+    c.predictedUngrindable = p.ungrindable;
   }
   c.verdict = verdictOf(c, o, runFace.size());
   // A stop is the whole instruction: the history's sentence would only lengthen it.

@@ -53,9 +53,10 @@ TEST(Validation, CampaignTargets) {
   // (docs/validation.md): 25/33 of the 95 %, and 27/33 with the rounded axes of its 90 %.
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[0].share(), 24.0 / 33 - 1e-9);
   EXPECT_GE(classOf(ScenarioClass::Medium).targets[1].share(), 26.0 / 33 - 1e-9);
-  // Two passes at 150 µm: 31/34 here (16/34 before the second pass used the first pass's face);
-  // 84/99 on the whole run, short of the 90 % asked.
-  EXPECT_GE(classOf(ScenarioClass::Large).targets[0].share(), 30.0 / 34 - 1e-9);
+  // Two passes at 150 µm, met: 33/34 here (16/34 before the second pass used the first pass's
+  // face, 31/34 before a face above the noise was sought over every coefficient and the search over
+  // the pass history got its second start); 93/99 on the whole run.
+  for (const Target& t : classOf(ScenarioClass::Large).targets) EXPECT_GE(t.share(), t.required) << t.what;
   std::printf("%s", tableText(campaign()).c_str());
 }
 
@@ -73,18 +74,44 @@ TEST(Validation, ASecondPassWhoseAxesAloneCannotBeSimulatedIsCorrected) {
   EXPECT_LE(o.passes[1].probeRms, o.passes[1].predictedRmsHigh);
 }
 
-// Scenario 182 (150 µm rms): the first pass's best iterate has a face but no sensitivities (its
-// envelope equations are singular there). The identification keeps that estimate with its face
-// and says it stalled; the pass is not refused, and the second pass improves the face.
-TEST(Validation, AnEstimateWithoutSensitivitiesIsKeptNotRefused) {
+// Scenario 182 (150 µm rms): over the identifiable space the first pass's identification stalls
+// (54 µm rms left between the probe points); sought over every coefficient it converges
+// (test_pass_history.cpp). Neither pass is refused, and the second pass ends below 0.1 µm.
+TEST(Validation, AStalledFirstPassIsSoughtOverEveryCoefficientNotRefused) {
   auto s = makeScenario(kSeed, 182);
   ASSERT_TRUE(s.ok());
   const ScenarioOutcome o = runScenario(*s);
   ASSERT_EQ(o.passes.size(), 2u);
   EXPECT_FALSE(o.passes[0].refused) << o.passes[0].message;
-  EXPECT_EQ(o.passes[0].status, "stalled");
+  EXPECT_EQ(o.passes[0].status, "converged");
+  EXPECT_LT(o.passes[0].denseRms, 0.2 * o.initialDenseRms);
   EXPECT_FALSE(o.passes[1].refused) << o.passes[1].message;
-  EXPECT_LT(o.passes[1].denseRms, 0.1 * o.initialDenseRms);
+  EXPECT_LT(o.passes[1].denseRms, 0.1);
+}
+
+// A bound above the face measured is said in words. Scenario 152 (straight gash, 150 µm rms):
+// the first proposal's bound, 161 µm rms, is above the 137 µm measured, and with some of the
+// sampled errors the face cannot show the wheel would not reach part of the face; the module, as
+// the machine, cannot simulate the face the proposal grinds either. Scenario 0's proposal (3 µm
+// rms) is bounded well below its face and says nothing of the kind.
+TEST(Validation, ABoundAboveTheFaceMeasuredIsSaid) {
+  auto s = makeScenario(kSeed, 152);
+  ASSERT_TRUE(s.ok());
+  const ScenarioOutcome o = runScenario(*s);
+  ASSERT_GE(o.passes.size(), 1u);
+  const PassOutcome& p = o.passes[0];
+  EXPECT_GT(p.predictedRmsHigh, p.measuredRms);
+  EXPECT_NE(p.verdict.find("The bound is above the face measured: the face does not show enough of the machine's "
+                           "error to say that this pass improves it"),
+            std::string::npos)
+      << p.verdict;
+  EXPECT_NE(p.verdict.find("part of it would stay unground"), std::string::npos) << p.verdict;
+  auto t = makeScenario(kSeed, 0);
+  ASSERT_TRUE(t.ok());
+  const ScenarioOutcome q = runScenario(*t);
+  ASSERT_GE(q.passes.size(), 1u);
+  EXPECT_LT(q.passes[0].predictedRmsHigh, q.passes[0].measuredRms);
+  EXPECT_EQ(q.passes[0].verdict.find("The bound is above"), std::string::npos) << q.passes[0].verdict;
 }
 
 // Scenario 97 (30 µm rms): trial faces the wheel cannot grind along the way (rejected steps, not
