@@ -59,8 +59,7 @@ Eigen::MatrixXd rowsOf(const Eigen::MatrixXd& m, const std::vector<int>& at) {
 
 FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,
                            const AxisPolynomials& run, const GroundFace& runFace, const Correction& c,
-                           const Eigen::MatrixXd& unexplained, double sigma, const Eigen::MatrixXd* shownBy,
-                           bool passes) {
+                           const Eigen::MatrixXd& unexplained, double sigma, const UnseenSampling& sampling) {
   FacePrediction p;
   const double n = std::max(1, runFace.size());
   const int k = c.rank;
@@ -105,12 +104,12 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
       U.col(static_cast<int>(i)).noalias() = S * svd.matrixV().col(seen[i]) / s(seen[i]);
     // What none of the faces identified from shows: those of the history too, when given.
     std::optional<Eigen::JacobiSVD<Eigen::MatrixXd>> all;
-    if (shownBy && shownBy->cols() == q) {
-      all.emplace(*shownBy * w.cwiseInverse().asDiagonal(), Eigen::ComputeFullV);
+    if (sampling.shownBy && sampling.shownBy->cols() == q) {
+      all.emplace(*sampling.shownBy * w.cwiseInverse().asDiagonal(), Eigen::ComputeFullV);
       const Eigen::VectorXd t = all->singularValues();
       unseen.clear();
       for (int i = 0; i < q; ++i)
-        if (i >= t.size() || t(i) <= (passes ? kUnseenShareJoined : kUnseenShare) * t(0)) unseen.push_back(i);
+        if (i >= t.size() || t(i) <= (sampling.passes ? kUnseenShareJoined : kUnseenShare) * t(0)) unseen.push_back(i);
     }
     const Eigen::MatrixXd& V = all ? all->matrixV() : svd.matrixV();
     if (size > 0 && !unseen.empty()) {
@@ -123,6 +122,11 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
       if (subset) {
         base = rowsOf(base, at);
         explained = rowsOf(explained, at);
+      }
+      if (sampling.fromResimulated) {
+        auto after0 = simulateGroundFaceLike(like, passSetup, actual, Sensitivities::Skip, FaceStart::Near);
+        auto before0 = simulateGroundFaceLike(like, measuredSetup, measuredAt, Sensitivities::Skip, FaceStart::Near);
+        if (after0 && before0) base = faceNormal(*after0), explained = faceNormal(*before0);
       }
       // mt19937's words are the same in every build; the standard's distributions are not (libstdc++
       // natively, libc++ in WebAssembly): each term uniform on +-sqrt(3), of unit variance.

@@ -38,16 +38,29 @@ struct FacePrediction {
 // with (the dressed wheel when there is one); `run` the axes run; `runFace` the face they ground
 // without error, with its sensitivities, at the measurement's points; `unexplained` measured minus
 // the identified model.
-// `shownBy`, when given, is the sensitivity matrix (points x c.coefficients, µm per unit) at the
-// identified error of the faces it was identified from, in place of the run face's at E = 0:
-//   - `passes`: every pass's face (the pass history's and this one, machine_error.h); the directions
-//     the face cannot show are those none of them shows (below kUnseenShareJoined of the strongest);
-//   - otherwise this face's, when the identification freed the structural null space
-//     (structuralFreed): at E the second-order change shows those directions, weakly; the ones it
-//     does not show are below kUnseenShare, as on the run face.
+// How the bound samples the error the face cannot show.
+struct UnseenSampling {
+  // When given, the sensitivity matrix (points x c.coefficients, µm per unit) at the identified
+  // error of the faces it was identified from, in place of the run face's at E = 0:
+  //   - `passes`: every pass's face (the pass history's and this one, machine_error.h); the
+  //     directions the face cannot show are those none of them shows (below kUnseenShareJoined of
+  //     the strongest);
+  //   - otherwise this face's, when the identification freed the structural null space
+  //     (structuralFreed): at E the second-order change shows those directions, weakly; the ones
+  //     it does not show are below kUnseenShare, as on the run face.
+  const Eigen::MatrixXd* shownBy = nullptr;
+  bool passes = false;
+  // The model's faces hold more than the axes make (the wheel's shape identified alongside,
+  // wheel_error.h), so a face re-simulated with the identified axis error alone is not the model's
+  // face: the faces each sampled error moves are measured from re-simulated faces without it, at
+  // the measurement and after the pass, not from the model's. (Taken from the model's, the wheel's
+  // shape, 1 µm rms and more, read as a move of the face and made the bound 10 to 1000 times the
+  // face left on the campaign's wheel passes.)
+  bool fromResimulated = false;
+};
+
 FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,
                            const AxisPolynomials& run, const GroundFace& runFace, const Correction& c,
-                           const Eigen::MatrixXd& unexplained, double probeNoise,
-                           const Eigen::MatrixXd* shownBy = nullptr, bool passes = true);
+                           const Eigen::MatrixXd& unexplained, double probeNoise, const UnseenSampling& sampling = {});
 
 }  // namespace hobsharp

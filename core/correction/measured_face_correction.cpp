@@ -262,7 +262,8 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   {
     const FacePrediction p =
         predictFace(setup, dressing ? *dressed : setup, run, runFace, c, unexplained, o.probeNoise,
-                    c.passesJoined > 0 ? &historyJacobian : freed ? &sensitivities : nullptr, c.passesJoined > 0);
+                    UnseenSampling{c.passesJoined > 0 ? &historyJacobian : freed ? &sensitivities : nullptr,
+                                   c.passesJoined > 0, identified != nullptr});
     c.predictedRms = p.rms;
     c.predictedRmsHigh = p.rmsHigh;
     c.predictedNoisePart = p.noisePart;

@@ -114,6 +114,25 @@ TEST(Validation, ABoundAboveTheFaceMeasuredIsSaid) {
   EXPECT_EQ(q.passes[0].verdict.find("The bound is above"), std::string::npos) << q.passes[0].verdict;
 }
 
+// The bound on a pass with the wheel's shape identified alongside (face_prediction.h,
+// fromResimulated). Scenario 35 (wheel class): the faces each sampled error moves are measured
+// from faces re-simulated without it; measured from the model's faces, which hold the wheel's
+// identified shape, the shape (1.08 µm rms) read as a move of the face, and the bound was 1.07 µm
+// where the pass leaves 0.0025 µm. Now it holds and informs (at most 10 times the face left plus
+// 0.02 µm) on both passes.
+TEST(Validation, TheBoundWithTheWheelMeasuresMovesFromResimulatedFaces) {
+  auto s = makeScenario(kSeed, 35);
+  ASSERT_TRUE(s.ok());
+  ASSERT_TRUE(s->spec.wheel);
+  const ScenarioOutcome o = runScenario(*s);
+  ASSERT_EQ(o.passes.size(), 2u);
+  for (const PassOutcome& p : o.passes) {
+    EXPECT_FALSE(p.refused) << p.message;
+    EXPECT_LE(p.probeRms, p.predictedRmsHigh);
+    EXPECT_LE(p.predictedRmsHigh, 10 * p.probeRms + 0.02);
+  }
+}
+
 // Scenario 97 (30 µm rms): trial faces the wheel cannot grind along the way (rejected steps, not
 // an error); the best iterate comes back with its status, and the pass improves the face.
 TEST(Validation, TrialFacesThatCannotBeGroundAreRejectedStepsNotErrors) {
