@@ -119,31 +119,29 @@ void print(const char* hob, const char* what, const Pass& p) {
               c.summary.iterations);
 }
 
-// The issue's targets, noise-free (probeNoise 1e-4): a wheel offset of up to 10 µm whose face
-// shape is of degree 2 to 4 along the radius, plus an in-span axis error of 1e3 µm², in one pass
-// to below 0.01 µm² (`target`); a face that is pure axis error leaves the wheel offset below 0.1 µm.
-// NOT MET on the paper hob: 7.0e-3, 1.4e-2 and 4.2e-3 µm² for degrees 2, 3, 4 (the straight gash:
-// below 6e-4), so the paper hob is held to 0.02 µm² here. The predicted 1.4e-3 to 3.9e-3 µm² misses
-// the re-simulated face by up to 1.03e-2 µm² (degree 3), and the cause is not the model nor how the
-// offsets are composed (the prediction re-simulates the identified model exactly) but what the
-// probe grid cannot tell apart (TheProbeGridReadsTheOffsetAtItsKnots below):
+// One pass, noise-free (probeNoise 1e-4): a wheel offset of up to 10 µm whose face shape is of
+// degree 2 to 4 along the radius, plus an in-span axis error of 1e3 µm²; a face that is pure axis
+// error leaves the wheel offset below 0.1 µm. Judged, as issue 20 asks, between the probe rows (a
+// grid 4 times as dense): at most `between` µm rms. The wheel's correction is a not-a-knot spline
+// through its points (cubic_spline.h); with natural ends it left 0.17, 0.44 and 0.60 µm rms
+// between the rows on the paper hob (degrees 2, 3, 4) and 0.11, 0.37 and 0.55 µm on the straight
+// gash, against 0.037, 0.12 and 0.28 µm and 3e-4, 4.8e-3 and 0.19 µm now.
+// On the probe grid (sums of squares, µm²; `target`, and the prediction's gap to the face ground,
+// `predictionGap`) the paper hob leaves 7.6e-3, 4.1e-2 and 1.2e-2 µm² (with natural ends 7.0e-3,
+// 1.4e-2, 4.2e-3), about 0.03 µm rms at most; the straight gash below 1.6e-3 µm². What the probe
+// grid cannot tell apart (TheProbeGridReadsTheOffsetAtItsKnots below):
 // - the 5 points suffice: dressing the true offset's values there, with the true axes, leaves
 //   5.7e-6 to 5.9e-4 µm²; on the nominal axes each row is ground at its point's wheel radius only;
 // - to first order an offset constant along R, and on Tab. 1 with the axis directions this error
 //   needs one linear in R, are faces the axes make too (off their span by 1e-6 and 3e-5 of their
-//   size), so the split rule leaves them to the axes: for degree 3 E differs from the true error by
-//   a face of 950 µm² and W from the true offset by a line of +-6.5 µm; for degrees 2 and 4 by a
-//   constant and a line of 1 to 2 µm;
+//   size), so the split rule leaves them to the axes, and E and W differ from the truth by such a
+//   face (hundreds of µm²) and a line of a few µm;
 // - the axes make that offset only where the measured face was ground: the axis error and the
 //   offset's slope move each row 8 to 17 µm of wheel radius off its point, so the offset the axes
 //   stand in for is read there, and after the pass, ground at the points again, it misses by its
-//   slope times that shift (the natural spline's slope at the end points adds the same kind of
-//   error). A face shape alone, with no axis error, leaves 6.9e-4 to 4.5e-3 µm² for that reason.
-// More points (6 to 9, evenly) leave more (up to 40 µm²): the grid shows the offset only at its
-// 5 rows. Deciding the directions of axes and wheel together (the wheel in units of 0.01 to 1 µm)
-// gives the wheel the line, but then pure axis error moves the wheel by 0.15 to 3 µm, or, at 0.01,
-// a face shape alone is left at 750 µm².
-void expectTargets(const char* hob, const CaseInput& c, double target, double predictionGap) {
+//   slope times that shift. The prediction re-simulates the identified model exactly; it misses
+//   the face ground by that (up to 3.8e-2 µm², degree 3 on the paper hob).
+void expectTargets(const char* hob, const CaseInput& c, double target, double predictionGap, double between) {
   for (int degree : {2, 3, 4}) {
     SCOPED_TRACE(std::string(hob) + ", degree " + std::to_string(degree));
     const Scene s = sceneOf(c, faceShape(degree), 1e3);
@@ -156,6 +154,7 @@ void expectTargets(const char* hob, const CaseInput& c, double target, double pr
     EXPECT_TRUE(k.summary.status == SolveStatus::Converged || k.summary.status == SolveStatus::AboveNoise)
         << k.summary.reason;
     EXPECT_LT(p.onGrid, target);
+    EXPECT_LT(p.denseRms, between);
     // The prediction is the face the machine grinds with both applied.
     EXPECT_NEAR(k.after.sse, p.onGrid, predictionGap);
     EXPECT_GT(largestOffset(w), 1.0);  // the wheel takes the shape
@@ -175,8 +174,8 @@ void expectTargets(const char* hob, const CaseInput& c, double target, double pr
   print(hob, "pure axis error", p);
 }
 
-TEST(WheelCorrection, TargetsOnThePaperHob) { expectTargets("Tab. 1", paperCase(), 0.02, 0.011); }
-TEST(WheelCorrection, TargetsOnAStraightGash) { expectTargets("straight gash", straightCase(), 0.01, 1e-3); }
+TEST(WheelCorrection, TargetsOnThePaperHob) { expectTargets("Tab. 1", paperCase(), 0.05, 0.04, 0.3); }
+TEST(WheelCorrection, TargetsOnAStraightGash) { expectTargets("straight gash", straightCase(), 0.01, 2e-3, 0.2); }
 
 // Why the paper hob misses the target (above): on the nominal axes the probe grid reads the wheel
 // offset at the correction's points and nowhere else, so the 5 points suffice; what the pass leaves
@@ -332,8 +331,8 @@ TEST(WheelCorrection, ResultFieldsAndTheSwitch) {
   }
   // Fig. 4 draws the wheel's offset after the dressing as the spline, not through its points: the
   // field is the proposed spline at the profile's radii (this case's wheel has no offset of its own).
-  const CubicSpline proposed(c["wheelProfileOffset"]["R"].get<std::vector<double>>(),
-                             c["wheelProfileOffset"]["offset"].get<std::vector<double>>());
+  const CubicSpline proposed = CubicSpline::notAKnot(c["wheelProfileOffset"]["R"].get<std::vector<double>>(),
+                                                     c["wheelProfileOffset"]["offset"].get<std::vector<double>>());
   ASSERT_EQ(c["dresserPath"]["offset"].size(), r["wheelProfile"]["R"].size());
   for (size_t k = 0; k < r["wheelProfile"]["R"].size(); ++k)
     EXPECT_NEAR(c["dresserPath"]["offset"][k].get<double>(), proposed.value(r["wheelProfile"]["R"][k].get<double>()), 1e-9) << k;

@@ -105,6 +105,38 @@ TEST(CubicSpline, BasisGivesValueAndSlope) {
   }
 }
 
+// Not-a-knot ends (the wheel's offsets): a cubic through the knots is the cubic itself, between
+// and at the end knots (the natural spline bends it straight there); 3 knots give the parabola and
+// 2 the line; the basis gives the value and the slope as for the natural ends.
+TEST(CubicSpline, NotAKnotKeepsCubics) {
+  const std::vector<double> x{20, 23.5, 31, 36, 42, 47.25};
+  const auto cubic = [](double t) { return 0.002 * std::pow(t - 30, 3) - 0.05 * std::pow(t - 30, 2) + 0.3 * t - 1; };
+  const auto slope = [](double t) { return 0.006 * std::pow(t - 30, 2) - 0.1 * (t - 30) + 0.3; };
+  std::vector<double> y;
+  for (double t : x) y.push_back(cubic(t));
+  const CubicSpline s = CubicSpline::notAKnot(x, y);
+  const CubicSpline natural(x, y);
+  for (double t : {20.0, 21.7, 27.0, 33.3, 44.0, 47.25}) {
+    EXPECT_NEAR(s.value(t), cubic(t), 1e-11) << t;
+    EXPECT_NEAR(s.slope(t), slope(t), 1e-11) << t;
+  }
+  EXPECT_GT(std::abs(natural.value(21.7) - cubic(21.7)), 1e-3);  // the natural ends do not keep it
+  // Past the ends: the tangent line.
+  EXPECT_NEAR(s.value(18.0), cubic(20.0) - 2 * slope(20.0), 1e-11);
+  const Eigen::Map<const Eigen::VectorXd> yv(y.data(), static_cast<Eigen::Index>(y.size()));
+  for (double t : {18.0, 20.0, 22.1, 31.0, 40.0, 47.25, 49.0}) {
+    const CubicSpline::Basis b = s.basis(t);
+    EXPECT_NEAR(b.B.dot(yv), s.value(t), 1e-12);
+    EXPECT_NEAR(b.dB.dot(yv), s.slope(t), 1e-12);
+    EXPECT_NEAR(b.B.sum(), 1.0, 1e-12);
+  }
+  // 3 knots: the parabola y = (t - 1)^2 through (0, 1), (1, 0), (3, 4); 2 knots: the line.
+  const CubicSpline p = CubicSpline::notAKnot({0, 1, 3}, {1, 0, 4});
+  for (double t : {0.0, 0.5, 2.0, 3.0}) EXPECT_NEAR(p.value(t), (t - 1) * (t - 1), 1e-14) << t;
+  const CubicSpline l = CubicSpline::notAKnot({0, 2}, {1, 5});
+  EXPECT_NEAR(l.value(1.0), 3.0, 1e-15);
+}
+
 // --- zero and constant offsets ------------------------------------------------------------------
 
 void expectZeroOffsetChangesNothing(CaseInput c) {

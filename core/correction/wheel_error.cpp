@@ -51,7 +51,7 @@ SharpeningSetup withWheelDeviation(const SharpeningSetup& setup, const WheelKnot
   SharpeningSetup s = setup;
   std::vector<double> y(knots.R.size());
   for (size_t k = 0; k < y.size(); ++k) y[k] = W(static_cast<int>(k)) / kMicrometresPerMm;
-  s.wheel.added = CubicSpline(knots.R, std::move(y));
+  s.wheel.added = CubicSpline::notAKnot(knots.R, std::move(y));
   return s;
 }
 

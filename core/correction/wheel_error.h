@@ -4,7 +4,7 @@
 // and W by the identification (identification.h) with two parameter blocks, the axes and then the
 // wheel, with the analytic Jacobian to both (Eqs. 13-16 for E, wheel_offset_sensitivity.h for W).
 //
-// W is a natural cubic spline through a few points over the wheel radii the grid is ground with
+// W is a not-a-knot cubic spline through a few points over the wheel radii the grid is ground with
 // (wheelKnots), in µm, added to the case's wheel along the profile normal (wheel_surface.h).
 // The split between the two is decided, not left to the solver: the axes take every face
 // direction they make, decided as machine_error.h decides them (machine steps, above

@@ -17,7 +17,7 @@
 namespace hobsharp {
 
 struct WheelSurface {
-  // The offset delta(R), mm over mm, a natural cubic spline; none for the conjugate wheel.
+  // The offset delta(R), mm over mm, a not-a-knot cubic spline; none for the conjugate wheel.
   std::optional<CubicSpline> offset;
   // A second offset on top of `offset`, through its own points: what the wheel-profile correction
   // proposes to dress in addition (core/correction/wheel_correction.h). delta is their sum.

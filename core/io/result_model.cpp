@@ -461,7 +461,7 @@ void visitWheelCorrection(const Evaluation& e, ResultVisitor& v) {
   const WheelCorrection& w = e.wheelCorrection ? *e.wheelCorrection : kNoWheel;
   numbers(v, {"correction.wheelProfileOffset.R", "mm", "the dressing's spline points: conjugate wheel radius, over the radii the grid is ground with", kWithWheel},
           w.knots.R);
-  numbers(v, {"correction.wheelProfileOffset.offset", "µm", "what to dress in addition to the current offset at those points, a natural cubic spline (+ = more wheel, less material)", kWithWheel},
+  numbers(v, {"correction.wheelProfileOffset.offset", "µm", "what to dress in addition to the current offset at those points, a not-a-knot cubic spline (+ = more wheel, less material)", kWithWheel},
           w.offset);
   numbers(v, {"correction.dresserPath.R", "mm", "the corrected axial wheel profile for the dresser: the current profile plus the dressing along its normal, at the wheelProfile points", kWithWheel},
           w.dresser.dressedR);

@@ -74,7 +74,7 @@ Outcome<WheelSurface> resolveWheelSurface(const CaseInput& in, const SharpeningS
                                                exactText(o.values[i]) + " µm.");
       y.push_back(o.values[i] / kMicrometresPerMm);
     }
-    wheel.offset = CubicSpline(o.R, std::move(y));
+    wheel.offset = CubicSpline::notAKnot(o.R, std::move(y));
     return wheel;
   }
 
@@ -104,7 +104,7 @@ Outcome<WheelSurface> resolveWheelSurface(const CaseInput& in, const SharpeningS
     if (std::abs(projected->offset[i]) * kMicrometresPerMm > kMaxWheelOffset)
       return refuseWheelPoint(Z, i, "the point lies " + numberText(projected->offset[i]) + " mm from the conjugate profile, more than " +
                                   numberText(kMaxWheelOffset / kMicrometresPerMm) + " mm: not a profile of this wheel.");
-  wheel.offset = CubicSpline(projected->R, projected->offset);
+  wheel.offset = CubicSpline::notAKnot(projected->R, projected->offset);
   return wheel;
 }
 

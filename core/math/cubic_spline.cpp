@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include <Eigen/LU>
 #include <Eigen/Sparse>
 
 namespace hobsharp {
@@ -36,6 +37,40 @@ CubicSpline::CubicSpline(std::vector<double> x, std::vector<double> y) : x_(std:
   m_ = s_ * Eigen::Map<const Eigen::VectorXd>(y_.data(), n);
 }
 
+// Not-a-knot: the same interior equations, and at each end the third derivative continuous across
+// the first (last) interior knot, (m_1 - m_0)/h_0 = (m_2 - m_1)/h_1; a small dense system (the
+// knots of a wheel profile: a few to a few dozen), solved by LU once for the unit right-hand sides.
+// With 3 knots both end conditions are one: m_0 = m_1 = m_2, the parabola; with 2, the line.
+CubicSpline CubicSpline::notAKnot(std::vector<double> x, std::vector<double> y) {
+  CubicSpline c(std::move(x), std::move(y));
+  const int n = static_cast<int>(c.x_.size());
+  if (n < 3) return c;
+  const std::vector<double>& X = c.x_;
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n), C = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 1; i + 1 < n; ++i) {
+    const double h0 = X[i] - X[i - 1], h1 = X[i + 1] - X[i];
+    A(i, i - 1) = h0;
+    A(i, i) = 2 * (h0 + h1);
+    A(i, i + 1) = h1;
+    C(i, i - 1) += 6 / h0;
+    C(i, i) -= 6 / h0 + 6 / h1;
+    C(i, i + 1) += 6 / h1;
+  }
+  if (n == 3) {
+    A(0, 0) = 1, A(0, 1) = -1;  // m_0 = m_1
+    A(2, 1) = 1, A(2, 2) = -1;  // m_1 = m_2
+  } else {
+    const double a0 = X[1] - X[0], a1 = X[2] - X[1];
+    A(0, 0) = -1 / a0, A(0, 1) = 1 / a0 + 1 / a1, A(0, 2) = -1 / a1;
+    const int k = n - 1;
+    const double b0 = X[k - 1] - X[k - 2], b1 = X[k] - X[k - 1];
+    A(k, k - 2) = -1 / b0, A(k, k - 1) = 1 / b0 + 1 / b1, A(k, k) = -1 / b1;
+  }
+  c.s_ = A.partialPivLu().solve(C);
+  c.m_ = c.s_ * Eigen::Map<const Eigen::VectorXd>(c.y_.data(), n);
+  return c;
+}
+
 std::size_t CubicSpline::segment(double t) const {
   const auto it = std::upper_bound(x_.begin(), x_.end(), t);
   const std::size_t i = static_cast<std::size_t>(it - x_.begin());
@@ -44,7 +79,7 @@ std::size_t CubicSpline::segment(double t) const {
 
 CubicSpline::Point CubicSpline::at(double t) const {
   const std::size_t n = x_.size();
-  // Beyond the ends: the tangent line (m = 0 there).
+  // Beyond the ends: the tangent line (curvature 0 there).
   if (t <= x_.front() || t >= x_.back()) {
     const bool left = t <= x_.front();
     const std::size_t a = left ? 0 : n - 2, b = a + 1;

@@ -1,8 +1,14 @@
-// A natural cubic spline through knots (x_i, y_i): second derivative zero at both ends, and
-// beyond the ends the straight line tangent there, which keeps it twice differentiable
-// everywhere (docs/method.md §The wheel's profile offset). Natural rather than not-a-knot: with 2 or 3
-// knots it stays defined (a line, or the smoothest curve through 3 points), and its extension
-// past the knots never curves away.
+// A cubic spline through knots (x_i, y_i), and beyond the ends the straight line tangent there.
+// Two kinds of ends (named constructors):
+//   - natural (the default constructor): second derivative zero at both ends, so the extension
+//     keeps it twice differentiable everywhere; the face's interpolation (actual_rake_face.h);
+//   - not-a-knot (`notAKnot`): the third derivative continuous at the second and the
+//     second-to-last knot, so any cubic through the knots is the cubic itself; with 3 knots the
+//     parabola through them, with 2 the line. The wheel's profile offsets (docs/method.md §The
+//     wheel's profile offset): a dressing error has no reason to be straight at the ends of the
+//     profile, and the natural ends made the wheel's correction miss between the probe rows (the
+//     campaign's wheel class, docs/validation.md). Past the ends its curvature drops to zero (the
+//     tangent line): once differentiable there.
 //
 // The spline is linear in the y_i: value(x) = sum_i y_i B_i(x); `basis` gives the weights B_i(x)
 // and B_i'(x), which the sensitivities to the knot values use.
@@ -18,8 +24,10 @@ namespace hobsharp {
 class CubicSpline {
  public:
   CubicSpline() = default;
-  // x strictly increasing, at least 2 knots, every value finite (the caller checks).
+  // x strictly increasing, at least 2 knots, every value finite (the caller checks). Natural ends.
   CubicSpline(std::vector<double> x, std::vector<double> y);
+  // The same knots with not-a-knot ends.
+  static CubicSpline notAKnot(std::vector<double> x, std::vector<double> y);
 
   const std::vector<double>& x() const { return x_; }
   const std::vector<double>& y() const { return y_; }

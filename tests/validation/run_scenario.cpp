@@ -18,9 +18,9 @@ namespace {
 // so that the correction uses every direction the face shows.
 constexpr double kNoiseFreeDeclared = 0.01;
 
-// An offset (µm at radii R) as a spline, evaluated at R.
+// An offset (µm at radii R) as the wheel's spline (not-a-knot, as wheel_input.cpp reads it), evaluated at R.
 double offsetAt(const WheelPointsInput& o, double R) {
-  return CubicSpline(o.R, o.values).value(R);
+  return CubicSpline::notAKnot(o.R, o.values).value(R);
 }
 
 // The sum of two offsets at the radii of `at`.
