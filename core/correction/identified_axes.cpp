@@ -62,18 +62,20 @@ struct Fit {
   double misfit = 0;    // |data - A x|², µm²
 };
 
-Fit fitColumns(const Eigen::MatrixXd& A, const Eigen::VectorXd& y, std::vector<int> columns, double reference,
-               double cutoff = kNull) {
+Eigen::MatrixXd columnsOf(const Eigen::MatrixXd& A, const std::vector<int>& columns) {
+  Eigen::MatrixXd B(A.rows(), static_cast<int>(columns.size()));
+  for (size_t k = 0; k < columns.size(); ++k) B.col(static_cast<int>(k)) = A.col(columns[k]);
+  return B;
+}
+
+// The fit of B = A's `columns` from B's SVD (with U and V).
+Fit fitFrom(const Eigen::JacobiSVD<Eigen::MatrixXd>& svd, const Eigen::MatrixXd& B, const Eigen::VectorXd& y,
+            std::vector<int> columns, double reference, double cutoff) {
   Fit f;
   f.columns = std::move(columns);
   const int n = static_cast<int>(f.columns.size());
   f.x = Eigen::VectorXd::Zero(n);
   f.cov = Eigen::MatrixXd::Zero(n, n);
-  f.misfit = y.squaredNorm();
-  if (n == 0) return f;
-  Eigen::MatrixXd B(A.rows(), n);
-  for (int k = 0; k < n; ++k) B.col(k) = A.col(f.columns[static_cast<size_t>(k)]);
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(B, Eigen::ComputeThinU | Eigen::ComputeThinV);
   const Eigen::VectorXd& s = svd.singularValues();
   const double floor = cutoff * (reference > 0 ? reference : (s.size() ? s(0) : 0.0));
   for (int i = 0; i < s.size(); ++i) {
@@ -84,6 +86,19 @@ Fit fitColumns(const Eigen::MatrixXd& A, const Eigen::VectorXd& y, std::vector<i
   }
   f.misfit = (y - B * f.x).squaredNorm();
   return f;
+}
+
+Fit fitColumns(const Eigen::MatrixXd& A, const Eigen::VectorXd& y, std::vector<int> columns, double reference,
+               double cutoff = kNull) {
+  if (columns.empty()) {
+    Fit f;
+    f.columns = std::move(columns);
+    f.misfit = y.squaredNorm();
+    return f;
+  }
+  const Eigen::MatrixXd B = columnsOf(A, columns);
+  return fitFrom(Eigen::JacobiSVD<Eigen::MatrixXd>(B, Eigen::ComputeThinU | Eigen::ComputeThinV), B, y,
+                 std::move(columns), reference, cutoff);
 }
 
 // An axis's curve in a fit: its mean over the motion range (linear in the data, so its spread
@@ -216,16 +231,21 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
   const Eigen::MatrixXd W = svd.matrixV().leftCols(rank) * s.head(rank).cwiseInverse().asDiagonal();
   const Eigen::MatrixXd N = svd.matrixV().rightCols(q - rank);
 
-  // Each axis alone: the information its own coefficients give (the others known).
+  // Each axis alone: the information its own coefficients give (the others known). Its SVD is
+  // also the least-squares fit of its columns alone (below: a group's member fitted alone when no
+  // axis is read alone), so that fit is kept from it (U besides V changes neither S nor V).
+  std::map<std::vector<int>, Fit> fits;
   std::array<Eigen::MatrixXd, kAxisCount> ownW, ownN;
   std::array<bool, kAxisCount> seen{};
   for (Axis a : kAxes) {
     const int i = static_cast<int>(a);
     const int n = static_cast<int>(block[i].size());
     if (n == 0 || !(s0 > 0)) continue;
-    Eigen::MatrixXd Aa(A.rows(), n);
-    for (int k = 0; k < n; ++k) Aa.col(k) = A.col(block[i][static_cast<size_t>(k)]);
-    const Eigen::JacobiSVD<Eigen::MatrixXd> own(Aa, Eigen::ComputeFullV);
+    const Eigen::MatrixXd Aa = columnsOf(A, block[i]);
+    // (With fewer rows than columns the fit's thin V is not the full V's columns to the bit.)
+    const bool tall = Aa.rows() >= n;
+    const Eigen::JacobiSVD<Eigen::MatrixXd> own(Aa, tall ? Eigen::ComputeThinU | Eigen::ComputeFullV : Eigen::ComputeFullV);
+    if (tall) fits.emplace(block[i], fitFrom(own, Aa, y, block[i], s0, kNull));
     int r = 0;
     while (r < own.singularValues().size() && own.singularValues()(r) > kNull * s0) ++r;
     seen[i] = r > 0;
@@ -368,7 +388,6 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
   // The fits below repeat their columns (with one group, each member's fit is made for the choice
   // of the representative, for the joint fit and again for the member's value): each set of
   // columns is fitted once, here, and its fit kept for this call.
-  std::map<std::vector<int>, Fit> fits;
   const auto fitOf = [&](const std::vector<int>& columns) -> const Fit& {
     auto it = fits.find(columns);
     if (it == fits.end()) it = fits.emplace(columns, fitColumns(A, y, columns, s0)).first;

@@ -15,16 +15,17 @@ namespace hobsharp {
 namespace {
 
 // One envelope point's equations: the setup, the axes, the grid point, and the cosines and sines
-// of the setup's fixed angles (phi_1, gamma_m, eta of Eq. 3; psi_c of Eq. 7), formed once for the
-// point rather than at every Newton step.
+// of the setup's fixed angles (setupRotations), formed once for the face rather than at every
+// point or Newton step.
 struct PointEquations {
-  PointEquations(const SharpeningSetup& setup, const AxisPolynomials& a, const GridPoint& point)
-      : s(setup), axes(a), g(point), contact(contactRotations(setup.universal)), psiC(cosSin(setup.psiC())) {}
+  PointEquations(const SharpeningSetup& setup, const SetupRotations& r, const AxisPolynomials& a,
+                 const GridPoint& point)
+      : s(setup), axes(a), g(point), contact(r.contact), psiC(r.psiC) {}
   const SharpeningSetup& s;
   const AxisPolynomials& axes;
   const GridPoint& g;
-  ContactRotations contact;
-  CosSin<double> psiC;
+  const ContactRotations& contact;
+  const CosSin<double>& psiC;
 };
 
 // The wheel's side of Eqs. 5-6 at the face coordinates (u, w) of its contact line: the equation
@@ -268,9 +269,18 @@ bool addSensitivities(const PointEquations& q, EnvelopePoint& e) {
 
 }  // namespace
 
+SetupRotations setupRotations(const SharpeningSetup& setup) {
+  return {contactRotations(setup.universal), cosSin(setup.psiC())};
+}
+
+bool addSensitivities(const SharpeningSetup& setup, const SetupRotations& rotations, const AxisPolynomials& axes,
+                      const GridPoint& point, EnvelopePoint& e) {
+  return addSensitivities(PointEquations(setup, rotations, axes, point), e);
+}
+
 bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
                       EnvelopePoint& e) {
-  return addSensitivities(PointEquations(setup, axes, point), e);
+  return addSensitivities(setup, setupRotations(setup), axes, point, e);
 }
 
 namespace {
@@ -288,8 +298,8 @@ Error wildWheel(const GridPoint& point) {
 
 // Newton's method on Eqs. 5, 6, 11 from `guess`; with `startInverse`, the first step is a chord
 // step with it (solveEnvelopePointNear).
-Outcome<EnvelopePoint> solve(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
-                             const EnvelopeGuess& guess, const Eigen::Matrix4d* startInverse,
+Outcome<EnvelopePoint> solve(const SharpeningSetup& setup, const SetupRotations& rotations, const AxisPolynomials& axes,
+                             const GridPoint& point, const EnvelopeGuess& guess, const Eigen::Matrix4d* startInverse,
                              Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
   const auto fail = [&point, &setup] {
     return refuse("grid", "the ground face cannot be solved at the grid point " + where(point) +
@@ -298,7 +308,7 @@ Outcome<EnvelopePoint> solve(const SharpeningSetup& setup, const AxisPolynomials
                               (setup.wheel.hasOffset() ? std::string(", and the wheel file.") : std::string(".")),
                   ErrorCode::Unsolvable);
   };
-  const PointEquations q(setup, axes, point);
+  const PointEquations q(setup, rotations, axes, point);
   EnvelopeGuess v = guess;
   const bool helical = setup.face.helical();
   const double motionLimit = helical ? o.helicalMotionStepLimit : o.straightMotionStepLimit;
@@ -364,17 +374,31 @@ Outcome<EnvelopePoint> solve(const SharpeningSetup& setup, const AxisPolynomials
 
 }  // namespace
 
+Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const SetupRotations& rotations,
+                                          const AxisPolynomials& axes, const GridPoint& point,
+                                          const EnvelopeGuess& guess, Sensitivities sensitivities,
+                                          const EnvelopeSolverOptions& o) {
+  return solve(setup, rotations, axes, point, guess, nullptr, sensitivities, o);
+}
+
 Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
                                           const GridPoint& point, const EnvelopeGuess& guess,
                                           Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
-  return solve(setup, axes, point, guess, nullptr, sensitivities, o);
+  return solve(setup, setupRotations(setup), axes, point, guess, nullptr, sensitivities, o);
+}
+
+Outcome<EnvelopePoint> solveEnvelopePointNear(const SharpeningSetup& setup, const SetupRotations& rotations,
+                                              const AxisPolynomials& axes, const GridPoint& point,
+                                              const EnvelopePoint& near, Sensitivities sensitivities,
+                                              const EnvelopeSolverOptions& o) {
+  return solve(setup, rotations, axes, point, EnvelopeGuess{near.t, near.phi, near.u, near.w}, &near.jacobianInverse,
+               sensitivities, o);
 }
 
 Outcome<EnvelopePoint> solveEnvelopePointNear(const SharpeningSetup& setup, const AxisPolynomials& axes,
                                               const GridPoint& point, const EnvelopePoint& near,
                                               Sensitivities sensitivities, const EnvelopeSolverOptions& o) {
-  return solve(setup, axes, point, EnvelopeGuess{near.t, near.phi, near.u, near.w}, &near.jacobianInverse,
-               sensitivities, o);
+  return solveEnvelopePointNear(setup, setupRotations(setup), axes, point, near, sensitivities, o);
 }
 
 }  // namespace hobsharp

@@ -16,6 +16,7 @@
 #include "face_grid.h"
 #include "outcome.h"
 #include "sharpening_setup.h"
+#include "wheel_contact.h"
 
 namespace hobsharp {
 
@@ -73,9 +74,22 @@ struct EnvelopeSolverOptions {
 // The field of a refusal that blames the dressed wheel (its profile curves past the envelope's edge).
 inline constexpr const char* kWildWheelField = "wheel.profileOffset";
 
+// The setup's fixed angles by their cosines and sines (phi_1, gamma_m, eta of Eq. 3; psi_c of
+// Eq. 7): the same at every point of a face, so a face forms them once and hands them to each
+// point's solve (the overloads below; the others form them for their one point).
+struct SetupRotations {
+  ContactRotations contact;
+  CosSin<double> psiC;
+};
+SetupRotations setupRotations(const SharpeningSetup& setup);
+
 Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const AxisPolynomials& axes,
                                           const GridPoint& point, const EnvelopeGuess& guess,
                                           Sensitivities sensitivities = Sensitivities::Compute,
+                                          const EnvelopeSolverOptions& options = {});
+Outcome<EnvelopePoint> solveEnvelopePoint(const SharpeningSetup& setup, const SetupRotations& rotations,
+                                          const AxisPolynomials& axes, const GridPoint& point,
+                                          const EnvelopeGuess& guess, Sensitivities sensitivities,
                                           const EnvelopeSolverOptions& options = {});
 
 // The same grid point on a face ground with axes near those `near` was solved with: started from
@@ -87,12 +101,18 @@ Outcome<EnvelopePoint> solveEnvelopePointNear(const SharpeningSetup& setup, cons
                                               const GridPoint& point, const EnvelopePoint& near,
                                               Sensitivities sensitivities = Sensitivities::Compute,
                                               const EnvelopeSolverOptions& options = {});
+Outcome<EnvelopePoint> solveEnvelopePointNear(const SharpeningSetup& setup, const SetupRotations& rotations,
+                                              const AxisPolynomials& axes, const GridPoint& point,
+                                              const EnvelopePoint& near, Sensitivities sensitivities,
+                                              const EnvelopeSolverOptions& options = {});
 
 // The sensitivities (Eqs. 13-15) of a solved envelope point `e` (as solveEnvelopePoint returned it
 // with Sensitivities::Skip): the same figures as solving with Sensitivities::Compute; false where
 // the envelope equations are singular there.
 bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
                       EnvelopePoint& e);
+bool addSensitivities(const SharpeningSetup& setup, const SetupRotations& rotations, const AxisPolynomials& axes,
+                      const GridPoint& point, EnvelopePoint& e);
 
 // The guess from the nominal screw motion: the wheel touches (u, w) when w + phi = w*(u).
 EnvelopeGuess nominalGuess(const GridPoint& point, double contactW);

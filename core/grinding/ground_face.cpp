@@ -24,6 +24,7 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
   f.grid = grid;
   f.points.reserve(grid.size());
   f.envelope.reserve(grid.size());
+  const SetupRotations rotations = setupRotations(setup);
   for (int i = 0; i < grid.rows(); ++i) {
     auto contactW = contactAt(setup, grid.r[i]);
     if (!contactW) return contactW.error();
@@ -35,7 +36,7 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
       const EnvelopeGuess guess =
           last ? EnvelopeGuess{last->t, last->phi - (g.w - f.points.back().w), last->u, last->w}
                : nominalGuess(g, *contactW);
-      auto e = solveEnvelopePoint(setup, axes, g, guess, sensitivities, options);
+      auto e = solveEnvelopePoint(setup, rotations, axes, g, guess, sensitivities, options);
       if (!e) return e.error();
       last = *e;
       f.points.push_back(g);
@@ -45,8 +46,8 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
   auto contactW = contactAt(setup, grid.rMean());
   if (!contactW) return contactW.error();
   f.meanPoint = gridPoint(setup, grid.rMean(), grid.xMean());
-  auto e = solveEnvelopePoint(setup, axes, f.meanPoint, nominalGuess(f.meanPoint, *contactW), sensitivities,
-                              options);
+  auto e = solveEnvelopePoint(setup, rotations, axes, f.meanPoint, nominalGuess(f.meanPoint, *contactW),
+                              sensitivities, options);
   if (!e) return e.error();
   f.meanEnvelope = *e;
   return f;
@@ -61,6 +62,7 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
   f.probes = probes;
   f.points.reserve(probes.size());
   f.envelope.reserve(probes.size());
+  const SetupRotations rotations = setupRotations(setup);
   double lastR = 0, contactW = 0;
   for (std::size_t k = 0; k < probes.size(); ++k) {
     const GridPoint g = gridPoint(setup, probes[k].r, probes[k].x);
@@ -76,7 +78,7 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
         sameLine ? EnvelopeGuess{f.envelope.back().t, f.envelope.back().phi - (g.w - f.points.back().w),
                                  f.envelope.back().u, f.envelope.back().w}
                  : nominalGuess(g, contactW);
-    auto e = solveEnvelopePoint(setup, axes, g, guess, sensitivities, options);
+    auto e = solveEnvelopePoint(setup, rotations, axes, g, guess, sensitivities, options);
     if (!e) {
       if (e.error().field == kWildWheelField) return e.error();  // the wheel's fault, not the point's
       std::string why = e.error().message;
@@ -91,7 +93,8 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
   auto meanW = contactAt(setup, grid.rMean());
   if (!meanW) return meanW.error();
   f.meanPoint = gridPoint(setup, grid.rMean(), grid.xMean());
-  auto e = solveEnvelopePoint(setup, axes, f.meanPoint, nominalGuess(f.meanPoint, *meanW), sensitivities, options);
+  auto e = solveEnvelopePoint(setup, rotations, axes, f.meanPoint, nominalGuess(f.meanPoint, *meanW), sensitivities,
+                              options);
   if (!e) return e.error();
   f.meanEnvelope = *e;
   return f;
@@ -113,13 +116,14 @@ Outcome<GroundFace> simulateGroundFaceLike(const GroundFace& like, const Sharpen
   f.probes = like.probes;
   f.points = like.points;
   f.envelope.reserve(like.envelope.size());
+  const SetupRotations rotations = setupRotations(setup);
   for (std::size_t k = 0; k < like.points.size(); ++k) {
-    auto e = solveEnvelopePointNear(setup, axes, like.points[k], like.envelope[k], sensitivities);
+    auto e = solveEnvelopePointNear(setup, rotations, axes, like.points[k], like.envelope[k], sensitivities);
     if (!e) return fresh();  // too far for the warm start: from the nominal motion, as the first simulation did
     f.envelope.push_back(*e);
   }
   f.meanPoint = like.meanPoint;
-  auto e = solveEnvelopePointNear(setup, axes, f.meanPoint, like.meanEnvelope, sensitivities);
+  auto e = solveEnvelopePointNear(setup, rotations, axes, f.meanPoint, like.meanEnvelope, sensitivities);
   if (!e) return fresh();
   f.meanEnvelope = *e;
   return f;
@@ -132,13 +136,14 @@ MotionRange motionRange(const GroundFace& face) {
 }
 
 Outcome<void> addSensitivities(GroundFace& face, const SharpeningSetup& setup, const AxisPolynomials& axes) {
+  const SetupRotations rotations = setupRotations(setup);
   for (std::size_t k = 0; k < face.envelope.size(); ++k)
-    if (!addSensitivities(setup, axes, face.points[k], face.envelope[k]))
+    if (!addSensitivities(setup, rotations, axes, face.points[k], face.envelope[k]))
     {
       const std::string why = "the ground face's sensitivities cannot be formed at a point: the envelope equations are singular there.";
       return face.atProbes() ? refusePoint("measuredPoints", k, why, ErrorCode::Unsolvable) : refuse("grid", why, ErrorCode::Unsolvable);
     }
-  if (!addSensitivities(setup, axes, face.meanPoint, face.meanEnvelope))
+  if (!addSensitivities(setup, rotations, axes, face.meanPoint, face.meanEnvelope))
     return refuse("grid", "the ground face's sensitivities cannot be formed at the grid's mean point.", ErrorCode::Unsolvable);
   return success();
 }
