@@ -73,7 +73,7 @@ struct Correction {
   double predictedRms = 0, predictedRmsHigh = 0;
   double predictedNoisePart = 0, predictedUnseenPart = 0;  // the bound's shares, µm rms
   // Of the errors the bound samples in the directions the face cannot show, those with which the
-  // proposed (or the run) axes grind a face the wheel does not envelop everywhere.
+  // proposed axes grind a face the wheel does not envelop everywhere.
   int predictedUngrindable = 0;
   // The measured face is within the probe noise: another pass would only move noise.
   bool stop = false;

@@ -143,7 +143,9 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
         auto before = simulateGroundFaceLike(like, measuredSetup, plusChange(measuredAt, cs, dc), Sensitivities::Skip,
                                              FaceStart::Near);
         if (!after || !before) {
-          ++p.ungrindable;
+          // Only the pass's face speaks of the pass: an error with which the face measured cannot be
+          // simulated is one the measurement does not bear out, not a part the pass leaves unground.
+          if (!after) ++p.ungrindable;
           worst = std::max(worst, std::sqrt(afterSquares / n) + size * 1e3);  // cannot say: as large as the error
           continue;
         }

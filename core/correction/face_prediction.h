@@ -30,7 +30,10 @@ struct FacePrediction {
   double rms = 0;      // µm: the predicted face, the misfit less its expected noise
   double rmsHigh = 0;  // µm: the bound
   double noisePart = 0, unseenPart = 0;  // µm rms: the bound's noise and second-order shares
-  int ungrindable = 0;  // sampled errors with which a face cannot be simulated (bound: cannot say)
+  // Sampled errors with which the face the pass grinds cannot be simulated (the wheel would not
+  // reach part of it). The bound cannot say for those, nor for the ones with which the face measured
+  // cannot be simulated, which are not counted here.
+  int ungrindable = 0;
 };
 
 // `c` is the correction with its axes, identified error and predicted face (c.after) filled;

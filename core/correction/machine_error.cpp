@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -139,6 +140,12 @@ bool converged(const FreeSearch& j) {
   return j.found && *j.found && (*j.found)->summary.status == SolveStatus::Converged;
 }
 
+// The rms left over the faces searched, µm; infinite when the search has no result.
+double misfitOf(const FreeSearch& j) {
+  if (!j.found || !*j.found || j.total == 0) return std::numeric_limits<double>::infinity();
+  return std::sqrt((*j.found)->summary.finalCost / static_cast<double>(j.total));
+}
+
 // E sought over every free coefficient so that it explains each pass's face and this one together
 // (machine_error.h). Replaces m's estimate when the solve converges (every face explained to the
 // probe noise); otherwise sets m.historyNote.
@@ -150,14 +157,16 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
   if (q == 0) return;
   // Started first at E0 = nominal - run: the error the run compensates (the previous pass proposed
   // nominal - E). Where that search does not explain the faces, once more from this face's own
-  // estimate, which explains this face; the one that explains them is kept.
+  // estimate, which explains this face; the one that explains them is kept. Where neither does,
+  // the note speaks of the one that came nearest (the least rms left): a start that ended above
+  // the noise says nothing of the faces while the other left less.
   Eigen::VectorXd e0(q);
   for (int k = 0; k < q; ++k)
     e0(k) = history.nominal[cs[k].axis].coefficient(cs[k].degree) - run[cs[k].axis].coefficient(cs[k].degree);
   FreeSearch j = freeSearch(m, setup, run, runFace, measured, o, history, e0);
   if (!converged(j)) {
     FreeSearch own = freeSearch(m, setup, run, runFace, measured, o, history, m.coefficientError);
-    if (converged(own)) j = std::move(own);
+    if (converged(own) || misfitOf(own) < misfitOf(j)) j = std::move(own);
   }
   const std::string left = j.skipped > 0 ? " (" + passesWord(j.skipped) + " left out: " +
                                                 (j.skipped == 1 ? "its face" : "their faces") +

@@ -52,7 +52,9 @@ Outcome<Topography> predictedFace(const SharpeningSetup& setup, const GroundFace
 
 // A sum of squares for a sentence: 3 digits, or "below 1e-6" where only rounding is left (which
 // the native and the WebAssembly builds round differently).
-std::string verdictOf(const Correction& c, const CorrectionOptions& o, int points) {
+// `historyNext`: a next pass would use this face with its own (the nonlinear method on a grid,
+// without the wheel's correction; machine_error.h, pass_history.h).
+std::string verdictOf(const Correction& c, const CorrectionOptions& o, int points, bool historyNext) {
   std::ostringstream v;
   v.precision(3);
   // What the pass leaves, as the prediction and its bound state it (face_prediction.h).
@@ -91,8 +93,10 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
     if (c.predictedUngrindable > 0)
       v << ", and with some of the errors it cannot show the wheel would not reach part of the face (part of it "
            "would stay unground)";
-    v << ". If it is ground, keep this pass in the case: a next pass measured on the grid identifies the error from "
-         "this face and the next together.";
+    v << ".";
+    if (historyNext)
+      v << " If it is ground, keep this pass in the case: a next pass measured on the grid seeks one error that "
+           "explains this face and the next together.";
   }
   return v.str();
 }
@@ -270,7 +274,8 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.predictedUnseenPart = p.unseenPart;
     c.predictedUngrindable = p.ungrindable;
   }
-  c.verdict = verdictOf(c, o, runFace.size());
+  c.verdict = verdictOf(c, o, runFace.size(),
+                        c.method == CorrectionMethod::Nonlinear && !o.wheel && !identified && !runFace.atProbes());
   // A stop is the whole instruction: the history's sentence would only lengthen it.
   if (!c.stop && c.passesJoined > 0)
     c.verdict += " The machine's error was identified from this face and the " + std::to_string(c.passesJoined) +

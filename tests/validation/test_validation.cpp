@@ -114,6 +114,23 @@ TEST(Validation, ABoundAboveTheFaceMeasuredIsSaid) {
   EXPECT_EQ(q.passes[0].verdict.find("The bound is above"), std::string::npos) << q.passes[0].verdict;
 }
 
+// "The wheel would not reach part of the face" counts only sampled errors with which the face the
+// pass grinds cannot be simulated. Scenario 452 (helical gash, 150 µm rms): the first proposal's
+// bound is above the face measured, and 3 of its 6 sampled errors make the face measured one the
+// module cannot simulate, none the face the pass grinds; the pass is ground (not refused). Those 3
+// made the verdict say that part of the face would stay unground.
+TEST(Validation, OnlyThePassFaceUngroundIsSaidToStayUnground) {
+  auto s = makeScenario(kSeed, 452);
+  ASSERT_TRUE(s.ok());
+  const ScenarioOutcome o = runScenario(*s);
+  ASSERT_GE(o.passes.size(), 1u);
+  const PassOutcome& p = o.passes[0];
+  EXPECT_FALSE(p.refused) << p.message;
+  EXPECT_GT(p.predictedRmsHigh, p.measuredRms);
+  EXPECT_NE(p.verdict.find("The bound is above the face measured"), std::string::npos) << p.verdict;
+  EXPECT_EQ(p.verdict.find("part of it would stay unground"), std::string::npos) << p.verdict;
+}
+
 // The bound on a pass with the wheel's shape identified alongside (face_prediction.h,
 // fromResimulated). Scenario 35 (wheel class): the faces each sampled error moves are measured
 // from faces re-simulated without it; measured from the model's faces, which hold the wheel's
