@@ -212,6 +212,7 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
   m.passesJoined = j.earlier;
   // Nothing is left out by construction: the faces decide every direction.
   m.space.basis = Eigen::MatrixXd::Identity(q, q);
+  if (m.soughtAllTheSame.empty()) m.soughtAllTheSame = std::move(m.space.structural);
   m.space.structural.clear();
   m.historyNote.clear();
 }
@@ -271,6 +272,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
       keep(m, std::move(*j.found).value(), j.e0, measured, 0);
       m.summary.reason += " Sought over every coefficient, the directions the face shows only at second order too.";
       m.space.basis = Eigen::MatrixXd::Identity(q, q);
+      m.soughtAllTheSame = std::move(m.space.structural);
       m.space.structural.clear();
       m.structuralFreed = true;
     }

@@ -52,6 +52,10 @@ struct MachineErrorEstimate {
   // there explains the face to it (the second-order change shows those directions). The bound then
   // samples what the sensitivities at E do not show (face_prediction.h).
   bool structuralFreed = false;
+  // The structural null space's combinations sought all the same, by the free search on this face
+  // (structuralFreed) or over the pass history's faces (passesJoined): what one face does not show
+  // to first order. space.structural is then empty (nothing left out).
+  std::vector<UnobservableCombination> soughtAllTheSame;
   // When joined: the sensitivities of every face at E (all their points x q), and the data E
   // explains there, linearised: every face's misfit left plus historyJacobian * E (µm). What is
   // read of each axis (identified_axes.h) rests on all the faces, as E does.

@@ -187,6 +187,15 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.amplifyingDropped = est.amplifying;
     c.withinNoise = est.withinNoise;
     c.unobservable = est.space.structural;
+    // What one face does not show to first order, sought all the same (machine_error.h): said so.
+    for (UnobservableCombination u : est.soughtAllTheSame) {
+      u.description += est.passesJoined > 0
+                           ? " on one face to first order; sought all the same over this face and the earlier passes' faces "
+                             "together, which show it"
+                           : " to first order; sought all the same, since this face is not explained to the probe noise "
+                             "without it (away from the nominal axes it moves the face at second order)";
+      c.unobservable.push_back(std::move(u));
+    }
     c.passesJoined = est.passesJoined;
     historyNote = est.historyNote;
     historyJacobian = est.historyJacobian;

@@ -687,7 +687,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
              kWithMeasured}, c.withinNoise);
     std::vector<std::string> unobservable;
     for (const UnobservableCombination& u : c.unobservable) unobservable.push_back(u.description);
-    v.texts({"correction.unobservable", "", "sentences: coefficient combinations the grid cannot see (left out of the error and the change)", kWithMeasured},
+    v.texts({"correction.unobservable", "", "sentences: coefficient combinations the grid cannot see to first order: left out of the error and the change, or, where the sentence says so, sought all the same", kWithMeasured},
             unobservable);
     v.number({"correction.uncorrectableShare", "", "share of the measured sum of squares predicted to stay after the pass, 0..1",
               kWithMeasured}, c.uncorrectableShare);

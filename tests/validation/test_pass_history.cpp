@@ -100,7 +100,13 @@ TEST(PassHistory, AFaceAboveTheNoiseIsSoughtOverEveryCoefficient) {
   c.measured = p.firstMeasured;
   c.correction.probeNoise = 0.01;
   const Correction k = corrected(c);
-  EXPECT_TRUE(k.unobservable.empty());
+  // What the face does not show to first order is named, and said to be sought all the same.
+  ASSERT_FALSE(k.unobservable.empty());
+  for (const UnobservableCombination& u : k.unobservable)
+    EXPECT_NE(u.description.find("to first order; sought all the same, since this face is not explained to the probe "
+                                 "noise without it"),
+              std::string::npos)
+        << u.description;
   const double left = rms(groundOnMachine(p, k.axes));
   EXPECT_LT(left, 10.0);
   // The bound (408 µm) is above the face measured (129 µm), and the verdict says so.
@@ -181,6 +187,13 @@ TEST(PassHistory, TheFirstPasssFaceFindsTheErrorTheSecondFaceAloneCannot) {
   EXPECT_EQ(joined.summary.status, SolveStatus::Converged);
   EXPECT_NE(joined.verdict.find("identified from this face and the 1 earlier pass's face together"), std::string::npos)
       << joined.verdict;
+  // X against A (a helical gash): left out from one face, sought over both.
+  ASSERT_FALSE(joined.unobservable.empty());
+  for (const UnobservableCombination& u : joined.unobservable)
+    EXPECT_NE(u.description.find("on one face to first order; sought all the same over this face and the earlier "
+                                 "passes' faces together"),
+              std::string::npos)
+        << u.description;
   const double leftAlone = rms(groundOnMachine(p, alone.axes)), leftJoined = rms(groundOnMachine(p, joined.axes));
   EXPECT_GT(leftAlone, 1.0);
   EXPECT_LT(leftJoined, 0.1);
