@@ -163,6 +163,13 @@ void expectTargets(const char* hob, const CaseInput& c, double target, double pr
     EXPECT_GT(w.axesShare, 0.1);
     EXPECT_NEAR(w.axesShare + w.wheelShare + k.uncorrectableShare, 1.0, 1e-6);
     EXPECT_NE(k.verdict.find("Correctable with the wheel"), std::string::npos) << k.verdict;
+    // The verdict quotes the prediction with its bound (issue 20), not the model's misfit.
+    EXPECT_NE(k.verdict.find("on the probe grid the face measured "), std::string::npos) << k.verdict;
+    EXPECT_NE(k.verdict.find("will be left "), std::string::npos) << k.verdict;
+    EXPECT_TRUE(k.verdict.find(" µm rms, at most ") != std::string::npos ||
+                k.verdict.find("within the probe noise, at most ") != std::string::npos)
+        << k.verdict;
+    EXPECT_EQ(k.verdict.find("predicted sum of squares"), std::string::npos) << k.verdict;
     print(hob, ("degree " + std::to_string(degree) + " + axes").c_str(), p);
   }
   SCOPED_TRACE(std::string(hob) + ", pure axis error");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <sstream>
 
 #include <Eigen/SVD>
 
@@ -56,6 +57,17 @@ Eigen::MatrixXd rowsOf(const Eigen::MatrixXd& m, const std::vector<int>& at) {
 }
 
 }  // namespace
+
+std::string predictionText(const Correction& c) {
+  std::ostringstream leaves;
+  leaves.precision(3);
+  leaves << "the face measured " << c.before.rms << " µm rms will be left ";
+  if (c.predictedRms > 0) leaves << "at about " << c.predictedRms << " µm rms, ";
+  else leaves << "within the probe noise, ";
+  leaves << "at most " << c.predictedRmsHigh << " µm rms";
+  if (c.predictedUnseenPart > 0) leaves << " if the error the face cannot show is no larger than the one it shows";
+  return leaves.str();
+}
 
 FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,
                            const AxisPolynomials& run, const GroundFace& runFace, const Correction& c,

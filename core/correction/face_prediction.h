@@ -16,6 +16,8 @@
 // larger than the one it shows.
 #pragma once
 
+#include <string>
+
 #include <Eigen/Core>
 
 #include "axis_polynomials.h"
@@ -61,6 +63,11 @@ struct UnseenSampling {
   // face left on the campaign's wheel passes.)
   bool fromResimulated = false;
 };
+
+// What the pass leaves, as c's prediction and its bound state it, for a verdict: "the face
+// measured 3 µm rms will be left at about 0.01 µm rms, at most 0.05 µm rms [if the error the face
+// cannot show is no larger than the one it shows]".
+std::string predictionText(const Correction& c);
 
 FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,
                            const AxisPolynomials& run, const GroundFace& runFace, const Correction& c,

@@ -58,13 +58,7 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
   std::ostringstream v;
   v.precision(3);
   // What the pass leaves, as the prediction and its bound state it (face_prediction.h).
-  std::ostringstream leaves;
-  leaves.precision(3);
-  leaves << "the face measured " << c.before.rms << " µm rms will be left ";
-  if (c.predictedRms > 0) leaves << "at about " << c.predictedRms << " µm rms, ";
-  else leaves << "within the probe noise, ";
-  leaves << "at most " << c.predictedRmsHigh << " µm rms";
-  if (c.predictedUnseenPart > 0) leaves << " if the error the face cannot show is no larger than the one it shows";
+  const std::string leaves = predictionText(c);
   // Within the noise: the rms left is at most twice the probe's sigma.
   const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
   // A bound above the face measured: the pass may leave the face worse than it is, and the verdict
@@ -78,7 +72,7 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
       << o.probeNoise << " µm); another pass would only move noise. Keep the axes run.";
   } else if (unsure) {
     v << "Uncertain: the face does not show enough of the machine's error to say that this pass improves it; "
-      << leaves.str();
+      << leaves;
     if (c.predictedUngrindable > 0)
       v << ", and with some of the errors it cannot show the wheel would not reach part of the face (part of it "
            "would stay unground)";
@@ -91,16 +85,16 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
            "explains this face and the next together.";
   } else if (c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence) {
     v << "Identification " << (c.summary.status == SolveStatus::Stalled ? "stalled" : "did not converge")
-      << "; the best estimate is proposed: " << leaves.str() << ". " << c.summary.reason;
+      << "; the best estimate is proposed: " << leaves << ". " << c.summary.reason;
   } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
     v << "Correctable: the axes can cancel the measured deviation"
       << (withinNoise && c.uncorrectableShare > o.correctableShare ? " down to the probe noise" : "")
-      << "; " << leaves.str() << ".";
+      << "; " << leaves << ".";
   } else {
     v << "Partly uncorrectable: " << 100 * c.uncorrectableShare
       << " % of the sum of squares is a shape no axis polynomial produces (such as a second-degree "
          "shape along the radius); it stays in the residual: "
-      << leaves.str() << ". Correct the wheel profile to remove it.";
+      << leaves << ". Correct the wheel profile to remove it.";
   }
   return v.str();
 }

@@ -1,4 +1,5 @@
 #include "wheel_correction.h"
+#include "face_prediction.h"
 #include "face_vectors.h"
 #include "number_text.h"
 #include "units.h"
@@ -13,7 +14,9 @@ namespace hobsharp {
 namespace {
 
 // The sentence for the engineer when the solve converged and a change is proposed; otherwise the
-// axes' own sentence (stalled, not converged, run kept) stands.
+// axes' own sentence (stalled, not converged, run kept) stands. What the pass leaves is the
+// prediction and its bound on the probe grid (face_prediction.h), as the axes' verdict states it;
+// a bound above the face measured keeps the axes' "Uncertain:" verdict and names the dressing.
 std::string verdictOf(const Correction& c, const WheelCorrection& w, const CorrectionOptions& o, int points) {
   double largest = 0;
   for (double x : w.offset) largest = std::max(largest, std::abs(x));
@@ -22,14 +25,17 @@ std::string verdictOf(const Correction& c, const WheelCorrection& w, const Corre
   const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
   const std::string split = "the axes remove " + percentText(w.axesShare) + " of the measured sum of squares, the wheel " +
                             percentText(w.wheelShare);
-  if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
+  if (c.predictedRmsHigh > c.before.rms) {
+    v << c.verdict << " The wheel's dressing proposed with it is at most " << largest << " µm (the dresser path; " << split
+      << ").";
+  } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
     v << "Correctable with the wheel: run the axes proposed and dress the wheel by the offset proposed, at most "
-      << largest << " µm (the dresser path); predicted sum of squares " << squaresText(c.after.sse) << " µm², from "
-      << squaresText(c.before.sse) << " µm² (" << split << ").";
+      << largest << " µm (the dresser path); on the probe grid " << predictionText(c) << " (" << split << ").";
   } else {
     v << "Partly uncorrectable: " << percentText(c.uncorrectableShare)
       << " of the sum of squares is a shape neither the axes nor a smooth wheel profile through "
-      << w.knots.R.size() << " points make; it stays in the residual (" << split << ").";
+      << w.knots.R.size() << " points make; it stays in the residual: on the probe grid " << predictionText(c) << " ("
+      << split << ").";
   }
   return v.str();
 }
