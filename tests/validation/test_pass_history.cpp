@@ -71,6 +71,12 @@ CaseInput secondCase(const Passes& p, bool withHistory, const Eigen::MatrixXd* f
   return c;
 }
 
+// Every combination one face does not show is named in c.unobservable with `words`.
+void expectSoughtAllTheSame(const Correction& c, const std::string& words) {
+  ASSERT_FALSE(c.unobservable.empty());
+  for (const UnobservableCombination& u : c.unobservable) EXPECT_NE(u.description.find(words), std::string::npos) << u.description;
+}
+
 Correction corrected(const CaseInput& c) {
   auto e = evaluate(*resolveJob(c));
   EXPECT_TRUE(e.ok() && e->correction) << (e ? "" : e.error().message);
@@ -101,12 +107,8 @@ TEST(PassHistory, AFaceAboveTheNoiseIsSoughtOverEveryCoefficient) {
   c.correction.probeNoise = 0.01;
   const Correction k = corrected(c);
   // What the face does not show to first order is named, and said to be sought all the same.
-  ASSERT_FALSE(k.unobservable.empty());
-  for (const UnobservableCombination& u : k.unobservable)
-    EXPECT_NE(u.description.find("to first order; sought all the same, since this face is not explained to the probe "
-                                 "noise without it"),
-              std::string::npos)
-        << u.description;
+  expectSoughtAllTheSame(k, "to first order; sought all the same, since this face is not explained to the probe noise "
+                            "without it");
   const double left = rms(groundOnMachine(p, k.axes));
   EXPECT_LT(left, 10.0);
   // The bound (408 µm) is above the face measured (129 µm), and the verdict says so.
@@ -188,12 +190,8 @@ TEST(PassHistory, TheFirstPasssFaceFindsTheErrorTheSecondFaceAloneCannot) {
   EXPECT_NE(joined.verdict.find("identified from this face and the 1 earlier pass's face together"), std::string::npos)
       << joined.verdict;
   // X against A (a helical gash): left out from one face, sought over both.
-  ASSERT_FALSE(joined.unobservable.empty());
-  for (const UnobservableCombination& u : joined.unobservable)
-    EXPECT_NE(u.description.find("on one face to first order; sought all the same over this face and the earlier "
-                                 "passes' faces together"),
-              std::string::npos)
-        << u.description;
+  expectSoughtAllTheSame(joined, "on one face to first order; sought all the same over this face and the earlier "
+                                 "passes' faces together");
   const double leftAlone = rms(groundOnMachine(p, alone.axes)), leftJoined = rms(groundOnMachine(p, joined.axes));
   EXPECT_GT(leftAlone, 1.0);
   EXPECT_LT(leftJoined, 0.1);

@@ -27,6 +27,14 @@ const Campaign& campaign() {
   return c;
 }
 
+// The default campaign's scenario `index`, run (an empty outcome, and a failure, if it cannot be
+// made).
+ScenarioOutcome outcomeOf(int index) {
+  auto s = makeScenario(kSeed, index);
+  EXPECT_TRUE(s.ok()) << "scenario " << index;
+  return s ? runScenario(*s) : ScenarioOutcome{};
+}
+
 const ClassSummary& classOf(ScenarioClass k) { return campaign().classes[static_cast<int>(k)]; }
 
 // One test, so that the campaign runs once per CTest run (each test is a process of its own).
@@ -95,9 +103,7 @@ TEST(Validation, AStalledFirstPassIsSoughtOverEveryCoefficientNotRefused) {
 // the machine, cannot simulate the face the proposal grinds either. Scenario 0's proposal (3 µm
 // rms) is bounded well below its face and says nothing of the kind.
 TEST(Validation, ABoundAboveTheFaceMeasuredIsSaid) {
-  auto s = makeScenario(kSeed, 152);
-  ASSERT_TRUE(s.ok());
-  const ScenarioOutcome o = runScenario(*s);
+  const ScenarioOutcome o = outcomeOf(152);
   ASSERT_GE(o.passes.size(), 1u);
   const PassOutcome& p = o.passes[0];
   EXPECT_GT(p.predictedRmsHigh, p.measuredRms);
@@ -108,9 +114,7 @@ TEST(Validation, ABoundAboveTheFaceMeasuredIsSaid) {
             0u)
       << p.verdict;
   EXPECT_NE(p.verdict.find("part of it would stay unground"), std::string::npos) << p.verdict;
-  auto t = makeScenario(kSeed, 0);
-  ASSERT_TRUE(t.ok());
-  const ScenarioOutcome q = runScenario(*t);
+  const ScenarioOutcome q = outcomeOf(0);
   ASSERT_GE(q.passes.size(), 1u);
   EXPECT_LT(q.passes[0].predictedRmsHigh, q.passes[0].measuredRms);
   EXPECT_EQ(q.passes[0].verdict.rfind("Correctable: ", 0), 0u) << q.passes[0].verdict;
@@ -122,9 +126,7 @@ TEST(Validation, ABoundAboveTheFaceMeasuredIsSaid) {
 // module cannot simulate, none the face the pass grinds; the pass is ground (not refused). Those 3
 // made the verdict say that part of the face would stay unground.
 TEST(Validation, OnlyThePassFaceUngroundIsSaidToStayUnground) {
-  auto s = makeScenario(kSeed, 452);
-  ASSERT_TRUE(s.ok());
-  const ScenarioOutcome o = runScenario(*s);
+  const ScenarioOutcome o = outcomeOf(452);
   ASSERT_GE(o.passes.size(), 1u);
   const PassOutcome& p = o.passes[0];
   EXPECT_FALSE(p.refused) << p.message;
