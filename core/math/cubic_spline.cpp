@@ -8,13 +8,15 @@
 
 namespace hobsharp {
 
+namespace {
+
 // The natural spline's equations for the interior second derivatives (i = 1 .. n-2):
 //   h_{i-1} m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_i m_{i+1} = 6 ((y_{i+1}-y_i)/h_i - (y_i-y_{i-1})/h_{i-1}),
 // with m_0 = m_{n-1} = 0: symmetric, tridiagonal and diagonally dominant, solved by Eigen's sparse
 // LDL^T once for the unit right-hand sides, so that m = s y.
-CubicSpline::CubicSpline(std::vector<double> x, std::vector<double> y) : x_(std::move(x)), y_(std::move(y)) {
-  const int n = static_cast<int>(x_.size());
-  s_ = Eigen::MatrixXd::Zero(n, n);
+Eigen::MatrixXd naturalWeights(const std::vector<double>& x) {
+  const int n = static_cast<int>(x.size());
+  Eigen::MatrixXd s = Eigen::MatrixXd::Zero(n, n);
   if (n > 2) {
     const int k = n - 2;
     Eigen::SparseMatrix<double> A(k, k);
@@ -22,7 +24,7 @@ CubicSpline::CubicSpline(std::vector<double> x, std::vector<double> y) : x_(std:
     Eigen::MatrixXd C = Eigen::MatrixXd::Zero(k, n);  // right-hand side per knot value
     for (int r = 0; r < k; ++r) {
       const int i = r + 1;
-      const double h0 = x_[i] - x_[i - 1], h1 = x_[i + 1] - x_[i];
+      const double h0 = x[i] - x[i - 1], h1 = x[i + 1] - x[i];
       entries.emplace_back(r, r, 2 * (h0 + h1));
       if (r > 0) entries.emplace_back(r, r - 1, h0);
       if (r + 1 < k) entries.emplace_back(r, r + 1, h1);
@@ -32,23 +34,21 @@ CubicSpline::CubicSpline(std::vector<double> x, std::vector<double> y) : x_(std:
     }
     A.setFromTriplets(entries.begin(), entries.end());
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
-    s_.middleRows(1, k) = ldlt.solve(C);
+    s.middleRows(1, k) = ldlt.solve(C);
   }
-  m_ = s_ * Eigen::Map<const Eigen::VectorXd>(y_.data(), n);
+  return s;
 }
 
 // Not-a-knot: the same interior equations, and at each end the third derivative continuous across
 // the first (last) interior knot, (m_1 - m_0)/h_0 = (m_2 - m_1)/h_1; a small dense system (the
 // knots of a wheel profile: a few to a few dozen), solved by LU once for the unit right-hand sides.
 // With 3 knots both end conditions are one: m_0 = m_1 = m_2, the parabola; with 2, the line.
-CubicSpline CubicSpline::notAKnot(std::vector<double> x, std::vector<double> y) {
-  CubicSpline c(std::move(x), std::move(y));
-  const int n = static_cast<int>(c.x_.size());
-  if (n < 3) return c;
-  const std::vector<double>& X = c.x_;
+Eigen::MatrixXd notAKnotWeights(const std::vector<double>& x) {
+  const int n = static_cast<int>(x.size());
+  if (n < 3) return Eigen::MatrixXd::Zero(n, n);
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n), C = Eigen::MatrixXd::Zero(n, n);
   for (int i = 1; i + 1 < n; ++i) {
-    const double h0 = X[i] - X[i - 1], h1 = X[i + 1] - X[i];
+    const double h0 = x[i] - x[i - 1], h1 = x[i + 1] - x[i];
     A(i, i - 1) = h0;
     A(i, i) = 2 * (h0 + h1);
     A(i, i + 1) = h1;
@@ -60,15 +60,28 @@ CubicSpline CubicSpline::notAKnot(std::vector<double> x, std::vector<double> y) 
     A(0, 0) = 1, A(0, 1) = -1;  // m_0 = m_1
     A(2, 1) = 1, A(2, 2) = -1;  // m_1 = m_2
   } else {
-    const double a0 = X[1] - X[0], a1 = X[2] - X[1];
+    const double a0 = x[1] - x[0], a1 = x[2] - x[1];
     A(0, 0) = -1 / a0, A(0, 1) = 1 / a0 + 1 / a1, A(0, 2) = -1 / a1;
     const int k = n - 1;
-    const double b0 = X[k - 1] - X[k - 2], b1 = X[k] - X[k - 1];
+    const double b0 = x[k - 1] - x[k - 2], b1 = x[k] - x[k - 1];
     A(k, k - 2) = -1 / b0, A(k, k - 1) = 1 / b0 + 1 / b1, A(k, k) = -1 / b1;
   }
-  c.s_ = A.partialPivLu().solve(C);
-  c.m_ = c.s_ * Eigen::Map<const Eigen::VectorXd>(c.y_.data(), n);
-  return c;
+  return A.partialPivLu().solve(C);
+}
+
+}  // namespace
+
+CubicSpline::CubicSpline(std::vector<double> x, std::vector<double> y, Eigen::MatrixXd s)
+    : x_(std::move(x)), y_(std::move(y)), s_(std::move(s)) {
+  m_ = s_ * Eigen::Map<const Eigen::VectorXd>(y_.data(), static_cast<Eigen::Index>(y_.size()));
+}
+
+CubicSpline::CubicSpline(std::vector<double> x, std::vector<double> y)
+    : CubicSpline(x, std::move(y), naturalWeights(x)) {}
+
+CubicSpline CubicSpline::notAKnot(std::vector<double> x, std::vector<double> y) {
+  Eigen::MatrixXd s = notAKnotWeights(x);
+  return CubicSpline(std::move(x), std::move(y), std::move(s));
 }
 
 std::size_t CubicSpline::segment(double t) const {

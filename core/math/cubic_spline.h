@@ -54,6 +54,9 @@ class CubicSpline {
   Eigen::VectorXd m_;  // second derivatives at the knots
   Eigen::MatrixXd s_;  // m = s y: the second derivatives per knot value (for `basis`)
 
+  // The knots with the second derivatives per knot value, s (n x n), already solved.
+  CubicSpline(std::vector<double> x, std::vector<double> y, Eigen::MatrixXd s);
+
   std::size_t segment(double t) const;
 };
 
