@@ -146,6 +146,15 @@ double misfitOf(const FreeSearch& j) {
   return std::sqrt((*j.found)->summary.finalCost / static_cast<double>(j.total));
 }
 
+// m's estimate is one sought over every free coefficient: nothing is left out, and what one face
+// does not show to first order is kept as sought all the same.
+void soughtOverEveryCoefficient(MachineErrorEstimate& m) {
+  const int q = static_cast<int>(m.space.coefficients.size());
+  m.space.basis = Eigen::MatrixXd::Identity(q, q);
+  if (m.soughtAllTheSame.empty()) m.soughtAllTheSame = std::move(m.space.structural);
+  m.space.structural.clear();
+}
+
 // E sought over every free coefficient so that it explains each pass's face and this one together
 // (machine_error.h). Replaces m's estimate when the solve converges (every face explained to the
 // probe noise); otherwise sets m.historyNote.
@@ -188,7 +197,7 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
     // ran out of iterations or stalled may have explained them already (a misfit within the noise).
     std::ostringstream misfit;
     misfit.precision(2);
-    if (found) misfit << " (" << std::sqrt(found->summary.finalCost / static_cast<double>(j.total)) << " µm rms left)";
+    if (found) misfit << " (" << misfitOf(j) << " µm rms left)";
     const SolveStatus st = found ? found->summary.status : SolveStatus::Failed;
     if (st == SolveStatus::AboveNoise)
       m.historyNote = "No one machine error explains " + these + " to the probe noise" + misfit.str() + left +
@@ -211,9 +220,7 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
   m.summary.reason += " Identified from " + these + " together" + left + ".";
   m.passesJoined = j.earlier;
   // Nothing is left out by construction: the faces decide every direction.
-  m.space.basis = Eigen::MatrixXd::Identity(q, q);
-  if (m.soughtAllTheSame.empty()) m.soughtAllTheSame = std::move(m.space.structural);
-  m.space.structural.clear();
+  soughtOverEveryCoefficient(m);
   m.historyNote.clear();
 }
 
@@ -271,10 +278,7 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
     if (converged(j)) {
       keep(m, std::move(*j.found).value(), j.e0, measured, 0);
       m.summary.reason += " Sought over every coefficient, the directions the face shows only at second order too.";
-      m.space.basis = Eigen::MatrixXd::Identity(q, q);
-      m.soughtAllTheSame = std::move(m.space.structural);
-      m.space.structural.clear();
-      m.structuralFreed = true;
+      soughtOverEveryCoefficient(m);
     }
   }
   if (history && !history->empty() && !runFace.atProbes()) joinHistory(m, setup, run, runFace, measured, o, *history);

@@ -47,15 +47,15 @@ struct MachineErrorEstimate {
   // The earlier passes whose faces E explains together with this one (identifyMachineError with a
   // history), and, when there were earlier passes but E is this face's alone, why (a sentence).
   int passesJoined = 0;
-  // True when the structural null space was freed on this face alone: the identification over
-  // the identifiable space ended above the noise, and E sought over every free coefficient from
-  // there explains the face to it (the second-order change shows those directions). The bound then
-  // samples what the sensitivities at E do not show (face_prediction.h).
-  bool structuralFreed = false;
   // The structural null space's combinations sought all the same, by the free search on this face
   // (structuralFreed) or over the pass history's faces (passesJoined): what one face does not show
   // to first order. space.structural is then empty (nothing left out).
   std::vector<UnobservableCombination> soughtAllTheSame;
+  // The structural null space freed on this face alone: the identification over the identifiable
+  // space did not explain the face to the noise, and E sought over every free coefficient from
+  // there does (the second-order change shows those directions). The bound then samples what the
+  // sensitivities at E do not show (face_prediction.h).
+  bool structuralFreed() const { return passesJoined == 0 && !soughtAllTheSame.empty(); }
   // When joined: the sensitivities of every face at E (all their points x q), and the data E
   // explains there, linearised: every face's misfit left plus historyJacobian * E (µm). What is
   // read of each axis (identified_axes.h) rests on all the faces, as E does.

@@ -195,7 +195,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     historyJacobian = est.historyJacobian;
     historyLinearised = est.historyLinearised;
     historyLeftOut = est.historyLeftOut;
-    freed = est.structuralFreed;
+    freed = est.structuralFreed();
     unexplained = est.unexplained;
     // nominal - E; a locked coefficient stays as run.
     c.axes = run;

@@ -98,7 +98,7 @@ TEST(PassHistory, AFaceAboveTheNoiseIsSoughtOverEveryCoefficient) {
   ASSERT_TRUE(face.ok());
   auto m = identifyMachineError(job->setup, p.firstRun, *face, p.firstMeasured, o);
   ASSERT_TRUE(m.ok());
-  EXPECT_TRUE(m->structuralFreed);
+  EXPECT_TRUE(m->structuralFreed());
   EXPECT_TRUE(m->space.structural.empty());
   EXPECT_EQ(m->summary.status, SolveStatus::Converged) << m->summary.reason;
   EXPECT_LE(m->summary.finalCost, noiseCeiling(face->size(), o.probeNoise));
