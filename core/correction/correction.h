@@ -79,6 +79,9 @@ struct Correction {
   bool stop = false;
   // The axes run are proposed unchanged (run kept, or stop): so is the wheel, with no dressing.
   bool keepsRun() const { return runKept || stop; }
+  // A change is proposed whose bound is above the face measured: the face does not show enough of
+  // the machine's error to say that the pass improves it (the verdicts lead with "Uncertain:").
+  bool uncertain() const { return !keepsRun() && predictedRmsHigh > before.rms; }
   // The axes run alone grind no face the wheel envelops (a pass after a large machine error): the
   // correction was linearised at the nominal axes instead, from the face measured.
   bool linearisedAtNominal = false;

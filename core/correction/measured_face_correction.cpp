@@ -61,31 +61,30 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
   const std::string leaves = predictionText(c);
   // Within the noise: the rms left is at most twice the probe's sigma.
   const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
-  // A bound above the face measured: the pass may leave the face worse than it is, and the verdict
-  // leads with that, not with what the identified model would leave.
-  const bool unsure = !c.stop && !c.runKept && c.predictedRmsHigh > c.before.rms;
+  // An identification that stalled or ran out of iterations, in a word.
+  const bool unfinished = c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence;
+  const char* how = c.summary.status == SolveStatus::Stalled ? "stalled" : "did not converge";
   if (c.runKept) {
     v << "No change proposed: the correction found would leave a sum of squares of " << squaresText(c.discardedSse)
       << " µm², more than the " << squaresText(c.before.sse) << " µm² measured, so the axes run stay as they are.";
   } else if (c.stop) {
     v << "Stop: the measured face (" << std::setprecision(2) << c.before.rms << " µm rms) is within the probe noise (sigma "
       << o.probeNoise << " µm); another pass would only move noise. Keep the axes run.";
-  } else if (unsure) {
+  } else if (c.uncertain()) {
+    // A bound above the face measured: the pass may leave the face worse than it is, and the
+    // verdict leads with that, not with what the identified model would leave.
     v << "Uncertain: the face does not show enough of the machine's error to say that this pass improves it; "
       << leaves;
     if (c.predictedUngrindable > 0)
       v << ", and with some of the errors it cannot show the wheel would not reach part of the face (part of it "
            "would stay unground)";
     v << ".";
-    if (c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence)
-      v << " The identification " << (c.summary.status == SolveStatus::Stalled ? "stalled" : "did not converge")
-        << ": " << c.summary.reason;
+    if (unfinished) v << " The identification " << how << ": " << c.summary.reason;
     if (historyNext)
       v << " If it is ground, keep this pass in the case: a next pass measured on the grid seeks one error that "
            "explains this face and the next together.";
-  } else if (c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence) {
-    v << "Identification " << (c.summary.status == SolveStatus::Stalled ? "stalled" : "did not converge")
-      << "; the best estimate is proposed: " << leaves << ". " << c.summary.reason;
+  } else if (unfinished) {
+    v << "Identification " << how << "; the best estimate is proposed: " << leaves << ". " << c.summary.reason;
   } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
     v << "Correctable: the axes can cancel the measured deviation"
       << (withinNoise && c.uncorrectableShare > o.correctableShare ? " down to the probe noise" : "")

@@ -25,7 +25,7 @@ std::string verdictOf(const Correction& c, const WheelCorrection& w, const Corre
   const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
   const std::string split = "the axes remove " + percentText(w.axesShare) + " of the measured sum of squares, the wheel " +
                             percentText(w.wheelShare);
-  if (c.predictedRmsHigh > c.before.rms) {
+  if (c.uncertain()) {
     v << c.verdict << " The wheel's dressing proposed with it is at most " << largest << " µm (the dresser path; " << split
       << ").";
   } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
