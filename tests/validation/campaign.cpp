@@ -88,6 +88,12 @@ Campaign summarise(std::uint64_t seed, std::vector<ScenarioOutcome> outcomes, do
         const double v = goals[i].rounded ? (p && !p->refused ? p->denseRmsRounded : o.initialDenseRms) : last;
         if (!refused && v <= goals[i].limit) ++s.targets[i].met;
       }
+      if (o.scenario.spec.passes == 1 && !goals.empty() && (refused || last > goals[0].limit)) {
+        ++s.misses;
+        if (p && !p->refused && p->twinMisfit >= 0 && p->twinMisfit <= p->probeNoise &&
+            p->twinGap > 2 * goals[0].limit)
+          ++s.twins;
+      }
       for (const PassOutcome& q : o.passes) {
         if (q.refused) continue;
         Target& within = noisy(s.kind) ? inNoisy : inNoiseFree;
@@ -133,6 +139,15 @@ std::string micrometres(double v) {
   return s.str();
 }
 
+// The misses one face cannot avoid (ClassSummary::twins), in words.
+std::string twinsText(const ClassSummary& s) {
+  std::ostringstream t;
+  t << s.twins << " of its " << s.misses << (s.twins == 1 ? " misses has" : " misses have") << " a twin machine: the identified error grinds a face within "
+    << "the declared probe noise of the one measured, and the same axes leave the two faces more than twice the limit "
+       "apart (whatever one face's correction proposes, one of the two machines keeps more than the limit)";
+  return t.str();
+}
+
 }  // namespace
 
 nlohmann::json toJson(const Campaign& c) {
@@ -145,7 +160,8 @@ nlohmann::json toJson(const Campaign& c) {
   for (const ClassSummary& s : c.classes) {
     nlohmann::json k = {{"class", className(s.kind)}, {"title", classTitle(s.kind)}, {"count", s.count},
                         {"refused", s.refused}, {"unjudged", s.unjudged}, {"median", s.median}, {"p90", s.p90},
-                        {"p95", s.p95}, {"worst", s.worst}, {"finals", s.finals}};
+                        {"p95", s.p95}, {"worst", s.worst}, {"finals", s.finals}, {"misses", s.misses},
+                        {"twins", s.twins}};
     for (const Target& t : s.targets) k["targets"].push_back(targetJson(t));
     j["classes"].push_back(k);
   }
@@ -162,7 +178,7 @@ nlohmann::json toJson(const Campaign& c) {
                           {"status", p.status}, {"verdict", p.verdict}, {"rank", p.rank},
                           {"withinNoise", p.withinNoise}, {"amplifying", p.amplifying}, {"iterations", p.iterations},
                           {"linearisedAtNominal", p.linearisedAtNominal}, {"passesJoined", p.passesJoined}, {"stop", p.stopAdvised},
-                          {"unsolvableTrials", p.unsolvableTrials}};
+                          {"unsolvableTrials", p.unsolvableTrials}, {"twinMisfit", p.twinMisfit}, {"twinGap", p.twinGap}};
       if (!p.message.empty()) q["message"] = p.message;
       s["passes"].push_back(q);
     }
@@ -184,6 +200,7 @@ std::string tableText(const Campaign& c) {
     for (const Target& g : s.targets)
       t << "  " << (g.holds() ? "met    " : "MISSED ") << percent(g.share()) << " (" << g.met << "/" << g.of
         << ", asked " << percent(g.required) << "): " << g.what << "\n";
+    if (s.twins > 0) t << "  " << twinsText(s) << "\n";
   }
   t << "\nThe prediction's bound:\n";
   for (const Target& g : c.bounds)
@@ -209,6 +226,8 @@ std::string markdownTable(const Campaign& c) {
       t << g.what << " | " << (g.holds() ? "" : "**") << percent(g.share()) << (g.holds() ? "" : "**") << " ("
         << percent(g.required) << ") |\n";
     }
+  for (const ClassSummary& s : c.classes)
+    if (s.twins > 0) t << "\n" << classTitle(s.kind) << ": " << twinsText(s) << ".\n";
   t << "\n| the prediction's bound | share (asked) |\n|---|---|\n";
   for (const Target& g : c.bounds)
     t << "| " << g.what << " | " << (g.holds() ? "" : "**") << percent(g.share()) << (g.holds() ? "" : "**") << " ("

@@ -30,6 +30,11 @@ struct ClassSummary {
   double median = 0, p90 = 0, p95 = 0, worst = 0;
   std::vector<double> finals;  // sorted, for the empirical distribution
   std::vector<Target> targets;
+  // Of a one-pass class's scenarios missing its first target, those with a twin machine
+  // (run_scenario.h) that grinds a face within the declared probe noise of the one measured and
+  // that the same axes leave more than twice the limit apart: whatever one face's correction
+  // proposes, it leaves more than the limit on one of the two.
+  int misses = 0, twins = 0;
 };
 
 struct Campaign {

@@ -53,6 +53,10 @@ Outcome<double> rmsOf(const SharpeningJob& machine, const AxisPolynomials& comma
   return topographyOf(*f).rms;
 }
 
+double rmsOfDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return std::sqrt((a - b).squaredNorm() / static_cast<double>(a.size()));
+}
+
 }  // namespace
 
 ScenarioOutcome runScenario(const Scenario& s) {
@@ -150,6 +154,17 @@ ScenarioOutcome runScenario(const Scenario& s) {
                      (!probe ? probe.error() : !denseRms ? denseRms.error() : rounded.error()).message);
       break;
     }
+    if (!e->wheelCorrection) {
+      // The twin machine (run_scenario.h): the true wheel with the identified error.
+      auto twin = simulateGroundFace(after->setup, plusError(run, k.identifiedError), after->grid, Sensitivities::Skip);
+      auto twinLeft = simulateGroundFace(after->setup, plusError(k.axes, k.identifiedError), dense, Sensitivities::Skip);
+      auto left = simulateGroundFace(after->setup, plusError(k.axes, s.error), dense, Sensitivities::Skip);
+      if (twin && twinLeft && left) {
+        p.twinMisfit = rmsOfDifference(topographyOf(*twin).normal, measured);
+        p.twinGap = rmsOfDifference(topographyOf(*twinLeft).normal, topographyOf(*left).normal);
+      }
+    }
+    p.probeNoise = *c.correction.probeNoise;
     p.probeRms = *probe;
     p.denseRms = *denseRms;
     p.denseRmsRounded = *rounded;

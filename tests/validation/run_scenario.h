@@ -30,7 +30,14 @@ struct PassOutcome {
   bool stopAdvised = false;
   bool linearisedAtNominal = false;  // the axes run alone could not be simulated
   int passesJoined = 0;              // correction.passesJoined: earlier passes identified with
-  int unsolvableTrials = 0;          // trial faces the wheel could not grind (rejected steps)  // the verdict says to stop: the face is within the probe noise
+  int unsolvableTrials = 0;          // trial faces the wheel could not grind (rejected steps)
+  // The twin machine: the one whose error is the identified one (correction.identifiedError), on a
+  // pass without a wheel correction. twinMisfit: its face against the measurement, on the probe
+  // grid (µm rms; how well one face tells the two machines apart); twinGap: how far apart the
+  // proposed axes leave the two machines' faces, between the probe points (µm rms). -1: not
+  // computed (a wheel pass, or a face that cannot be simulated).
+  double twinMisfit = -1, twinGap = -1;
+  double probeNoise = 0;  // the probe noise declared in the case (sigma, µm)
 };
 
 struct ScenarioOutcome {
