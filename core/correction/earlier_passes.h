@@ -26,4 +26,10 @@ struct PassHistory {
   bool empty() const { return passes.empty(); }
 };
 
+// Whether a pass's face is in the history later passes are identified with (identifyMachineError):
+// it was measured on the grid, and no pass corrects the wheel (a dressing changes the wheel the
+// faces are ground with). The case's passes (pass_history.h) and the verdict's offer to keep this
+// pass in the case (correction.h) both read it from here.
+inline bool joinsLaterPasses(bool measuredOnGrid, bool wheelCorrected) { return measuredOnGrid && !wheelCorrected; }
+
 }  // namespace hobsharp

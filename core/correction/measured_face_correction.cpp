@@ -9,6 +9,7 @@
 
 #include "correction.h"
 #include "face_prediction.h"
+#include "earlier_passes.h"
 #include "face_vectors.h"
 #include "identified_axes.h"
 #include "machine_error.h"
@@ -106,6 +107,9 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
                                         const MachineErrorEstimate* identified, const SharpeningSetup* dressed,
                                         const AxisPolynomials* linearisedAt, const PassHistory* history) {
   Correction c;
+  // The error was identified with the wheel's shape alongside (its only source, wheel_correction.cpp):
+  // the model's face holds that shape, and the bound measures moves from re-simulated faces.
+  const bool wheelAlongside = identified != nullptr;
   // The axes runFace was ground with: the run, or the nominal ones where the run alone cannot be
   // simulated (a pass after a large machine error; correction.h).
   const AxisPolynomials& at = linearisedAt ? *linearisedAt : run;
@@ -273,7 +277,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     const FacePrediction p =
         predictFace(setup, dressing ? *dressed : setup, run, runFace, c, unexplained, o.probeNoise,
                     UnseenSampling{c.passesJoined > 0 ? &historyJacobian : freed ? &sensitivities : nullptr,
-                                   c.passesJoined > 0, identified != nullptr});
+                                   c.passesJoined > 0, wheelAlongside});
     c.predictedRms = p.rms;
     c.predictedRmsHigh = p.rmsHigh;
     c.predictedNoisePart = p.noisePart;
@@ -281,7 +285,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.predictedUngrindable = p.ungrindable;
   }
   c.verdict = verdictOf(c, o, runFace.size(),
-                        c.method == CorrectionMethod::Nonlinear && !o.wheel && !identified && !runFace.atProbes());
+                        c.method == CorrectionMethod::Nonlinear && joinsLaterPasses(!runFace.atProbes(), o.wheel));
   // A stop is the whole instruction: the history's sentence would only lengthen it.
   if (!c.stop && c.passesJoined > 0)
     c.verdict += " The machine's error was identified from this face and the " + std::to_string(c.passesJoined) +

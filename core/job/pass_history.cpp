@@ -28,9 +28,9 @@ PassHistory passHistory(const std::vector<PassInput>& passes, const AxisPolynomi
   h.nominal = nominal;
   for (const PassInput& p : passes)
     if (p.correction && p.correction->wheel.value_or(false)) wheelCorrected = true;
-  if (wheelCorrected) return h;
   for (const PassInput& p : passes)
-    if (!p.measuredPoints && p.measured.size() > 0) h.passes.push_back({p.axes, p.measured});
+    if (joinsLaterPasses(!p.measuredPoints && p.measured.size() > 0, wheelCorrected))
+      h.passes.push_back({p.axes, p.measured});
   return h;
 }
 
