@@ -27,8 +27,16 @@ struct LeastSquaresOptions {
   // the residual is orthogonal to every direction the axes can move the face (MINPACK's gtol).
   double gradientTolerance = 1e-12;
   // The first trust region, times the scaled norm of the start (or this value itself when the
-  // start is zero), in µm of face (MINPACK's factor).
+  // start is zero), in the units of stepScale (MINPACK's factor).
   double initialTrustRegion = 1000;
+  // What the trust region measures a step in.
+  //   FaceMoved: each parameter by how much its Jacobian column moves the face (MINPACK's scaling,
+  //     the largest column norm seen), so initialTrustRegion is in µm of face. A direction the face
+  //     barely shows (X, Y, B on a straight gash: second order only) is then nearly free to move.
+  //   Parameters: each parameter in its own units (a machine step of each coefficient), so a step
+  //     along a direction the face barely shows costs as much as along any other.
+  enum class StepScale { FaceMoved, Parameters };
+  StepScale stepScale = StepScale::FaceMoved;
 };
 
 enum class SolveStatus {

@@ -29,6 +29,10 @@ bool solveLeastSquares(Residual& residual, Eigen::VectorXd& theta, const LeastSq
   lm.setGtol(o.gradientTolerance);
   lm.setFactor(o.initialTrustRegion);
   lm.setMaxfev(1000000);  // the iterations are counted here
+  if (o.stepScale == LeastSquaresOptions::StepScale::Parameters) {
+    lm.setExternalScaling(true);
+    lm.diag() = Eigen::VectorXd::Ones(theta.size());
+  }
   Status status = lm.minimizeInit(theta);
   if (status != NotStarted) {
     if (refused) *refused = status == ImproperInputParameters;

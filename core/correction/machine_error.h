@@ -69,7 +69,8 @@ struct MachineErrorEstimate {
 // sought once more over every free coefficient, started at its E, and kept when it converges
 // (structuralFreed). With a `history` of earlier passes measured on the grid, E is then sought once more over every
 // free coefficient (the structural null space too) so that it explains every pass's face together,
-// started at E0 = history.nominal - run (the error the run compensates); that E is kept when it
+// started at E0 = history.nominal - run (the error the run compensates), then at this face's own
+// E, then at E0 with the trust region in machine steps (machine_error.cpp); that E is kept when it
 // explains all of them to the probe noise (a converged solve), else this face's own E stands and
 // `historyNote` says why. The history's axes are those its faces were ground with, as `run` is.
 Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup, const AxisPolynomials& run,
