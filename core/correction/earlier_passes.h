@@ -22,6 +22,9 @@ struct EarlierPass {
 struct PassHistory {
   AxisPolynomials nominal;          // the axes every run aims at: run = nominal - E of the pass before
   std::vector<EarlierPass> passes;  // on the same machine and wheel, oldest first
+  // A pass in the case, or the case, corrects the wheel: no pass joins (joinsLaterPasses), this
+  // one's face neither, as the next case keeps that pass.
+  bool wheelCorrected = false;
 
   bool empty() const { return passes.empty(); }
 };

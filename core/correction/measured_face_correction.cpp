@@ -107,6 +107,9 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
                                         const MachineErrorEstimate* identified, const SharpeningSetup* dressed,
                                         const AxisPolynomials* linearisedAt, const PassHistory* history) {
   Correction c;
+  // An earlier pass dressed the wheel: nothing to join, and the next case keeps that pass.
+  const bool dressedBefore = history && history->wheelCorrected;
+  if (history && history->empty()) history = nullptr;
   // The error was identified with the wheel's shape alongside (its only source, wheel_correction.cpp):
   // the model's face holds that shape, and the bound measures moves from re-simulated faces.
   const bool wheelAlongside = identified != nullptr;
@@ -285,7 +288,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.predictedUngrindable = p.ungrindable;
   }
   c.verdict = verdictOf(c, o, runFace.size(),
-                        c.method == CorrectionMethod::Nonlinear && joinsLaterPasses(!runFace.atProbes(), o.wheel));
+                        c.method == CorrectionMethod::Nonlinear && joinsLaterPasses(!runFace.atProbes(), o.wheel || dressedBefore));
   // A stop is the whole instruction: the history's sentence would only lengthen it.
   if (!c.stop && c.passesJoined > 0)
     c.verdict += " The machine's error was identified from this face and the " + std::to_string(c.passesJoined) +

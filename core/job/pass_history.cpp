@@ -28,6 +28,7 @@ PassHistory passHistory(const std::vector<PassInput>& passes, const AxisPolynomi
   h.nominal = nominal;
   for (const PassInput& p : passes)
     if (p.correction && p.correction->wheel.value_or(false)) wheelCorrected = true;
+  h.wheelCorrected = wheelCorrected;
   for (const PassInput& p : passes)
     if (joinsLaterPasses(!p.measuredPoints && p.measured.size() > 0, wheelCorrected))
       h.passes.push_back({p.axes, p.measured});

@@ -204,6 +204,27 @@ TEST(PassHistory, TheNextPassIsOfferedOnlyWhereItUsesThisFace) {
   EXPECT_EQ(atPoints.verdict.find("keep this pass in the case"), std::string::npos) << atPoints.verdict;
 }
 
+// The offer to keep this pass holds only where a next case would join it: not where an earlier pass
+// in the case corrected the wheel (passHistory then leaves every pass out, and so would the next
+// case's, which keeps that pass). Scenario 152's first face, with an earlier grid pass whose
+// correction dressed the wheel.
+TEST(PassHistory, NoOfferToKeepThePassWhereAnEarlierPassDressedTheWheel) {
+  auto s = makeScenario(kSeed, 152);
+  ASSERT_TRUE(s.ok());
+  Passes p;
+  p.s = *s;
+  p.job = *resolveJob(p.s.input);
+  CaseInput c = p.s.input;
+  c.measured = groundOnMachine(p, p.job.nominalAxes);
+  c.correction.probeNoise = 0.01;
+  CorrectionInput dressed;
+  dressed.wheel = true;
+  c.passes.push_back(PassInput{p.job.nominalAxes, *c.measured, {}, dressed});
+  ASSERT_TRUE(resolveJob(c)->history.empty());
+  const Correction k = corrected(c);
+  EXPECT_EQ(k.verdict.find("keep this pass in the case"), std::string::npos) << k.verdict;
+}
+
 // Scenario 206 (helical gash, 150 µm rms): from its own face alone, the second pass's estimate
 // explains that face with a wrong error and its proposal grinds tens of µm; from both faces the
 // error is found and the face left is below 0.1 µm rms.
