@@ -143,8 +143,8 @@ std::string micrometres(double v) {
 std::string twinsText(const ClassSummary& s) {
   std::ostringstream t;
   t << s.twins << " of its " << s.misses << (s.twins == 1 ? " misses has" : " misses have") << " a twin machine: the identified error grinds a face within "
-    << "the declared probe noise of the one measured, and the same axes leave the two faces more than twice the limit "
-       "apart (whatever one face's correction proposes, one of the two machines keeps more than the limit)";
+    << "the declared probe noise (rms per point) of the one measured, and the proposed axes leave the two faces more than "
+       "twice the limit apart (a probe of a real one's noise could not tell the two machines apart)";
   return t.str();
 }
 

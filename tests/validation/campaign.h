@@ -31,9 +31,9 @@ struct ClassSummary {
   std::vector<double> finals;  // sorted, for the empirical distribution
   std::vector<Target> targets;
   // Of a one-pass class's scenarios missing its first target, those with a twin machine
-  // (run_scenario.h) that grinds a face within the declared probe noise of the one measured and
-  // that the same axes leave more than twice the limit apart: whatever one face's correction
-  // proposes, it leaves more than the limit on one of the two.
+  // (run_scenario.h) that grinds a face within the declared probe noise (rms per point) of the one
+  // measured and that the proposed axes leave more than twice the limit apart (docs/validation.md
+  // says what this backs and what it does not).
   int misses = 0, twins = 0;
 };
 

@@ -35,7 +35,8 @@ struct PassOutcome {
   // pass without a wheel correction. twinMisfit: its face against the measurement, on the probe
   // grid (µm rms; how well one face tells the two machines apart); twinGap: how far apart the
   // proposed axes leave the two machines' faces, between the probe points (µm rms). -1: not
-  // computed (a wheel pass, or a face that cannot be simulated).
+  // computed (a wheel pass, or a face that cannot be simulated). The proposal corrects the twin
+  // exactly (nominal - its error), so twinGap is the face the pass leaves, to rounding.
   double twinMisfit = -1, twinGap = -1;
   double probeNoise = 0;  // the probe noise declared in the case (sigma, µm)
 };
