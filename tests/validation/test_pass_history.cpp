@@ -41,10 +41,9 @@ Eigen::MatrixXd groundOnMachine(const Passes& p, const AxisPolynomials& axes) {
 }
 double rms(const Eigen::MatrixXd& m) { return std::sqrt(m.squaredNorm() / static_cast<double>(m.size())); }
 
-// Scenario `index`'s first pass (nominal axes, corrected from its face alone) and the face its
-// proposal grinds: the second pass's measurement.
-Passes twoPasses(int index, std::uint64_t seed = kSeed) {
-  Passes p;
+// Scenario `index`'s first pass into `p`: its case, the face the nominal axes grind on the machine
+// measured (noise-free, sigma declared 0.01 µm).
+CaseInput firstCase(Passes& p, int index, std::uint64_t seed = kSeed) {
   auto s = makeScenario(seed, index);
   EXPECT_TRUE(s.ok());
   p.s = *s;
@@ -54,6 +53,14 @@ Passes twoPasses(int index, std::uint64_t seed = kSeed) {
   CaseInput c = p.s.input;
   c.measured = p.firstMeasured;
   c.correction.probeNoise = 0.01;
+  return c;
+}
+
+// Scenario `index`'s first pass (nominal axes, corrected from its face alone) and the face its
+// proposal grinds: the second pass's measurement.
+Passes twoPasses(int index, std::uint64_t seed = kSeed) {
+  Passes p;
+  const CaseInput c = firstCase(p, index, seed);
   auto e = evaluate(*resolveJob(c));
   EXPECT_TRUE(e.ok() && e->correction);
   p.secondRun = e->correction->axes;
@@ -175,14 +182,8 @@ TEST(PassHistory, WhereNoStartJoinsTheFacesTheNoteQuotesTheNearest) {
 // history leaves out. Scenario 152 (straight gash, 150 µm rms), first pass, measured on the grid
 // and at points 5 µm off each grid point: both bounds are above the face measured.
 TEST(PassHistory, TheNextPassIsOfferedOnlyWhereItUsesThisFace) {
-  auto s = makeScenario(kSeed, 152);
-  ASSERT_TRUE(s.ok());
   Passes p;
-  p.s = *s;
-  p.job = *resolveJob(p.s.input);
-  CaseInput c = p.s.input;
-  c.measured = groundOnMachine(p, p.job.nominalAxes);
-  c.correction.probeNoise = 0.01;
+  CaseInput c = firstCase(p, 152);
   const Correction grid = corrected(c);
   ASSERT_GT(grid.predictedRmsHigh, grid.before.rms);
   EXPECT_NE(grid.verdict.find("keep this pass in the case: a next pass measured on the grid seeks one error"),
@@ -209,14 +210,8 @@ TEST(PassHistory, TheNextPassIsOfferedOnlyWhereItUsesThisFace) {
 // case's, which keeps that pass). Scenario 152's first face, with an earlier grid pass whose
 // correction dressed the wheel.
 TEST(PassHistory, NoOfferToKeepThePassWhereAnEarlierPassDressedTheWheel) {
-  auto s = makeScenario(kSeed, 152);
-  ASSERT_TRUE(s.ok());
   Passes p;
-  p.s = *s;
-  p.job = *resolveJob(p.s.input);
-  CaseInput c = p.s.input;
-  c.measured = groundOnMachine(p, p.job.nominalAxes);
-  c.correction.probeNoise = 0.01;
+  CaseInput c = firstCase(p, 152);
   CorrectionInput dressed;
   dressed.wheel = true;
   c.passes.push_back(PassInput{p.job.nominalAxes, *c.measured, {}, dressed});
