@@ -287,8 +287,11 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.predictedUnseenPart = p.unseenPart;
     c.predictedUngrindable = p.ungrindable;
   }
+  // The wheel is corrected where this case asks for it, where the error was identified with the
+  // wheel alongside (which only a wheel correction does), or where an earlier pass dressed it.
+  const bool wheelCorrected = o.wheel || wheelAlongside || dressedBefore;
   c.verdict = verdictOf(c, o, runFace.size(),
-                        c.method == CorrectionMethod::Nonlinear && joinsLaterPasses(!runFace.atProbes(), o.wheel || dressedBefore));
+                        c.method == CorrectionMethod::Nonlinear && joinsLaterPasses(!runFace.atProbes(), wheelCorrected));
   // A stop is the whole instruction: the history's sentence would only lengthen it.
   if (!c.stop && c.passesJoined > 0)
     c.verdict += " The machine's error was identified from this face and the " + std::to_string(c.passesJoined) +
