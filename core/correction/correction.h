@@ -113,7 +113,8 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
 // (wheel_correction.h), not the wheel `runFace` was ground with. `linearisedAt`, when given, is the
 // axes `runFace` was simulated for instead of `run` (the nominal ones, where the run alone cannot be
 // simulated); `identified`, when given with it, is the error identified from those axes. `history`,
-// when given, is the earlier passes the error is identified together with (machine_error.h).
+// when given, is the earlier passes the error is identified together with (machine_error.h); an
+// empty one is none, though its wheelCorrected still says whether a pass dressed the wheel.
 struct MachineErrorEstimate;
 struct PassHistory;
 Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,

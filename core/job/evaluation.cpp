@@ -87,8 +87,7 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
     e.wheelCorrection = std::move(c->wheel);
   } else if (measured.grid) {
     auto c = correctMeasuredFace(s, job.nominalAxes, job.runAxes, e.groundFace, *measured.grid, job.correction,
-                                 nullptr, nullptr, linearisedAt,
-                                 job.history.empty() && !job.history.wheelCorrected ? nullptr : &job.history);
+                                 nullptr, nullptr, linearisedAt, &job.history);
     if (!c) return c.error();
     e.correction = std::move(c).value();
   }

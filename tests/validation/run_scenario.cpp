@@ -46,11 +46,19 @@ Outcome<SharpeningJob> machineJob(const Scenario& s, const std::optional<WheelPo
   return resolveJob(c);
 }
 
-Outcome<double> rmsOf(const SharpeningJob& machine, const AxisPolynomials& commanded, const AxisPolynomials& error,
-                      const FaceGrid& grid) {
+// The face `machine` grinds when `commanded` is run and it adds `error`, on `grid`.
+Outcome<Topography> faceOf(const SharpeningJob& machine, const AxisPolynomials& commanded,
+                           const AxisPolynomials& error, const FaceGrid& grid) {
   auto f = simulateGroundFace(machine.setup, plusError(commanded, error), grid, Sensitivities::Skip);
   if (!f) return f.error();
-  return topographyOf(*f).rms;
+  return topographyOf(*f);
+}
+
+Outcome<double> rmsOf(const SharpeningJob& machine, const AxisPolynomials& commanded, const AxisPolynomials& error,
+                      const FaceGrid& grid) {
+  auto f = faceOf(machine, commanded, error, grid);
+  if (!f) return f.error();
+  return f->rms;
 }
 
 double rmsOfDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
@@ -147,26 +155,25 @@ ScenarioOutcome runScenario(const Scenario& s) {
       break;
     }
     auto probe = rmsOf(*after, k.axes, s.error, after->grid);
-    auto denseRms = rmsOf(*after, k.axes, s.error, dense);
+    auto left = faceOf(*after, k.axes, s.error, dense);
     auto rounded = rmsOf(*after, k.roundedAxes, s.error, dense);
-    if (!probe || !denseRms || !rounded) {
+    if (!probe || !left || !rounded) {
       refused(p, "the proposed axes grind a face that cannot be simulated: " +
-                     (!probe ? probe.error() : !denseRms ? denseRms.error() : rounded.error()).message);
+                     (!probe ? probe.error() : !left ? left.error() : rounded.error()).message);
       break;
     }
     if (!e->wheelCorrection) {
       // The twin machine (run_scenario.h): the true wheel with the identified error.
-      auto twin = simulateGroundFace(after->setup, plusError(run, k.identifiedError), after->grid, Sensitivities::Skip);
-      auto twinLeft = simulateGroundFace(after->setup, plusError(k.axes, k.identifiedError), dense, Sensitivities::Skip);
-      auto left = simulateGroundFace(after->setup, plusError(k.axes, s.error), dense, Sensitivities::Skip);
-      if (twin && twinLeft && left) {
-        p.twinMisfit = rmsOfDifference(topographyOf(*twin).normal, measured);
-        p.twinGap = rmsOfDifference(topographyOf(*twinLeft).normal, topographyOf(*left).normal);
+      auto twin = faceOf(*after, run, k.identifiedError, after->grid);
+      auto twinLeft = faceOf(*after, k.axes, k.identifiedError, dense);
+      if (twin && twinLeft) {
+        p.twinMisfit = rmsOfDifference(twin->normal, measured);
+        p.twinGap = rmsOfDifference(twinLeft->normal, left->normal);
       }
     }
     p.probeNoise = *c.correction.probeNoise;
     p.probeRms = *probe;
-    p.denseRms = *denseRms;
+    p.denseRms = left->rms;
     p.denseRmsRounded = *rounded;
     out.passes.push_back(p);
     PassInput done;
