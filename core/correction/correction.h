@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,11 @@ struct Correction {
   // A change is proposed whose bound is above the face measured: the face does not show enough of
   // the machine's error to say that the pass improves it (the verdicts lead with "Uncertain:").
   bool uncertain() const { return !keepsRun() && predictedRmsHigh > before.rms; }
+  // The face the pass leaves (`after`, over `points` values) is within the probe noise: its rms at
+  // most twice the probe's sigma (the verdicts' "down to the probe noise").
+  bool leavesWithinNoise(double probeNoise, int points) const {
+    return after.sse <= points * std::pow(2 * probeNoise, 2);
+  }
   // The axes run alone grind no face the wheel envelops (a pass after a large machine error): the
   // correction was linearised at the nominal axes instead, from the face measured.
   bool linearisedAtNominal = false;

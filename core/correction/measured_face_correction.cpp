@@ -60,8 +60,7 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
   v.precision(3);
   // What the pass leaves, as the prediction and its bound state it (face_prediction.h).
   const std::string leaves = predictionText(c);
-  // Within the noise: the rms left is at most twice the probe's sigma.
-  const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
+  const bool withinNoise = c.leavesWithinNoise(o.probeNoise, points);
   // An identification that stalled or ran out of iterations, in a word.
   const bool unfinished = c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence;
   const char* how = c.summary.status == SolveStatus::Stalled ? "stalled" : "did not converge";

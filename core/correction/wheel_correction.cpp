@@ -22,7 +22,7 @@ std::string verdictOf(const Correction& c, const WheelCorrection& w, const Corre
   for (double x : w.offset) largest = std::max(largest, std::abs(x));
   std::ostringstream v;
   v.precision(3);
-  const bool withinNoise = c.after.sse <= points * std::pow(2 * o.probeNoise, 2);
+  const bool withinNoise = c.leavesWithinNoise(o.probeNoise, points);
   const std::string split = "the axes remove " + percentText(w.axesShare) + " of the measured sum of squares, the wheel " +
                             percentText(w.wheelShare);
   if (c.uncertain()) {
