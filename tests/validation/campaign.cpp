@@ -83,12 +83,15 @@ Campaign summarise(std::uint64_t seed, std::vector<ScenarioOutcome> outcomes, do
       const double last = finalRms(o);
       s.finals.push_back(last);
       const PassOutcome* p = lastPass(o);
+      bool firstMet = false;  // the class's first target (the face left with the exact axes)
       for (size_t i = 0; i < goals.size(); ++i) {
         ++s.targets[i].of;
         const double v = goals[i].rounded ? (p && !p->refused ? p->denseRmsRounded : o.initialDenseRms) : last;
-        if (!refused && v <= goals[i].limit) ++s.targets[i].met;
+        const bool met = !refused && v <= goals[i].limit;
+        if (met) ++s.targets[i].met;
+        if (i == 0) firstMet = met;
       }
-      if (o.scenario.spec.passes == 1 && !goals.empty() && (refused || last > goals[0].limit)) {
+      if (o.scenario.spec.passes == 1 && !goals.empty() && !firstMet) {
         ++s.misses;
         if (p && !p->refused && p->twinMisfit >= 0 && p->twinMisfit <= p->probeNoise &&
             p->twinGap > 2 * goals[0].limit)
@@ -139,7 +142,7 @@ std::string micrometres(double v) {
   return s.str();
 }
 
-// The misses one face cannot avoid (ClassSummary::twins), in words.
+// A class's twin misses (ClassSummary::twins), in words.
 std::string twinsText(const ClassSummary& s) {
   std::ostringstream t;
   t << s.twins << " of its " << s.misses << (s.twins == 1 ? " misses has" : " misses have") << " a twin machine: the identified error grinds a face within "
