@@ -76,6 +76,9 @@ struct Correction {
   // Of the errors the bound samples in the directions the face cannot show, those with which the
   // proposed axes grind a face the wheel does not envelop everywhere.
   int predictedUngrindable = 0;
+  // The bound also samples the wheel shape the face cannot tell from the axes' motion (the wheel
+  // identified alongside; face_prediction.h, `mimicking`).
+  bool predictedWheelAlike = false;
   // The measured face is within the probe noise: another pass would only move noise.
   bool stop = false;
   // The axes run are proposed unchanged (run kept, or stop): so is the wheel, with no dressing.

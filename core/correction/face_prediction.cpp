@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 #include <Eigen/SVD>
 
 #include "face_vectors.h"
@@ -21,6 +22,8 @@ namespace {
 constexpr int kUnseenSamples = 6;
 // The size of the error the face cannot show, per term, as a multiple of the identified error's.
 constexpr double kUnseenScale = 2;
+// The share of the identified error along the axis changes that mimic the wheel taken as the wheel's.
+constexpr double kMimicScale = 2;
 constexpr unsigned kUnseenSeed = 20;
 // A direction of the coefficients moves the face no more than this share of the strongest one: it
 // is a direction the face cannot show.
@@ -84,7 +87,10 @@ std::string predictionText(const Correction& c) {
   if (c.predictedRms > 0) leaves << "at about " << c.predictedRms << " µm rms, ";
   else leaves << "within the probe noise, ";
   leaves << "at most " << c.predictedRmsHigh << " µm rms";
-  if (c.predictedUnseenPart > 0) leaves << " if the error the face cannot show is no larger than the one it shows";
+  if (c.predictedUnseenPart > 0)
+    leaves << (c.predictedWheelAlike ? " if the error the face cannot show, or cannot tell from the wheel's shape, is no "
+                                       "larger than the one it shows"
+                                     : " if the error the face cannot show is no larger than the one it shows");
   return leaves.str();
 }
 
@@ -144,7 +150,17 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
         if (i >= t.size() || t(i) <= (sampling.passes ? kUnseenShareJoined : kUnseenShare) * t(0)) unseen.push_back(i);
     }
     const Eigen::MatrixXd& V = all ? all->matrixV() : svd.V;
-    if (size > 0 && !unseen.empty()) {
+    // With the wheel alongside: the identified error's part along the axis changes that mimic a wheel
+    // shape (in the same units, y's), which the face cannot tell from the wheel: the error if all of
+    // it were the wheel's (face_prediction.h, `mimicking`).
+    Eigen::VectorXd mimic(0);
+    if (sampling.mimicking && sampling.mimicking->rows() == q && sampling.mimicking->cols() > 0) {
+      Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(w.asDiagonal() * *sampling.mimicking);
+      qr.setThreshold(1e-8);
+      const Eigen::MatrixXd Q = Eigen::MatrixXd(qr.householderQ()).leftCols(qr.rank());
+      mimic = Q * (Q.transpose() * y);
+    }
+    if (size > 0 && (!unseen.empty() || mimic.size() > 0)) {
       Eigen::MatrixXd N(q, static_cast<int>(unseen.size()));
       for (size_t i = 0; i < unseen.size(); ++i) N.col(static_cast<int>(i)) = V.col(unseen[i]);
       const AxisPolynomials actual = plusError(c.axes, c.identifiedError);
@@ -160,15 +176,10 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
         auto before0 = simulateGroundFaceLike(like, measuredSetup, measuredAt, Sensitivities::Skip, FaceStart::Near);
         if (after0 && before0) base = faceNormal(*after0), explained = faceNormal(*before0);
       }
-      // mt19937's words are the same in every build; the standard's distributions are not (libstdc++
-      // natively, libc++ in WebAssembly): each term uniform on +-sqrt(3), of unit variance.
-      std::mt19937 rng(kUnseenSeed);
-      const auto g = [&rng] { return std::sqrt(3.0) * (2.0 * rng() / 4294967295.0 - 1.0); };
       double worst = 0;
-      for (int t = 0; t < kUnseenSamples; ++t) {
-        Eigen::VectorXd d(q);
-        for (int j = 0; j < q; ++j) d(j) = g() * size;
-        const Eigen::VectorXd dc = (N * (N.transpose() * d)).cwiseQuotient(w);  // what the face cannot show
+      // The face the pass leaves with the error changed by dc (coefficient units), less what the
+      // identification would take of that change at the measurement.
+      const auto sample = [&](const Eigen::VectorXd& dc, double scale) {
         // Started from the run face's solutions on a grid too: the bound is a figure, no decision
         // rests on its last bits.
         auto after = simulateGroundFaceLike(like, passSetup, plusChange(actual, cs, dc), Sensitivities::Skip, FaceStart::Near);
@@ -178,12 +189,29 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
           // Only the pass's face speaks of the pass: an error with which the face measured cannot be
           // simulated is one the measurement does not bear out, not a part the pass leaves unground.
           if (!after) ++p.ungrindable;
-          worst = std::max(worst, std::sqrt(afterSquares / n) + size * 1e3);  // cannot say: as large as the error
-          continue;
+          worst = std::max(worst, std::sqrt(afterSquares / n) + scale * 1e3);  // cannot say: as large as the error
+          return;
         }
         const Eigen::VectorXd moved = faceNormal(*before) - explained;
         const Eigen::VectorXd left = faceNormal(*after) - base - U * (U.transpose() * moved);
         worst = std::max(worst, std::sqrt(left.squaredNorm() / m));
+      };
+      if (!unseen.empty()) {
+        // mt19937's words are the same in every build; the standard's distributions are not (libstdc++
+        // natively, libc++ in WebAssembly): each term uniform on +-sqrt(3), of unit variance.
+        std::mt19937 rng(kUnseenSeed);
+        const auto g = [&rng] { return std::sqrt(3.0) * (2.0 * rng() / 4294967295.0 - 1.0); };
+        for (int t = 0; t < kUnseenSamples; ++t) {
+          Eigen::VectorXd d(q);
+          for (int j = 0; j < q; ++j) d(j) = g() * size;
+          sample((N * (N.transpose() * d)).cwiseQuotient(w), size);  // what the face cannot show
+        }
+      }
+      // The error less kMimicScale times that part, the wheel taking it: the face the pass then
+      // leaves, where the axes' mimicry of the wheel's shape holds at the measurement only.
+      if (mimic.size() > 0) {
+        sample((-kMimicScale * mimic).cwiseQuotient(w), kMimicScale * mimic.norm() / std::sqrt(static_cast<double>(q)));
+        p.wheelAlike = true;
       }
       p.unseenPart = worst;
     }

@@ -11,9 +11,10 @@
 //     radius on A, B, the tip's displacement), in the directions the face cannot show, added to the
 //     identified error; the run and the proposed axes re-simulated with each; the bound takes the
 //     largest of (the face moved at the new point) - (the visible part of the face moved at the
-//     measured point).
-// The last rests on an assumption, stated in the verdict: the error the face cannot show is no
-// larger than the one it shows.
+//     measured point). With the wheel alongside, also the error less twice its part along the axis
+//     changes that mimic a wheel shape (`mimicking`): that part might be the wheel's.
+// The last rests on an assumption, stated in the verdict: the error the face cannot show (or cannot
+// tell from the wheel's shape) is no larger than the one it shows.
 #pragma once
 
 #include <string>
@@ -36,6 +37,8 @@ struct FacePrediction {
   // reach part of it). The bound cannot say for those, nor for the ones with which the face measured
   // cannot be simulated, which are not counted here.
   int ungrindable = 0;
+  // The unseen share includes the wheel shape the face cannot tell from the axes (`mimicking`).
+  bool wheelAlike = false;
 };
 
 // `c` is the correction with its axes, identified error and predicted face (c.after) filled;
@@ -62,6 +65,11 @@ struct UnseenSampling {
   // shape, 1 µm rms and more, read as a move of the face and made the bound 10 to 1000 times the
   // face left on the campaign's wheel passes.)
   bool fromResimulated = false;
+  // With the wheel alongside: the axis changes that make the face of a wheel shape the wheel left to
+  // the axes (q x m, coefficient units; machine_error.h, `mimicking`). The face cannot tell those
+  // from the wheel, and they move the face at the new operating point as the axes, not as the wheel,
+  // do: they are sampled with the directions the face cannot show.
+  const Eigen::MatrixXd* mimicking = nullptr;
 };
 
 // What the pass leaves, as c's prediction and its bound state it, for a verdict: "the face

@@ -34,6 +34,10 @@ struct MachineErrorEstimate {
   // and the columns of what was identified alongside (the wheel's directions taken), p x k: what
   // the face tells of each axis is judged from them (identified_axes.h).
   Eigen::MatrixXd jacobian, nuisance;
+  // With the wheel alongside (wheel_error.h): q x m, the axis changes (coefficient units) that make,
+  // to first order, the face of each wheel shape the wheel left to the axes. The face cannot tell
+  // such a shape from its axis change; the bound samples them (face_prediction.h).
+  Eigen::MatrixXd mimicking;
   GroundFace face;            // face(run + E), with its sensitivities
   Eigen::MatrixXd explained;  // its normal deviation, µm
   Eigen::MatrixXd unexplained;  // measured - explained: noise and what no axis makes, µm

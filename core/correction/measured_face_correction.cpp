@@ -279,12 +279,13 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     const FacePrediction p =
         predictFace(setup, dressing ? *dressed : setup, run, runFace, c, unexplained, o.probeNoise,
                     UnseenSampling{c.passesJoined > 0 ? &historyJacobian : freed ? &sensitivities : nullptr,
-                                   c.passesJoined > 0, wheelAlongside});
+                                   c.passesJoined > 0, wheelAlongside, identified ? &identified->mimicking : nullptr});
     c.predictedRms = p.rms;
     c.predictedRmsHigh = p.rmsHigh;
     c.predictedNoisePart = p.noisePart;
     c.predictedUnseenPart = p.unseenPart;
     c.predictedUngrindable = p.ungrindable;
+    c.predictedWheelAlike = p.wheelAlike;
   }
   // The wheel is corrected where this case asks for it, where the error was identified with the
   // wheel alongside (which only a wheel correction does), or where an earlier pass dressed it.

@@ -24,6 +24,36 @@ Eigen::MatrixXd orthonormalSpan(const Eigen::MatrixXd& a) {
   return qr.householderQ() * Eigen::MatrixXd::Identity(a.rows(), a.cols());
 }
 
+// A wheel shape is left to the axes where they make at least this share of its face (norm).
+constexpr double kMimicShare = 0.5;
+
+// The wheel shapes not taken (the complement of `wheelTaken`, K x k, orthonormal columns) whose face
+// the axes' taken directions make (least squares) to at least kMimicShare, and for each the axis
+// change that makes it: q x m, coefficient units (machine_error.h, `mimicking`).
+Eigen::MatrixXd mimickingChanges(const Eigen::MatrixXd& axesJacobian, const Eigen::MatrixXd& axesTaken,
+                                 const Eigen::MatrixXd& wheelJacobian, const Eigen::MatrixXd& wheelTaken) {
+  const Eigen::Index q = axesJacobian.cols(), K = wheelJacobian.cols();
+  Eigen::MatrixXd out(q, 0);
+  if (axesTaken.cols() == 0 || K == 0 || wheelTaken.cols() >= K) return out;
+  Eigen::MatrixXd left = Eigen::MatrixXd::Identity(K, K);
+  if (wheelTaken.cols() > 0) {
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(wheelTaken);
+    const Eigen::MatrixXd Q = qr.householderQ();
+    left = Q.rightCols(K - wheelTaken.cols());
+  }
+  const Eigen::MatrixXd A = axesJacobian * axesTaken;
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> fit(A);
+  for (Eigen::Index j = 0; j < left.cols(); ++j) {
+    const Eigen::VectorXd f = wheelJacobian * left.col(j);
+    if (!(f.norm() > 0)) continue;
+    const Eigen::VectorXd z = fit.solve(f);
+    if (!((A * z).norm() >= kMimicShare * f.norm())) continue;
+    out.conservativeResize(Eigen::NoChange, out.cols() + 1);
+    out.col(out.cols() - 1) = axesTaken * z;
+  }
+  return out;
+}
+
 }  // namespace
 
 Outcome<WheelKnots> wheelKnots(const SharpeningSetup& setup, const FaceGrid& grid, double rLow, double rHigh) {
@@ -131,6 +161,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
   a.nuisance = id.jacobian[1] * w.taken;
   a.covariancePerNoise = id.covariancePerNoise(0);
   m.axesSpan = orthonormalSpan(a.jacobian * e.taken);
+  a.mimicking = mimickingChanges(a.jacobian, e.taken, id.jacobian[1], w.taken);
   a.face = std::move(id.face);
   a.summary = id.summary;
   return m;
