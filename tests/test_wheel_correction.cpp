@@ -178,6 +178,12 @@ void expectTargets(const char* hob, const CaseInput& c, double target, double pr
   EXPECT_LT(largestOffset(*p.e.wheelCorrection), 0.1);
   EXPECT_LT(p.onGrid, 0.01);
   EXPECT_LT(p.e.wheelCorrection->wheelShare, 1e-3);
+  // A dressing below the machine's 0.1 µm position resolution is none, and the verdict says so
+  // instead of "dress the wheel by ... at most 0.004 µm".
+  const std::string& verdict = p.e.correction->verdict;
+  EXPECT_EQ(verdict.find("Correctable with the axes alone: run the axes proposed; the wheel needs no dressing ("), 0u)
+      << verdict;
+  EXPECT_EQ(verdict.find("dress the wheel by"), std::string::npos) << verdict;
   print(hob, "pure axis error", p);
 }
 

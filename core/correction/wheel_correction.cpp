@@ -25,9 +25,23 @@ std::string verdictOf(const Correction& c, const WheelCorrection& w, const Corre
   const bool withinNoise = c.leavesWithinNoise(o.probeNoise, points);
   const std::string split = "the axes remove " + percentText(w.axesShare) + " of the measured sum of squares, the wheel " +
                             percentText(w.wheelShare);
+  // A dressing below the machine's linear position resolution (µm) is none: the wheel's shape the
+  // face shows, if any, the axes make (wheel_error.h).
+  const double step = o.resolution.inAxisUnit(Axis::X) * kMicrometresPerMm;
+  std::ostringstream none;
+  none.precision(3);
+  none << "the wheel needs no dressing (";
+  if (largest == 0) none << "the face shows no shape of it that the axes cannot make";
+  else none << "the offset proposed is at most " << largest << " µm, below the machine's " << step << " µm position resolution";
+  none << ")";
   if (c.uncertain()) {
-    v << c.verdict << " The wheel's dressing proposed with it is at most " << largest << " µm (the dresser path; " << split
-      << ").";
+    if (largest < step) v << c.verdict << " With it, " << none.str() << " (" << split << ").";
+    else
+      v << c.verdict << " The wheel's dressing proposed with it is at most " << largest << " µm (the dresser path; "
+        << split << ").";
+  } else if ((c.uncorrectableShare <= o.correctableShare || withinNoise) && largest < step) {
+    v << "Correctable with the axes alone: run the axes proposed; " << none.str() << "; on the probe grid "
+      << predictionText(c) << " (" << split << ").";
   } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
     v << "Correctable with the wheel: run the axes proposed and dress the wheel by the offset proposed, at most "
       << largest << " µm (the dresser path); on the probe grid " << predictionText(c) << " (" << split << ").";
