@@ -135,6 +135,21 @@ TEST(Validation, OnlyThePassFaceUngroundIsSaidToStayUnground) {
   EXPECT_EQ(p.verdict.find("part of it would stay unground"), std::string::npos) << p.verdict;
 }
 
+// A wheel-class scenario of the committed seed, run (no outcome if it is not one).
+ScenarioOutcome runWheelScenario(int index) {
+  auto s = makeScenario(kSeed, index);
+  EXPECT_TRUE(s.ok() && s->spec.wheel) << index;
+  return s.ok() && s->spec.wheel ? runScenario(*s) : ScenarioOutcome{};
+}
+
+// The pass was ground, the face it leaves lies within its bound, and the bound informs (at most
+// 10 times that face plus 0.02 µm).
+void expectBoundHoldsAndInforms(const PassOutcome& p) {
+  EXPECT_FALSE(p.refused) << p.message;
+  EXPECT_LE(p.probeRms, p.predictedRmsHigh);
+  EXPECT_LE(p.predictedRmsHigh, 10 * p.probeRms + 0.02);
+}
+
 // The bound on a pass with the wheel's shape identified alongside (face_prediction.h,
 // fromResimulated). Scenario 35 (wheel class): the faces each sampled error moves are measured
 // from faces re-simulated without it; measured from the model's faces, which hold the wheel's
@@ -142,16 +157,9 @@ TEST(Validation, OnlyThePassFaceUngroundIsSaidToStayUnground) {
 // where the pass leaves 0.0025 µm. Now it holds and informs (at most 10 times the face left plus
 // 0.02 µm) on both passes.
 TEST(Validation, TheBoundWithTheWheelMeasuresMovesFromResimulatedFaces) {
-  auto s = makeScenario(kSeed, 35);
-  ASSERT_TRUE(s.ok());
-  ASSERT_TRUE(s->spec.wheel);
-  const ScenarioOutcome o = runScenario(*s);
+  const ScenarioOutcome o = runWheelScenario(35);
   ASSERT_EQ(o.passes.size(), 2u);
-  for (const PassOutcome& p : o.passes) {
-    EXPECT_FALSE(p.refused) << p.message;
-    EXPECT_LE(p.probeRms, p.predictedRmsHigh);
-    EXPECT_LE(p.predictedRmsHigh, 10 * p.probeRms + 0.02);
-  }
+  for (const PassOutcome& p : o.passes) expectBoundHoldsAndInforms(p);
 }
 
 // The bound with a wheel shape the face cannot tell from the axes' motion (face_prediction.h,
@@ -162,16 +170,11 @@ TEST(Validation, TheBoundWithTheWheelMeasuresMovesFromResimulatedFaces) {
 // cannot show and said 0.033 µm. With the error less twice its part along the mimicking axis
 // changes (the wheel taking it) it holds, still informs, and the verdict names the assumption.
 TEST(Validation, TheBoundSamplesTheWheelShapeTheAxesMimic) {
-  auto s = makeScenario(kSeed, 377);
-  ASSERT_TRUE(s.ok());
-  ASSERT_TRUE(s->spec.wheel);
-  const ScenarioOutcome o = runScenario(*s);
+  const ScenarioOutcome o = runWheelScenario(377);
   ASSERT_GE(o.passes.size(), 1u);
   const PassOutcome& p = o.passes[0];
-  ASSERT_FALSE(p.refused) << p.message;
   EXPECT_GT(p.probeRms, 0.3);
-  EXPECT_LE(p.probeRms, p.predictedRmsHigh);
-  EXPECT_LE(p.predictedRmsHigh, 10 * p.probeRms + 0.02);
+  expectBoundHoldsAndInforms(p);
   EXPECT_NE(p.verdict.find("or cannot tell from the wheel's shape"), std::string::npos) << p.verdict;
 }
 
