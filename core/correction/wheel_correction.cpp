@@ -13,6 +13,18 @@
 namespace hobsharp {
 namespace {
 
+// "the wheel needs no dressing (...)": why, for a largest dressing (µm) below the machine's linear
+// position resolution `step` (µm).
+std::string noDressingText(double largest, double step) {
+  std::ostringstream t;
+  t.precision(3);
+  t << "the wheel needs no dressing (";
+  if (largest == 0) t << "the face shows no shape of it that the axes cannot make";
+  else t << "the offset proposed is at most " << largest << " µm, below the machine's " << step << " µm position resolution";
+  t << ")";
+  return t.str();
+}
+
 // The sentence for the engineer when the solve converged and a change is proposed; otherwise the
 // axes' own sentence (stalled, not converged, run kept) stands. What the pass leaves is the
 // prediction and its bound on the probe grid (face_prediction.h), as the axes' verdict states it;
@@ -28,21 +40,17 @@ std::string verdictOf(const Correction& c, const WheelCorrection& w, const Corre
   // A dressing below the machine's linear position resolution (µm) is none: the wheel's shape the
   // face shows, if any, the axes make (wheel_error.h).
   const double step = o.resolution.inAxisUnit(Axis::X) * kMicrometresPerMm;
-  std::ostringstream none;
-  none.precision(3);
-  none << "the wheel needs no dressing (";
-  if (largest == 0) none << "the face shows no shape of it that the axes cannot make";
-  else none << "the offset proposed is at most " << largest << " µm, below the machine's " << step << " µm position resolution";
-  none << ")";
+  const bool dressing = largest >= step;
+  const bool correctable = c.uncorrectableShare <= o.correctableShare || withinNoise;
   if (c.uncertain()) {
-    if (largest < step) v << c.verdict << " With it, " << none.str() << " (" << split << ").";
-    else
-      v << c.verdict << " The wheel's dressing proposed with it is at most " << largest << " µm (the dresser path; "
-        << split << ").";
-  } else if ((c.uncorrectableShare <= o.correctableShare || withinNoise) && largest < step) {
-    v << "Correctable with the axes alone: run the axes proposed; " << none.str() << "; on the probe grid "
-      << predictionText(c) << " (" << split << ").";
-  } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
+    v << c.verdict;
+    if (dressing) v << " The wheel's dressing proposed with it is at most " << largest << " µm (the dresser path; ";
+    else v << " With it, " << noDressingText(largest, step) << " (";
+    v << split << ").";
+  } else if (correctable && !dressing) {
+    v << "Correctable with the axes alone: run the axes proposed; " << noDressingText(largest, step)
+      << "; on the probe grid " << predictionText(c) << " (" << split << ").";
+  } else if (correctable) {
     v << "Correctable with the wheel: run the axes proposed and dress the wheel by the offset proposed, at most "
       << largest << " µm (the dresser path); on the probe grid " << predictionText(c) << " (" << split << ").";
   } else {

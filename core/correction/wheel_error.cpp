@@ -29,10 +29,11 @@ constexpr double kMimicShare = 0.5;
 
 // The wheel shapes not taken (the complement of `wheelTaken`, K x k, orthonormal columns) whose face
 // the axes' taken directions make (least squares) to at least kMimicShare, and for each the axis
-// change that makes it: q x m, coefficient units (machine_error.h, `mimicking`).
-Eigen::MatrixXd mimickingChanges(const Eigen::MatrixXd& axesJacobian, const Eigen::MatrixXd& axesTaken,
+// change that makes it: q x m, coefficient units (machine_error.h, `mimicking`). `axesFaces` is the
+// faces of the axes' taken directions, the axes' Jacobian times `axesTaken`.
+Eigen::MatrixXd mimickingChanges(const Eigen::MatrixXd& axesFaces, const Eigen::MatrixXd& axesTaken,
                                  const Eigen::MatrixXd& wheelJacobian, const Eigen::MatrixXd& wheelTaken) {
-  const Eigen::Index q = axesJacobian.cols(), K = wheelJacobian.cols();
+  const Eigen::Index q = axesTaken.rows(), K = wheelJacobian.cols();
   Eigen::MatrixXd out(q, 0);
   if (axesTaken.cols() == 0 || K == 0 || wheelTaken.cols() >= K) return out;
   Eigen::MatrixXd left = Eigen::MatrixXd::Identity(K, K);
@@ -41,7 +42,7 @@ Eigen::MatrixXd mimickingChanges(const Eigen::MatrixXd& axesJacobian, const Eige
     const Eigen::MatrixXd Q = qr.householderQ();
     left = Q.rightCols(K - wheelTaken.cols());
   }
-  const Eigen::MatrixXd A = axesJacobian * axesTaken;
+  const Eigen::MatrixXd& A = axesFaces;
   const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> fit(A);
   for (Eigen::Index j = 0; j < left.cols(); ++j) {
     const Eigen::VectorXd f = wheelJacobian * left.col(j);
@@ -160,8 +161,9 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
   a.jacobian = id.jacobian[0];
   a.nuisance = id.jacobian[1] * w.taken;
   a.covariancePerNoise = id.covariancePerNoise(0);
-  m.axesSpan = orthonormalSpan(a.jacobian * e.taken);
-  a.mimicking = mimickingChanges(a.jacobian, e.taken, id.jacobian[1], w.taken);
+  const Eigen::MatrixXd axesFaces = a.jacobian * e.taken;
+  m.axesSpan = orthonormalSpan(axesFaces);
+  a.mimicking = mimickingChanges(axesFaces, e.taken, id.jacobian[1], w.taken);
   a.face = std::move(id.face);
   a.summary = id.summary;
   return m;
