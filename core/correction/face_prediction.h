@@ -73,8 +73,8 @@ struct UnseenSampling {
 };
 
 // What the pass leaves, as c's prediction and its bound state it, for a verdict: "the face
-// measured 3 µm rms will be left at about 0.01 µm rms, at most 0.05 µm rms [if the error the face
-// cannot show is no larger than the one it shows]".
+// measured 3 µm rms will be left at most 0.05 µm rms [if the error the face cannot show is no larger
+// than the one it shows]": the bound, never the model's figure below it.
 std::string predictionText(const Correction& c);
 
 FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,

@@ -645,7 +645,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     v.number({"correction.maxAfter", "µm", "largest absolute deviation predicted after the pass", kWithMeasured, "largest |deviation|"}, c.after.max);
     v.number({"correction.rmsBefore", "µm", "root mean square, measured", kWithMeasured, "rms"}, c.before.rms);
     v.number({"correction.rmsAfter", "µm", "root mean square predicted after the pass", kWithMeasured, "rms"}, c.after.rms);
-    v.number({"correction.predictedRms", "µm", "the face the exact axes will leave on the probe grid, rms: the misfit left less its expected probe noise", kWithMeasured},
+    v.number({"correction.predictedRms", "µm", "the face the exact axes leave on the probe grid if the identified error is all of the machine's, rms: the misfit left less its expected probe noise (the pass can leave more, up to the bound)", kWithMeasured},
              c.predictedRms);
     v.number({"correction.predictedRmsHigh", "µm", "at most this rms on the probe grid: the misfit, the probe noise through the identified directions and the error the face cannot show (assumed no larger than the one it shows)", kWithMeasured},
              c.predictedRmsHigh);

@@ -1,6 +1,6 @@
 // What a pass will leave (correction.predictedRms, correction.predictedRmsHigh) and the stop verdict
-// (correction.stop) on the page: under the verdict "Predicted after the pass: X µm rms (at most Y µm
-// rms)", with the units the module gives; in the grinding passes' table and plot the rms with its
+// (correction.stop) on the page: under the verdict "Predicted after the pass: at most Y µm rms at the
+// probe points (X µm rms if the identified error is all of the machine's)", with the units the module gives; in the grinding passes' table and plot the rms with its
 // bound and the probe noise's floor; and, for a face measured within the probe noise, a stop
 // verdict set apart, no prediction, no next pass offered and the axes run kept as the axes to run.
 import { test } from 'node:test';
@@ -44,9 +44,8 @@ test('a measured face: the prediction and its bound under the verdict, in µm rm
   const page = await openPage(link(c), desk);
   await page.waitForSelector('#prediction:not([hidden])');
   const line = await page.textContent('#prediction');
-  assert.equal(line, expected.predictedRms === 0
-    ? `Predicted after the pass: within the probe noise, at most ${figure(expected.predictedRmsHigh)} µm rms at the probe points.`
-    : `Predicted after the pass: ${figure(expected.predictedRms)} µm rms (at most ${figure(expected.predictedRmsHigh)} µm rms) at the probe points.`);
+  const model = expected.predictedRms === 0 ? 'within the probe noise' : `${figure(expected.predictedRms)} µm rms`;
+  assert.equal(line, `Predicted after the pass: at most ${figure(expected.predictedRmsHigh)} µm rms at the probe points (${model} if the identified error is all of the machine's).`);
   assert.match(await page.getAttribute('#prediction', 'title'), /on the probe grid.*At most: at most this rms/);
   const verdict = await page.textContent('#verdict');
   assert.match(verdict, /^Correctable: /);

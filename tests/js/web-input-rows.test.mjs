@@ -7,7 +7,8 @@ import { readFileSync } from 'node:fs';
 import { inputRows } from '../../web/src/io/input-rows.js';
 import { jobRows, reportDateLine, reportInputRows, reportInspectionLine, verdictLine } from '../../web/src/report-lines.js';
 import { fieldUnit } from '../../web/src/result-fields.js';
-import { fmt } from '../../web/src/format.js';
+import { fmt, fixed } from '../../web/src/format.js';
+import { rmsText } from '../../web/src/views/summary.js';
 import { setResultFields } from '../../web/src/result-fields.js';
 import { setModuleLimits } from '../../web/src/limits.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
@@ -82,13 +83,27 @@ test("the report's verdict line: the class with its conformity, the face's rms b
   const c = r.correction;
   assert.equal(c.stop, false);
   const f = (v) => fmt(v, 3);
-  const after = c.predictedRms === 0 ? 'within the probe noise after the correction' : `${f(c.predictedRms)} µm rms predicted after the correction`;
-  assert.equal(verdictLine(r, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured, ${after} (at most ${f(c.predictedRmsHigh)} µm).`);
+  // What the pass leaves by its bound alone, not the model's figure below it.
+  assert.equal(verdictLine(r, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured, at most ${f(c.predictedRmsHigh)} µm rms after the correction.`);
+  assert.equal(verdictLine({ ...r, correction: { ...c, predictedRmsHigh: NaN } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured.`);
   // Within the probe noise: stop, the axes run stay.
   const quiet = hobsharp.evaluate({ ...paper, measured: measured.map((row) => row.map(() => 0.01)), correction: { probeNoise: 0.5 } });
   assert.equal(quiet.correction.stop, true);
   assert.match(verdictLine(quiet, unitOf), /; face 0\.01 µm rms measured: within the probe noise, keep the axes run\.$/);
   assert.doesNotMatch(line + verdictLine(r, unitOf), /NaN|undefined|correction\.[a-z]|rms[A-Z]|e-\d/);
+});
+
+test("the answer's rms line: after the pass the prediction's bound, never the identified machine's figure below it", () => {
+  setResultFields(hobsharp.resultFields());
+  const radial = paper.grid.radial, axial = paper.grid.axial;
+  const measured = Array.from({ length: radial }, (_, i) => Array.from({ length: axial }, (_, j) => 3 + 0.5 * i - 0.2 * j));
+  const r = hobsharp.evaluate({ ...paper, measured, correction: { probeNoise: 0.5 } });
+  const c = r.correction;
+  assert.ok(c.predictedRmsHigh > c.rmsAfter, 'the case has a bound above the model\'s figure');
+  assert.equal(rmsText(r, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured → at most ${fixed(c.predictedRmsHigh, 3)} µm after the pass.`);
+  // No bound (not a number): the model's figure, with its condition.
+  assert.equal(rmsText({ ...r, correction: { ...c, predictedRmsHigh: NaN } }, fieldUnit),
+    `Face rms: ${fixed(c.rmsBefore, 3)} µm measured → ${fixed(c.rmsAfter, 3)} µm after the pass if the identified error is all of the machine's.`);
 });
 
 test("the report's first line names the day and what was measured: a grid, the machine's points, or nothing", () => {

@@ -60,7 +60,7 @@ test('the verdict says what the left-out combinations are, not "left out as ampl
   assert.match(text, /The correction changes 10 independent combinations of the coefficients; 10 combinations are left unchanged, because they would need large axis moves for little gain\.$/);
   assert.match(verdictText({ ...c, rank: 1, amplifyingDropped: 1 }), /changes 1 independent combination of the coefficients; 1 combination is left unchanged, because it would need/);
   assert.match(verdictText({ ...c, amplifyingDropped: 0 }), /combinations of the coefficients\.$/);
-  assert.match(verdictText({ ...c, rmsBefore: 5.2376, rmsAfter: 0.01 }), /^Partly uncorrectable: .* RMS 5\.238 → 0\.010 µm; sum of squares 1234\.5 → 456\.2 µm²; thickness/);
+  assert.match(verdictText({ ...c, rmsBefore: 5.2376, rmsAfter: 0.01 }), /^Partly uncorrectable: .* If the identified error is all of the machine's: RMS 5\.238 → 0\.010 µm; sum of squares 1234\.5 → 456\.2 µm²; thickness/);
 });
 
 test('a grid\'s figures: the sum of squares and the largest deviation, NaN (a dash) if any value is not', () => {
@@ -89,13 +89,15 @@ test('the prediction: what the pass will leave and its bound, µm rms at the pro
   const c = hobsharp.evaluate({ ...paper(), measured: shaped() }).correction;
   assert.equal(c.stop, false);
   const text = predictionText(c, fieldUnit);
-  assert.match(text, /^Predicted after the pass: ([\d.e+-]+ µm rms \(at most [\d.e+-]+ µm rms\)|within the probe noise, at most [\d.e+-]+ µm rms) at the probe points\.$/);
+  // The bound first; the model's figure only with its condition, never as what the pass leaves.
+  assert.match(text, /^Predicted after the pass: at most [\d.e+-]+ µm rms at the probe points \(([\d.e+-]+ µm rms|within the probe noise) if the identified error is all of the machine's\)\.$/);
   // A prediction of no shape beyond the noise is said in words, not as a certain-looking 0.
-  assert.match(predictionText({ ...c, predictedRms: 0 }, fieldUnit), /within the probe noise, at most/);
-  assert.match(predictionText({ ...c, predictedRms: 0.2 }, fieldUnit), /0\.2 µm rms \(at most/);
+  assert.match(predictionText({ ...c, predictedRms: 0 }, fieldUnit), /\(within the probe noise if the identified error is all of the machine's\)/);
+  assert.match(predictionText({ ...c, predictedRms: 0.2 }, fieldUnit), /\(0\.2 µm rms if the identified error/);
+  assert.doesNotMatch(predictionText({ ...c, predictedRms: 0.2 }, fieldUnit), /pass: 0\.2/);
   assert.ok(text.includes(`at most ${Number(c.predictedRmsHigh.toPrecision(3))} µm rms`), text);
   // Units are the module's: another unit is shown as given; none given, no line.
-  assert.match(predictionText({ ...c, predictedRms: 0.2 }, (p) => (p.endsWith('High') ? 'mm' : 'µm')), /µm rms \(at most [\d.e+-]+ mm rms\)/);
+  assert.match(predictionText({ ...c, predictedRms: 0.2 }, (p) => (p.endsWith('High') ? 'mm' : 'µm')), /at most [\d.e+-]+ mm rms at the probe points \(0\.2 µm rms/);
   assert.equal(predictionText(c, () => null), null);
   // Nothing that is not a number, nothing for a proposal that is not to be run.
   assert.equal(predictionText({ ...c, predictedRmsHigh: NaN }, fieldUnit), null);

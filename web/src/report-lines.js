@@ -30,8 +30,8 @@ export function reportInspectionLine(inspection) {
   return `Rake face (DIN 3968): ${lead.graded ? `${lead.text}.` : inspection.notGraded || 'Not graded.'}`;
 }
 
-// "Class A — conforms; face 12.3 µm rms measured, 0.08 µm rms predicted after the correction (at
-// most 0.11 µm)": the rake face's class with its conformity (ISO 14253-1), then the face's rms
+// "Class A — conforms; face 12.3 µm rms measured, at most 0.11 µm rms after the correction": the
+// rake face's class with its conformity (ISO 14253-1), then the face's rms
 // before and after. Without a measurement the face is the one simulated for the axes run; when
 // the correction says stop, the face is within the probe noise and the axes stay.
 export function verdictLine(result, unitOf) {
@@ -43,12 +43,11 @@ export function verdictLine(result, unitOf) {
     const unit = unitOf('correction.rmsBefore');
     const measured = `face ${figure(before, unit)} rms measured`;
     if (c.stop === true) return `${head}; ${measured}: within the probe noise, keep the axes run.`;
-    const predicted = num(c.predictedRms), high = num(c.predictedRmsHigh);
-    const bound = high === null ? '' : ` (at most ${figure(Math.max(high, LEAST), unitOf('correction.predictedRmsHigh'))})`;
-    if (predicted === null) return `${head}; ${measured}.`;
-    const after = predicted === 0 ? 'within the probe noise after the correction'
-      : `${figure(predicted, unitOf('correction.predictedRms'))} rms predicted after the correction`;
-    return `${head}; ${measured}, ${after}${bound}.`;
+    // What the pass leaves by its bound alone (words.js, predictionText): the model's figure below
+    // it is what the pass leaves only if the identified error is all of the machine's.
+    const high = num(c.predictedRmsHigh);
+    if (high === null) return `${head}; ${measured}.`;
+    return `${head}; ${measured}, at most ${figure(Math.max(high, LEAST), unitOf('correction.predictedRmsHigh'))} rms after the correction.`;
   }
   const simulated = num(result && result.topography && result.topography.rms);
   const face = simulated === null ? '' : `; face ${figure(simulated, unitOf('topography.rms'))} rms simulated for the axes run`;

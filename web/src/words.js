@@ -40,11 +40,13 @@ export function verdictText(c, unitOf = unitText) {
     ? `; ${plural(c.amplifyingDropped, 'combination is', 'combinations are')} left unchanged, because ` +
       `${c.amplifyingDropped === 1 ? 'it' : 'they'} would need large axis moves for little gain`
     : '';
-  // Led by the rms, which compares between grids; the paper's sum of squares after it.
+  // Led by the rms, which compares between grids; the paper's sum of squares after it. The figures
+  // after are the identified machine's (the face re-simulated with the identified error), said so:
+  // what the pass leaves is the bound the verdict quotes.
   const squares = `sum of squares ${fmt(c.sseBefore, 6)} → ${withUnit(fmt(c.sseAfter, 4), u('sse'))}`;
   const lead = Number.isFinite(c.rmsBefore) ? `RMS ${fixed(c.rmsBefore, 3)} → ${withUnit(fixed(c.rmsAfter, 3), u('rms'))}; ${squares}`
     : `S${squares.slice(1)}`;
-  return `${c.verdict} ${lead}; ` +
+  return `${c.verdict} If the identified error is all of the machine's: ${lead}; ` +
     `thickness ${signed(c.thicknessBefore, 3)} → ${withUnit(signed(c.thicknessAfter, 3), u('thickness'))}. ` +
     `The correction changes ${plural(c.rank, 'independent combination', 'independent combinations')} of the coefficients${dropped}.`;
 }
@@ -52,11 +54,14 @@ export function verdictText(c, unitOf = unitText) {
 // A figure of µm rms for a sentence: 3 significant digits, 0 as 0.
 const rmsFigure = (v) => fmt(v, 3);
 
-// What the pass will leave (correction.predictedRms and its bound correction.predictedRmsHigh, on
-// the probe grid), with the units the module gives its fields (unitOf: a path to its unit, null
-// for a field it does not describe): "Predicted after the pass: 0.012 µm rms (at most 0.446 µm
-// rms) at the probe points." Null when there is nothing to run (correction.stop, or a proposal
-// that is not usable), when a figure is not a finite number, or when the module gives no unit.
+// What the pass will leave: its bound (correction.predictedRmsHigh, on the probe grid) first, and
+// the model's figure (correction.predictedRms) said for what it is, the face left if the identified
+// error is all of the machine's, never as what the pass leaves (the pass can leave more, up to the
+// bound); with the units the module gives its fields (unitOf: a path to its unit, null for a field
+// it does not describe): "Predicted after the pass: at most 0.446 µm rms at the probe points (0.012
+// µm rms if the identified error is all of the machine's)." Null when there is nothing to run
+// (correction.stop, or a proposal that is not usable), when a figure is not a finite number, or
+// when the module gives no unit.
 export function predictionText(c, unitOf) {
   if (!c || c.stop === true || c.usable === false) return null;
   const rms = c.predictedRms, high = c.predictedRmsHigh;
@@ -64,6 +69,6 @@ export function predictionText(c, unitOf) {
   const unit = unitOf('correction.predictedRms'), highUnit = unitOf('correction.predictedRmsHigh');
   if (!unit || !highUnit) return null;
   // No shape left beyond the probe's noise: say so rather than print a certain-looking 0.
-  if (rms === 0) return `Predicted after the pass: within the probe noise, at most ${rmsFigure(high)} ${highUnit} rms at the probe points.`;
-  return `Predicted after the pass: ${rmsFigure(rms)} ${unit} rms (at most ${rmsFigure(high)} ${highUnit} rms) at the probe points.`;
+  const model = rms === 0 ? 'within the probe noise' : `${rmsFigure(rms)} ${unit} rms`;
+  return `Predicted after the pass: at most ${rmsFigure(high)} ${highUnit} rms at the probe points (${model} if the identified error is all of the machine's).`;
 }

@@ -19,15 +19,20 @@ export function firstStepText(result) {
     : 'Run the axes below, measure the face and load it in step 2; "Use as next run" keeps this pass in the history first.';
 }
 
-// The face's rms before (measured, or simulated for the axes run) and after the pass (predicted),
-// with the module's units: "Face rms: 3.214 µm measured → 0.004 µm predicted after the pass."
+// The face's rms before (measured, or simulated for the axes run) and after the pass, with the
+// module's units: "Face rms: 3.214 µm measured → at most 0.052 µm after the pass." After the pass
+// is the prediction's bound (correction.predictedRmsHigh), what the pass leaves; the identified
+// machine's figure below it (correction.rmsAfter) only with that condition, where there is no bound.
 export function rmsText(result, unitOf = fieldUnit) {
   if (!result) return '';
   const c = result.correction;
   if (c) {
-    const [before, after] = [unitOf('correction.rmsBefore'), unitOf('correction.rmsAfter')];
+    const [before, after, high] = [unitOf('correction.rmsBefore'), unitOf('correction.rmsAfter'), unitOf('correction.predictedRmsHigh')];
     if (!before || !after) return '';
-    return `Face rms: ${fixed(c.rmsBefore, 3)} ${before} measured → ${fixed(c.rmsAfter, 3)} ${after} predicted after the pass.`;
+    const measured = `Face rms: ${fixed(c.rmsBefore, 3)} ${before} measured`;
+    if (c.stop !== true && high && Number.isFinite(c.predictedRmsHigh))
+      return `${measured} → at most ${fixed(c.predictedRmsHigh, 3)} ${high} after the pass.`;
+    return `${measured} → ${fixed(c.rmsAfter, 3)} ${after} after the pass if the identified error is all of the machine's.`;
   }
   const unit = unitOf('topography.rms');
   return unit ? `Face rms: ${fixed(result.topography.rms, 3)} ${unit} simulated for the axes run; no measured face yet.` : '';
