@@ -91,6 +91,11 @@ Campaign summarise(std::uint64_t seed, std::vector<ScenarioOutcome> outcomes, do
         if (met) ++s.targets[i].met;
         if (i == 0) firstMet = met;
       }
+      const PassOutcome* first = o.passes.empty() ? nullptr : &o.passes.front();
+      if (o.scenario.spec.passes == 1 && !goals.empty() && first && first->nullPartRms >= 0) {
+        ++s.nullPartOf;
+        if (first->nullPartRms > goals[0].limit) ++s.nullPartMisses;
+      }
       if (o.scenario.spec.passes == 1 && !goals.empty() && !firstMet) {
         ++s.misses;
         if (p && !p->refused && p->twinMisfit >= 0 && p->twinMisfit <= p->probeNoise &&
@@ -151,6 +156,19 @@ std::string twinsText(const ClassSummary& s) {
   return t.str();
 }
 
+// A class's scenarios whose error's structural null space part alone misses (ClassSummary::
+// nullPartMisses), in words.
+std::string nullPartText(const ClassSummary& s, const Target& first) {
+  std::ostringstream t;
+  t << s.nullPartMisses << " of its " << s.nullPartOf << (s.nullPartOf == 1 ? " scenario" : " scenarios")
+    << (s.nullPartMisses == 1 ? " carries" : " carry") << " an error whose part no face shows to first order "
+    << "(on a straight gash its X, Y and B terms) alone leaves more than " << micrometres(first.limit)
+    << " µm rms between the probe points: a correction exact in every other direction, and blind to that part, meets "
+       "the target in "
+    << percent(s.nullPartOf > 0 ? static_cast<double>(s.nullPartOf - s.nullPartMisses) / s.nullPartOf : 0.0) << " of them";
+  return t.str();
+}
+
 }  // namespace
 
 nlohmann::json toJson(const Campaign& c) {
@@ -164,7 +182,7 @@ nlohmann::json toJson(const Campaign& c) {
     nlohmann::json k = {{"class", className(s.kind)}, {"title", classTitle(s.kind)}, {"count", s.count},
                         {"refused", s.refused}, {"unjudged", s.unjudged}, {"median", s.median}, {"p90", s.p90},
                         {"p95", s.p95}, {"worst", s.worst}, {"finals", s.finals}, {"misses", s.misses},
-                        {"twins", s.twins}};
+                        {"twins", s.twins}, {"nullPartMisses", s.nullPartMisses}, {"nullPartOf", s.nullPartOf}};
     for (const Target& t : s.targets) k["targets"].push_back(targetJson(t));
     j["classes"].push_back(k);
   }
@@ -181,7 +199,8 @@ nlohmann::json toJson(const Campaign& c) {
                           {"status", p.status}, {"verdict", p.verdict}, {"rank", p.rank},
                           {"withinNoise", p.withinNoise}, {"amplifying", p.amplifying}, {"iterations", p.iterations},
                           {"linearisedAtNominal", p.linearisedAtNominal}, {"passesJoined", p.passesJoined}, {"stop", p.stopAdvised},
-                          {"unsolvableTrials", p.unsolvableTrials}, {"twinMisfit", p.twinMisfit}, {"twinGap", p.twinGap}};
+                          {"unsolvableTrials", p.unsolvableTrials}, {"twinMisfit", p.twinMisfit}, {"twinGap", p.twinGap},
+                          {"nullPartRms", p.nullPartRms}};
       if (!p.message.empty()) q["message"] = p.message;
       s["passes"].push_back(q);
     }
@@ -204,6 +223,7 @@ std::string tableText(const Campaign& c) {
       t << "  " << (g.holds() ? "met    " : "MISSED ") << percent(g.share()) << " (" << g.met << "/" << g.of
         << ", asked " << percent(g.required) << "): " << g.what << "\n";
     if (s.twins > 0) t << "  " << twinsText(s) << "\n";
+    if (s.nullPartMisses > 0) t << "  " << nullPartText(s, s.targets.front()) << "\n";
   }
   t << "\nThe prediction's bound:\n";
   for (const Target& g : c.bounds)
@@ -231,6 +251,8 @@ std::string markdownTable(const Campaign& c) {
     }
   for (const ClassSummary& s : c.classes)
     if (s.twins > 0) t << "\n" << classTitle(s.kind) << ": " << twinsText(s) << ".\n";
+  for (const ClassSummary& s : c.classes)
+    if (s.nullPartMisses > 0) t << "\n" << classTitle(s.kind) << ": " << nullPartText(s, s.targets.front()) << ".\n";
   t << "\n| the prediction's bound | share (asked) |\n|---|---|\n";
   for (const Target& g : c.bounds)
     t << "| " << g.what << " | " << (g.holds() ? "" : "**") << percent(g.share()) << (g.holds() ? "" : "**") << " ("

@@ -35,6 +35,10 @@ struct ClassSummary {
   // measured and that the proposed axes leave more than twice the limit apart (docs/validation.md
   // says what this backs and what it does not).
   int misses = 0, twins = 0;
+  // Of a one-pass class's judged scenarios, those whose error's part in the structural null space
+  // alone leaves more than the first target's limit (run_scenario.h, nullPartRms): a correction
+  // exact in every direction a face shows to first order, and blind to that part, misses them.
+  int nullPartMisses = 0, nullPartOf = 0;
 };
 
 struct Campaign {

@@ -9,6 +9,7 @@
 #include "face_vectors.h"
 #include "ground_face.h"
 #include "sharpening_job.h"
+#include "structural_null_space.h"
 #include "topography.h"
 
 namespace hobsharp::validation {
@@ -44,6 +45,25 @@ Outcome<SharpeningJob> machineJob(const Scenario& s, const std::optional<WheelPo
   if (s.wheelError) c.wheelProfileOffset = sumAt(*s.wheelError, recorded, s.wheelError);
   else if (recorded) c.wheelProfileOffset = recorded;
   return resolveJob(c);
+}
+
+// The part of `error` in the structural null space of `machine`'s face (structural_null_space.h),
+// split as the identification splits it: the complement of the identifiable space in machine
+// steps, over the motion range of `face`.
+AxisPolynomials structuralPart(const SharpeningJob& machine, const AxisPolynomials& error, const GroundFace& face) {
+  const MotionRange range = motionRange(face);
+  const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});
+  const IdentifiableSpace space = identifiableSpace(machine.setup.face, error.degree(), machine.correction, reach);
+  const int q = static_cast<int>(space.coefficients.size());
+  Eigen::VectorXd z(q);
+  for (int j = 0; j < q; ++j)
+    z(j) = error[space.coefficients[j].axis].coefficient(space.coefficients[j].degree) / space.step(j);
+  const Eigen::VectorXd n = z - space.basis * (space.basis.transpose() * z);
+  AxisPolynomials part = error;
+  for (Axis a : kAxes)
+    for (double& v : part[a].a) v = 0;
+  for (int j = 0; j < q; ++j) part[space.coefficients[j].axis].a[space.coefficients[j].degree] = n(j) * space.step(j);
+  return part;
 }
 
 // The face `machine` grinds when `commanded` is run and it adds `error`, on `grid`.
@@ -112,6 +132,11 @@ ScenarioOutcome runScenario(const Scenario& s) {
       out.judged = false;
       out.message = "the machine's face: " + ground.error().message;
       break;
+    }
+    if (pass == 0 && !s.spec.wheel) {
+      // What the error's part no face shows to first order leaves alone (run_scenario.h).
+      auto alone = rmsOf(*machine, run, structuralPart(*machine, s.error, *ground), dense);
+      if (alone) p.nullPartRms = *alone;
     }
     Eigen::MatrixXd measured = topographyOf(*ground).normal;
     for (int i = 0; i < measured.size(); ++i) measured.data()[i] += s.spec.sigma * gauss(noise);

@@ -38,6 +38,12 @@ struct PassOutcome {
   // computed (a wheel pass, or a face that cannot be simulated). The proposal corrects the twin
   // exactly (nominal - its error), so twinGap is the face the pass leaves, to rounding.
   double twinMisfit = -1, twinGap = -1;
+  // The first pass of a scenario without a wheel shape: the face, between the probe points (µm rms),
+  // that the true error's part in the structural null space (structural_null_space.h: on a straight
+  // gash its X, Y and B terms, on a helical one X against A) grinds alone, the axes run being
+  // otherwise exact: what a correction exact in every direction a face shows to first order, and
+  // blind to the rest, leaves. -1: not computed (a later pass, a wheel shape, a face not simulated).
+  double nullPartRms = -1;
   double probeNoise = 0;  // the probe noise declared in the case (sigma, µm)
 };
 

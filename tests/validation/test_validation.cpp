@@ -221,5 +221,33 @@ TEST(Validation, AOnePassMissWithATwinMachineIsCounted) {
   EXPECT_EQ(medium({met}).twins, 0);
 }
 
+// What one pass cannot reach without the error's part that no face shows to first order
+// (run_scenario.h, nullPartRms; campaign.h, ClassSummary::nullPartMisses). Scenario 37 (30 µm rms,
+// a straight gash): its X, Y and B terms alone, the rest corrected exactly, leave 2.3 µm between
+// the probe points. Scenario 1 (30 µm rms, a helical gash): X against A turns the helicoid along
+// itself, so that part leaves nothing. One of the two is counted; at 0.05 µm, neither.
+TEST(Validation, TheErrorsPartNoFaceShowsIsMeasuredAndCounted) {
+  const ScenarioOutcome straight = outcomeOf(37), helical = outcomeOf(1);
+  ASSERT_FALSE(straight.passes.empty());
+  ASSERT_FALSE(helical.passes.empty());
+  EXPECT_GT(straight.passes[0].nullPartRms, 1.0);
+  EXPECT_LT(straight.passes[0].nullPartRms, straight.initialDenseRms);
+  EXPECT_GE(helical.passes[0].nullPartRms, 0);
+  EXPECT_LT(helical.passes[0].nullPartRms, 1e-6);
+  const auto medium = [](std::vector<ScenarioOutcome> os) {
+    return summarise(kSeed, std::move(os), 0).classes[static_cast<int>(ScenarioClass::Medium)];
+  };
+  const ClassSummary both = medium({straight, helical});
+  EXPECT_EQ(both.nullPartOf, 2);
+  EXPECT_EQ(both.nullPartMisses, 1);
+  ScenarioOutcome small = straight;
+  small.passes[0].nullPartRms = 0.05;
+  EXPECT_EQ(medium({small, helical}).nullPartMisses, 0);
+  // A wheel scenario's first pass and a later pass are not measured.
+  const ScenarioOutcome wheel = outcomeOf(5);
+  ASSERT_FALSE(wheel.passes.empty());
+  EXPECT_EQ(wheel.passes[0].nullPartRms, -1);
+}
+
 }  // namespace
 }  // namespace hobsharp::validation
