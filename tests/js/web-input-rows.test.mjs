@@ -104,6 +104,10 @@ test("the answer's rms line: after the pass the prediction's bound, never the id
   // No bound (not a number): the model's figure, with its condition.
   assert.equal(rmsText({ ...r, correction: { ...c, predictedRmsHigh: NaN } }, fieldUnit),
     `Face rms: ${fixed(c.rmsBefore, 3)} µm measured → ${fixed(c.rmsAfter, 3)} µm after the pass if the identified error is all of the machine's.`);
+  // A stop: no pass, nothing after it.
+  const quiet = hobsharp.evaluate({ ...paper, measured: measured.map((row) => row.map(() => 0.01)), correction: { probeNoise: 0.5 } });
+  assert.equal(quiet.correction.stop, true);
+  assert.equal(rmsText(quiet, fieldUnit), 'Face rms: 0.010 µm measured: within the probe noise, the axes run stay.');
 });
 
 test("the report's first line names the day and what was measured: a grid, the machine's points, or nothing", () => {

@@ -22,7 +22,8 @@ export function firstStepText(result) {
 // The face's rms before (measured, or simulated for the axes run) and after the pass, with the
 // module's units: "Face rms: 3.214 µm measured → at most 0.052 µm after the pass." After the pass
 // is the prediction's bound (correction.predictedRmsHigh), what the pass leaves; the identified
-// machine's figure below it (correction.rmsAfter) only with that condition, where there is no bound.
+// machine's figure below it (correction.rmsAfter) only with that condition, where there is no bound;
+// after a stop, nothing.
 export function rmsText(result, unitOf = fieldUnit) {
   if (!result) return '';
   const c = result.correction;
@@ -30,7 +31,9 @@ export function rmsText(result, unitOf = fieldUnit) {
     const [before, after, high] = [unitOf('correction.rmsBefore'), unitOf('correction.rmsAfter'), unitOf('correction.predictedRmsHigh')];
     if (!before || !after) return '';
     const measured = `Face rms: ${fixed(c.rmsBefore, 3)} ${before} measured`;
-    if (c.stop !== true && high && Number.isFinite(c.predictedRmsHigh))
+    // A stop proposes no pass: nothing after it.
+    if (c.stop === true) return `${measured}: within the probe noise, the axes run stay.`;
+    if (high && Number.isFinite(c.predictedRmsHigh))
       return `${measured} → at most ${fixed(c.predictedRmsHigh, 3)} ${high} after the pass.`;
     return `${measured} → ${fixed(c.rmsAfter, 3)} ${after} after the pass if the identified error is all of the machine's.`;
   }
