@@ -35,7 +35,7 @@ async function passTable(page) {
 
 // The rms panel's traces of the passes' plot: name, y values, and the bars' lengths.
 const rmsTraces = (page) => page.evaluate(() => document.querySelector('#plot-passes').data
-  .filter((t) => t.xaxis === 'x').map((t) => ({ name: t.name, y: [...t.y], bars: t.error_y ? [...t.error_y.array] : null, hover: t.customdata ? [...t.customdata] : [] })));
+  .filter((t) => t.xaxis === 'x').map((t) => ({ name: t.name, y: [...t.y], bars: t.error_y ? [...t.error_y.arrayminus] : null, hover: t.customdata ? [...t.customdata] : [] })));
 
 test('a measured face: the prediction and its bound under the verdict, in µm rms, and in the passes\' table and plot', async () => {
   const c = { ...paper(), measured: shaped };
@@ -60,7 +60,7 @@ test('a measured face: the prediction and its bound under the verdict, in µm rm
   assert.equal(current[0], '1 (under way)');
   assert.equal(Number(current[1]), Number(expected.rmsBefore.toPrecision(4)));
   assert.equal(next[0], '2 (next, predicted)');
-  assert.equal(next[5], `${tableFigure(expected.predictedRms)} (at most ${tableFigure(expected.predictedRmsHigh)})`);
+  assert.equal(next[5], `at most ${tableFigure(expected.predictedRmsHigh)} (${tableFigure(expected.predictedRms)} on the identified machine)`);
   // The plot's rms panel: the noise floor at the correction's sigma, the bound as a bar.
   const traces = await rmsTraces(page);
   assert.deepEqual(traces.map((t) => t.name), ['probe noise σ 0.5 µm', 'measured', 'predicted']);
@@ -69,9 +69,11 @@ test('a measured face: the prediction and its bound under the verdict, in µm rm
   // The rms axis stops at a tenth of the probe noise (issue 22): a prediction below it is drawn
   // on the axis's floor, its own value in the hover.
   const floor = Math.max(0.01, expected.probeNoise / 10);
-  assert.equal(predicted.y.at(-1), Math.max(expected.predictedRms, floor));
-  assert.ok(predicted.hover.at(-1).startsWith(`${Number(expected.predictedRms.toPrecision(4))} µm`), predicted.hover.at(-1));
-  assert.ok(Math.abs(predicted.y.at(-1) + predicted.bars.at(-1) - Math.max(expected.predictedRmsHigh, predicted.y.at(-1))) < 1e-12, 'the bar reaches the bound');
+  // The point is the bound, what the pass leaves; a bar down to the identified machine's figure.
+  assert.equal(predicted.y.at(-1), Math.max(expected.predictedRmsHigh, floor));
+  assert.ok(predicted.hover.at(-1).startsWith(`at most ${Number(expected.predictedRmsHigh.toPrecision(4))} µm`), predicted.hover.at(-1));
+  assert.ok(predicted.hover.at(-1).endsWith(`; ${Number(expected.predictedRms.toPrecision(4))} µm on the identified machine`), predicted.hover.at(-1));
+  assert.ok(Math.abs(predicted.y.at(-1) - predicted.bars.at(-1) - Math.max(expected.predictedRms, floor)) < 1e-12, 'the bar reaches down to the identified machine\'s figure');
   assert.equal(await page.evaluate(() => document.querySelector('#plot-passes').data.length), 9, 'four panels of measured and predicted, and the floor');
   for (const text of [await page.textContent('#measured-section'), await page.textContent('#passes-section')]) {
     assert.doesNotMatch(text, /NaN|undefined|Infinity/);

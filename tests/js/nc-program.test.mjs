@@ -144,7 +144,7 @@ for (const [name, { caseObject, result }] of Object.entries(evaluated)) {
       assert.match(p.text, /; Largest deviation of this program from the axes: [\d.]+ um \(X Y Z\), [\de.-]+ deg \(A B\)\.\n/);
       if (name.endsWith('corrected')) {
         // The rounding's cost: the correction's own figures, to 3 digits.
-        const rms = Number(p.text.match(/face predicted with these coefficients ([\d.e-]+) um rms;/)[1]);
+        const rms = Number(p.text.match(/face on the identified machine with these coefficients ([\d.e-]+) um rms;/)[1]);
         const floor = Number(p.text.match(/position resolution sets ([\d.e-]+) um rms\./)[1]);
         assert.ok(Math.abs(rms / result.correction.rmsRounded - 1) < 5e-3, `${rms} um rms stated`);
         assert.ok(Math.abs(floor / result.correction.resolutionFloor - 1) < 5e-3, `${floor} um rms stated`);

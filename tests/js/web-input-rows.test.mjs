@@ -108,6 +108,9 @@ test("the answer's rms line: after the pass the prediction's bound, never the id
   const quiet = hobsharp.evaluate({ ...paper, measured: measured.map((row) => row.map(() => 0.01)), correction: { probeNoise: 0.5 } });
   assert.equal(quiet.correction.stop, true);
   assert.equal(rmsText(quiet, fieldUnit), 'Face rms: 0.010 µm measured: within the probe noise, the axes run stay.');
+  // A proposal not to be run: nothing after it; a bound below a nanometre reads as 0.001, not 0.000.
+  assert.equal(rmsText({ ...r, correction: { ...c, usable: false } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured.`);
+  assert.match(rmsText({ ...r, correction: { ...c, predictedRmsHigh: 2e-4 } }, fieldUnit), /→ at most 0\.001 µm after the pass\.$/);
 });
 
 test("the report's first line names the day and what was measured: a grid, the machine's points, or nothing", () => {

@@ -27,7 +27,7 @@ test('the rms axis stops at a tenth of the probe noise, at least 0.01 µm', () =
 
 test('a figure below the axis is drawn on its floor, marked, its value kept in the hover; the sum of squares is linear', () => {
   const P = fake();
-  drawPassHistory(P, null, series([9.6], [3.1e-11], [0.2], 0.5), 2, { rms: 'µm', sse: 'µm²', max: 'µm', thickness: 'µm' });
+  drawPassHistory(P, null, series([9.6], [3.1e-11], [null], 0.5), 2, { rms: 'µm', sse: 'µm²', max: 'µm', thickness: 'µm' });
   const { traces, layout } = P.got;
   assert.equal(layout.yaxis.type, 'log');
   assert.deepEqual(layout.yaxis.range.map((v) => Number(v.toFixed(6))), [Math.log10(0.05), Number((Math.log10(9.6) + 0.15).toFixed(6))].map((v) => Number(v.toFixed(6))));
@@ -36,8 +36,17 @@ test('a figure below the axis is drawn on its floor, marked, its value kept in t
   const predicted = rms[2];
   assert.deepEqual(predicted.y, [0.05], 'drawn on the floor');
   assert.deepEqual(predicted.marker.symbol, ['triangle-down']);
-  assert.equal(predicted.customdata[0], "3.1e-11 µm, below the axis's 0.05 µm, at most 0.2 µm");
-  assert.ok(Math.abs(predicted.error_y.array[0] - 0.15) < 1e-12, 'the bound reaches 0.2 µm from where the point is drawn');
+  assert.equal(predicted.customdata[0], "3.1e-11 µm, below the axis's 0.05 µm");
+  // With a bound, the point is the bound (what the pass leaves), a bar down to the identified
+  // machine's figure as drawn (here the axis's floor), both in the hover.
+  const B = fake();
+  drawPassHistory(B, null, series([9.6], [3.1e-11], [0.2], 0.5), 2, { rms: 'µm', sse: 'µm²', max: 'µm', thickness: 'µm' });
+  const bounded = B.got.traces.filter((t) => t.xaxis === 'x')[2];
+  assert.deepEqual(bounded.y, [0.2]);
+  assert.deepEqual(bounded.marker.symbol, 'circle-open');
+  assert.equal(bounded.customdata[0], 'at most 0.2 µm; 3.1e-11 µm on the identified machine');
+  assert.ok(Math.abs(bounded.error_y.arrayminus[0] - 0.15) < 1e-12, 'the bar reaches from the bound down to the floor');
+  assert.deepEqual(bounded.error_y.array, [0]);
   assert.deepEqual(rms[1].y, [9.6]);
   assert.equal(rms[1].marker.symbol, 'circle');
   assert.equal(layout.yaxis2.type, 'linear', 'the sum of squares is not on a log scale running to 1e-20');

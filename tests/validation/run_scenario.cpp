@@ -47,9 +47,11 @@ Outcome<SharpeningJob> machineJob(const Scenario& s, const std::optional<WheelPo
   return resolveJob(c);
 }
 
-// The part of `error` in the structural null space of `machine`'s face (structural_null_space.h),
-// split as the identification splits it: the complement of the identifiable space in machine
-// steps, over the motion range of `face`.
+// The part of `error` in the structural null space of `machine`'s face (structural_null_space.h):
+// the complement of the identifiable space in machine steps, over the motion range of `face` (the
+// face measured; the identification takes the run face's). On a straight gash the split is per
+// coefficient (X, Y and B), whatever the metric; on a helical one the part grinds nothing, whatever
+// the metric, so the range taken moves no figure.
 AxisPolynomials structuralPart(const SharpeningJob& machine, const AxisPolynomials& error, const GroundFace& face) {
   const MotionRange range = motionRange(face);
   const double reach = std::max({std::abs(range.min), std::abs(range.max), 1e-12});

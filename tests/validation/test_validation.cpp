@@ -247,6 +247,10 @@ TEST(Validation, TheErrorsPartNoFaceShowsIsMeasuredAndCounted) {
   const ScenarioOutcome wheel = outcomeOf(5);
   ASSERT_FALSE(wheel.passes.empty());
   EXPECT_EQ(wheel.passes[0].nullPartRms, -1);
+  const ScenarioOutcome large = outcomeOf(2);
+  ASSERT_EQ(large.passes.size(), 2u);
+  EXPECT_GE(large.passes[0].nullPartRms, 0);
+  EXPECT_EQ(large.passes[1].nullPartRms, -1);
 }
 
 }  // namespace

@@ -202,7 +202,7 @@ function headerLines(d, o, n, deviation, unit) {
   lines.push(`Largest deviation of this program from the axes: ${fixed(deviation.linear * 1000, 4)} um (X Y Z), ${sinumerikReal(deviation.rotary, 2).replace('EX', 'e')} deg (A B).`);
   const r = h.rounding;
   if (r && Number.isFinite(r.rmsRounded)) {
-    lines.push(`Rounding (the correction's figures): face predicted with these coefficients ${sinumerikReal(r.rmsRounded, 3).replace('EX', 'e')} um rms;`);
+    lines.push(`Rounding (the correction's figures): face on the identified machine with these coefficients ${sinumerikReal(r.rmsRounded, 3).replace('EX', 'e')} um rms;`);
     if (Number.isFinite(r.resolutionFloor)) lines.push(`the floor the axes' position resolution sets ${sinumerikReal(r.resolutionFloor, 3).replace('EX', 'e')} um rms.`);
   }
   lines.push('Feed: the machine\'s grinding feed, modal, programmed before this program.');

@@ -1,4 +1,4 @@
-// The grinding passes plotted: per pass, measured (solid) and predicted (dashed), the rms (µm, with
+// The grinding passes plotted: per pass, measured (solid) and predicted (dashed; the rms at its bound), the rms (µm, with
 // the prediction's bound as a bar above it and the probe noise's floor, sigma, as a dotted line
 // over a shaded band: a measured rms in the band is noise, and another pass would only move it), the sum of
 // squares (µm²), the largest |deviation| (µm) and the thickness error (µm), side by side. The rms
@@ -76,22 +76,26 @@ export function drawPassHistory(Plotly, el, series, passCount, units = {}) {
         hovertemplate: `probe noise σ %{y:.3g} ${unit}: below it the face is noise<extra></extra>`,
       });
     }
+    // The rms predicted is drawn at its bound (what the pass leaves), a bar down to the identified
+    // machine's figure; where there is no bound (the first pass's simulated face), at that figure.
+    const bounded = (k) => high[k] !== null && high[k] !== undefined && high[k] >= s.predicted.y[k];
+    const drawnAt = { measured: s.measured.y, predicted: s.predicted.y.map((y, k) => (bounded(k) ? high[k] : y)) };
     for (const set of ['measured', 'predicted']) {
-      const below = s[set].y.map((y) => log && y < bottom);
+      const below = drawnAt[set].map((y) => log && y < bottom);
       const symbol = set === 'predicted' ? 'circle-open' : 'circle';
       const trace = {
-        type: 'scatter', mode: 'lines+markers', x: s[set].x, y: s[set].y.map(shown),
+        type: 'scatter', mode: 'lines+markers', x: s[set].x, y: drawnAt[set].map(shown),
         xaxis: `x${axis}`, yaxis: `y${axis}`, name: set, legendgroup: set, showlegend: k === 0,
         line: { color: COLOURS[set], dash: set === 'predicted' ? 'dash' : 'solid' },
         marker: { size: 8, symbol: below.some(Boolean) ? below.map((b) => (b ? 'triangle-down' : symbol)) : symbol },
-        customdata: s[set].y.map((y, k) => `${Number(y.toPrecision(4))} ${unit}${below[k] ? `, below the axis's ${figure(bottom)} ${unit}` : ''}`),
+        customdata: drawnAt[set].map((y, k) => `${set === 'predicted' && bounded(k) ? 'at most ' : ''}${Number(y.toPrecision(4))} ${unit}${below[k] ? `, below the axis's ${figure(bottom)} ${unit}` : ''}`),
         hovertemplate: `pass %{x}, ${set}: %{customdata}<extra></extra>`,
       };
-      // The prediction's bound: a bar from the predicted rms (as drawn) up to it.
+      // Below the bound, the identified machine's figure: a bar from the point (as drawn) down to it.
       if (set === 'predicted' && high.length) {
-        const up = trace.y.map((y, k) => (high[k] !== null && high[k] >= y ? high[k] - y : 0));
-        trace.error_y = { type: 'data', symmetric: false, array: up, arrayminus: up.map(() => 0), color: COLOURS.predicted, thickness: 1.5, width: 6 };
-        trace.customdata = trace.customdata.map((text, k) => (high[k] === null || high[k] === undefined ? text : `${text}, at most ${figure(high[k])} ${unit}`));
+        const down = trace.y.map((y, k) => (bounded(k) ? Math.max(0, y - shown(s.predicted.y[k])) : 0));
+        trace.error_y = { type: 'data', symmetric: false, array: down.map(() => 0), arrayminus: down, color: COLOURS.predicted, thickness: 1.5, width: 6 };
+        trace.customdata = trace.customdata.map((text, k) => (bounded(k) ? `${text}; ${Number(s.predicted.y[k].toPrecision(4))} ${unit} on the identified machine` : text));
       }
       traces.push(trace);
     }

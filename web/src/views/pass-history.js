@@ -17,9 +17,10 @@ const units = () => Object.fromEntries(['rms', 'sse', 'max', 'thickness'].map((q
 // The figures on the scale a probe reads (issue 22): an rms below 0.001 µm and a sum of squares
 // below 1e-6 µm² are "below" that, not the solver's 3e-11.
 const LEAST_RMS = 0.001, LEAST_SSE = 1e-6;
-// The rms predicted with its bound: "0.012 (at most 0.446)".
+// The rms predicted: its bound, what the pass leaves, and the identified machine's figure below it
+// with that condition: "at most 0.446 (0.012 on the identified machine)".
 const rmsCell = (f) => (f.rms !== null && typeof f.rmsHigh === 'number'
-  ? `${faceFigure(f.rms, LEAST_RMS)} (at most ${faceFigure(f.rmsHigh, LEAST_RMS)})` : faceFigure(f.rms, LEAST_RMS, 4));
+  ? `at most ${faceFigure(f.rmsHigh, LEAST_RMS)} (${faceFigure(f.rms, LEAST_RMS)} on the identified machine)` : faceFigure(f.rms, LEAST_RMS, 4));
 
 const cells = (f, set) => (f
   ? `<td class="num" data-${set}="rms">${rmsCell(f)}</td><td class="num" data-${set}="sse">${faceFigure(f.sse, LEAST_SSE, 6)}</td>` +

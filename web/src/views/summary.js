@@ -7,6 +7,8 @@ import { fixed } from '../format.js';
 import { fieldUnit } from '../result-fields.js';
 
 const $ = (selector) => document.querySelector(selector);
+// The least rms the line writes (3 decimals): a bound below it reads "at most 0.001", not 0.000.
+const LEAST_RMS = 0.001;
 
 // What to do next, by where the job is: no measured face yet, or a correction to run.
 export function firstStepText(result) {
@@ -33,8 +35,10 @@ export function rmsText(result, unitOf = fieldUnit) {
     const measured = `Face rms: ${fixed(c.rmsBefore, 3)} ${before} measured`;
     // A stop proposes no pass: nothing after it.
     if (c.stop === true) return `${measured}: within the probe noise, the axes run stay.`;
+    // A proposal that is not to be run: nothing after it either.
+    if (c.usable === false) return `${measured}.`;
     if (high && Number.isFinite(c.predictedRmsHigh))
-      return `${measured} → at most ${fixed(c.predictedRmsHigh, 3)} ${high} after the pass.`;
+      return `${measured} → at most ${fixed(Math.max(c.predictedRmsHigh, LEAST_RMS), 3)} ${high} after the pass.`;
     return `${measured} → ${fixed(c.rmsAfter, 3)} ${after} after the pass if the identified error is all of the machine's.`;
   }
   const unit = unitOf('topography.rms');
