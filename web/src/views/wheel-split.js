@@ -14,7 +14,7 @@ const PLOTS = [['plot-removed-axes', 'removedByAxes', 'Removed by the axes'], ['
 export function shareText(c) {
   const pct = (v) => `${fixed(100 * v, 1)} %`;
   return `Of the measured sum of squares, the axes remove ${pct(c.axesShare)} and the wheel's proposed offset ${pct(c.wheelShare)}; ` +
-    `${withUnit(fixed(c.rmsAfter, 3), unitText('correction.rmsAfter'))} ${fieldLabel('correction.rmsAfter')} is left (re-simulated with both).`;
+    `${withUnit(fixed(c.rmsAfter, 3), unitText('correction.rmsAfter'))} ${fieldLabel('correction.rmsAfter')} is left on the identified machine (re-simulated with both; the pass may leave up to the verdict's bound).`;
 }
 
 function drawSplit({ Plotly, result: r }) {
