@@ -86,7 +86,7 @@ std::string predictionText(const Correction& c) {
   // The bound alone (issue 20: the verdict quotes the bound and never a figure below it): the model's
   // figure, predictedRms, is what the pass leaves only if the identified error is all of the
   // machine's: on ten campaign seeds (6,409 passes) the face left on the probe grid was more than
-  // three times it plus 0.02 µm in 40 % of them, and above the bound in 5 % (docs/validation.md).
+  // three times it plus 0.02 µm in 40 % of them, and above the bound in 5 % (docs/method.md).
   leaves << "the face measured " << c.before.rms << " µm rms will be left at most " << c.predictedRmsHigh << " µm rms";
   if (c.predictedUnseenPart > 0)
     leaves << (c.predictedWheelAlike ? " if the error the face cannot show, or cannot tell from the wheel's shape, is no "

@@ -1,5 +1,5 @@
-// The grinding passes plotted: per pass, measured (solid) and predicted (dashed; the rms at its bound), the rms (µm, with
-// the prediction's bound as a bar above it and the probe noise's floor, sigma, as a dotted line
+// The grinding passes plotted: per pass, measured (solid) and predicted (dashed), the rms (µm; the
+// predicted point at the prediction's bound, a bar down to the identified machine's figure; the probe noise's floor, sigma, as a dotted line
 // over a shaded band: a measured rms in the band is noise, and another pass would only move it), the sum of
 // squares (µm²), the largest |deviation| (µm) and the thickness error (µm), side by side. The rms
 // on a log scale that stops at a scale that means something (rmsAxisFloor: a tenth of the smallest
