@@ -91,16 +91,17 @@ Campaign summarise(std::uint64_t seed, std::vector<ScenarioOutcome> outcomes, do
         if (met) ++s.targets[i].met;
         if (i == 0) firstMet = met;
       }
-      const PassOutcome* first = o.passes.empty() ? nullptr : &o.passes.front();
-      if (o.scenario.spec.passes == 1 && !goals.empty() && first && first->nullPartRms >= 0) {
-        ++s.nullPartOf;
-        if (first->nullPartRms > goals[0].limit) ++s.nullPartMisses;
-      }
-      if (o.scenario.spec.passes == 1 && !goals.empty() && !firstMet) {
-        ++s.misses;
-        if (p && !p->refused && p->twinMisfit >= 0 && p->twinMisfit <= p->probeNoise &&
-            p->twinGap > 2 * goals[0].limit)
-          ++s.twins;
+      if (o.scenario.spec.passes == 1 && !goals.empty()) {  // one pass: the last pass is the first
+        if (p && p->nullPartRms >= 0) {
+          ++s.nullPartOf;
+          if (p->nullPartRms > goals[0].limit) ++s.nullPartMisses;
+        }
+        if (!firstMet) {
+          ++s.misses;
+          if (p && !p->refused && p->twinMisfit >= 0 && p->twinMisfit <= p->probeNoise &&
+              p->twinGap > 2 * goals[0].limit)
+            ++s.twins;
+        }
       }
       for (const PassOutcome& q : o.passes) {
         if (q.refused) continue;

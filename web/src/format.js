@@ -12,6 +12,8 @@ export function fmt(v, significant = 7) {
 
 // A face figure to `significant` digits; a non-zero one below `least` (what no probe tells apart
 // from zero: 0.001 µm, 1e-6 µm² of sum of squares) as "below 0.001", never a solver's 2e-11.
+// The least face rms the page writes, µm: below it an rms reads "below 0.001".
+export const LEAST_RMS = 0.001;
 export function faceFigure(v, least, significant = 3) {
   if (typeof v === 'number' && v !== 0 && Math.abs(v) < least) return `below ${least}`;
   return fmt(v, significant);

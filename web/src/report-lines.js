@@ -4,14 +4,13 @@
 // labels and units of the inputs from the caller (the form's own, views/field-names.js), so that
 // nothing here types a unit or shows a case's field path.
 import { classLead } from './inspection-table.js';
-import { faceFigure, fmt } from './format.js';
+import { LEAST_RMS, faceFigure, fmt } from './format.js';
 import { inputRows } from './io/input-rows.js';
 
 const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
 // An rms to 3 significant digits; below a nanometre, what no measurement tells apart from zero, as
 // such ("below 0.001 µm"), not as a solver's 2e-11.
-const LEAST = 0.001;
-const figure = (v, unit) => faceFigure(v, LEAST) + (unit ? ` ${unit}` : '');
+const figure = (v, unit) => faceFigure(v, LEAST_RMS) + (unit ? ` ${unit}` : '');
 
 // The report's first line: the day, and what was measured (a grid, the machine's points, or nothing).
 export function reportDateLine(caseObject, date = new Date()) {
@@ -47,7 +46,7 @@ export function verdictLine(result, unitOf) {
     // it is what the pass leaves only if the identified error is all of the machine's.
     const high = num(c.predictedRmsHigh);
     if (high === null) return `${head}; ${measured}.`;
-    return `${head}; ${measured}, at most ${figure(Math.max(high, LEAST), unitOf('correction.predictedRmsHigh'))} rms after the correction.`;
+    return `${head}; ${measured}, at most ${figure(Math.max(high, LEAST_RMS), unitOf('correction.predictedRmsHigh'))} rms after the correction.`;
   }
   const simulated = num(result && result.topography && result.topography.rms);
   const face = simulated === null ? '' : `; face ${figure(simulated, unitOf('topography.rms'))} rms simulated for the axes run`;

@@ -3,12 +3,10 @@
 // conformity (views/inspection.js), the face's rms before and after, the axes to run with their
 // Copy and NC program buttons (views/machine-axes.js) and "Use as next run". This view writes the
 // line on what to do and the rms; the others write their own elements, which stand here.
-import { fixed } from '../format.js';
+import { LEAST_RMS, fixed } from '../format.js';
 import { fieldUnit } from '../result-fields.js';
 
 const $ = (selector) => document.querySelector(selector);
-// The least rms the line writes (3 decimals): a bound below it reads "at most 0.001", not 0.000.
-const LEAST_RMS = 0.001;
 
 // What to do next, by where the job is: no measured face yet, or a correction to run.
 export function firstStepText(result) {
@@ -38,6 +36,7 @@ export function rmsText(result, unitOf = fieldUnit) {
     // A proposal that is not to be run: nothing after it either.
     if (c.usable === false) return `${measured}.`;
     if (high && Number.isFinite(c.predictedRmsHigh))
+      // A bound below the least rms written reads "at most 0.001", not 0.000.
       return `${measured} → at most ${fixed(Math.max(c.predictedRmsHigh, LEAST_RMS), 3)} ${high} after the pass.`;
     return `${measured} → ${fixed(c.rmsAfter, 3)} ${after} after the pass if the identified error is all of the machine's.`;
   }
