@@ -44,12 +44,14 @@ export function caseWithMeasuredX3p(hobsharp, caseText, options) {
 }
 
 // Writes the result's topographies; returns the files written.
-export function writeResultX3p(result, caseText, options, date = new Date()) {
+// fields: the module's resultFields(), whose units the files' notes use.
+export function writeResultX3p(result, caseText, options, fields = [], date = new Date()) {
   if (!options.out) return [];
   const { r, x } = result.topography;
-  return x3pTopographies(result, JSON.parse(caseText)).map(({ kind, values }) => {
+  const unitOf = (path) => (fields.find((f) => f.path === path) || {}).unit || '';
+  return x3pTopographies(result, JSON.parse(caseText), unitOf).map(({ kind, values, note }) => {
     const file = `${options.out}-${kind}.x3p`;
-    writeFileSync(file, writeX3p({ r, x, values, kind, date }));
+    writeFileSync(file, writeX3p({ r, x, values, kind, date, note }));
     return file;
   });
 }

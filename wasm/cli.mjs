@@ -90,7 +90,7 @@ try {
     writeFileSync(`${pointsOut}-measured.csv`, pointsToCsv(c.pointMeasured));
     writeFileSync(`${pointsOut}-predicted.csv`, pointsToCsv(c.pointResidual));
   }
-  writeResultX3p(JSON.parse(json), caseText, x3p).forEach((f) => process.stderr.write(`wrote ${f}\n`));
+  writeResultX3p(JSON.parse(json), caseText, x3p, hobsharp.resultFields()).forEach((f) => process.stderr.write(`wrote ${f}\n`));
   if (nc) {
     // The program of the axes the page shows under "Axes to run" (wasm/lib/axes-to-run.js).
     const limits = hobsharp.limits();

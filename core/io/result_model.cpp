@@ -204,7 +204,7 @@ void visitPointCorrection(const Correction& c, ResultVisitor& v) {
     residual.row(k) << c.probes[k].r, c.probes[k].x, c.after.normal(k, 0);
   }
   matrix(v, {"correction.pointMeasured", "mm, mm, µm", "per measured point [r, x, deviation], in the case's order", kWithPoints}, measured);
-  matrix(v, {"correction.pointResidual", "mm, mm, µm", "per measured point [r, x, deviation predicted after the pass]: re-simulated at the point with correction.axes and the identified error, plus the part no axis makes", kWithPoints},
+  matrix(v, {"correction.pointResidual", "mm, mm, µm", "per measured point [r, x, deviation after the pass on the identified machine]: re-simulated at the point with correction.axes and the identified error, plus the part no axis makes (the pass can leave more, up to correction.predictedRmsHigh)", kWithPoints},
          residual);
   matrix(v, {"correction.measuredOnGrid", "µm", "on the grid: the face the identified error grinds with the axes run, re-simulated (the measurement as the axes explain it; what no axis makes is known only at the points)", kWithPoints},
          c.explainedOnGrid.normal);
@@ -323,12 +323,12 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
   if (!e.inspectionAfter && !every) return;
   static const Inspection kNoInspection;
   const Inspection& after = e.inspectionAfter ? *e.inspectionAfter : kNoInspection;
-  v.number({"inspection.after.cuttingFaceForm", "µm", "cutting-face form deviation predicted after the correction (of correction.residual, or the face as it is without a face correction)", kWithEitherCorrection},
+  v.number({"inspection.after.cuttingFaceForm", "µm", "cutting-face form deviation after the correction on the identified machine (of correction.residual, or the face as it is without a face correction)", kWithEitherCorrection},
            after.face.cuttingFaceForm);
-  v.number({"inspection.after.radialAlignment", "µm", "radial alignment deviation predicted after the correction", kWithEitherCorrection},
+  v.number({"inspection.after.radialAlignment", "µm", "radial alignment deviation after the correction on the identified machine", kWithEitherCorrection},
            after.face.radialAlignment);
   if (helical || every)
-    v.number({"inspection.after.gashLead", "µm per 100 mm", "gash lead deviation predicted after the correction (helical gash only)", kWithEitherCorrection},
+    v.number({"inspection.after.gashLead", "µm per 100 mm", "gash lead deviation after the correction on the identified machine (helical gash only)", kWithEitherCorrection},
              after.face.gashLead.value_or(0));
   if (gashes || every) {
     static const GashSpacing kNoSpacing;
@@ -342,7 +342,7 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
     const CheckResult* r = after.find(c);
     if (!r && !every) continue;
     const std::string grade = std::string("inspection.after.checks.") + checkName(c) + ".grade";
-    v.text({grade.c_str(), "", "the check's grade predicted after the correction", kWithEitherCorrection},
+    v.text({grade.c_str(), "", "the check's grade after the correction, of the face on the identified machine and the gashes after the index correction", kWithEitherCorrection},
            r ? gradeText(r->grade, r->loosest) : gradeName(Grade::NotGraded));
   }
 }
@@ -634,17 +634,17 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     // With measuredPoints off the grid the grid views are the re-simulated faces (docs/measured-points.md).
     const Topography& gridAfter = c.atProbes() ? c.afterOnGrid : c.after;
     const Topography& gridMeasured = c.atProbes() ? c.explainedOnGrid : c.before;
-    matrix(v, {"correction.residual", "µm", "the face predicted after the pass: re-simulated with correction.axes and the identified error, plus the part no axis makes", kWithMeasured}, gridAfter.normal);
+    matrix(v, {"correction.residual", "µm", "the face after the pass on the identified machine: re-simulated with correction.axes and the identified error, plus the part no axis makes (the pass can leave more, up to correction.predictedRmsHigh)", kWithMeasured}, gridAfter.normal);
     matrix(v, {"correction.residualCircular", "µm", "the same along the circle about the hob axis", kWithMeasured},
            gridAfter.circular);
     matrix(v, {"correction.measuredCircular", "µm", "the measured deviation along the circle about the hob axis",
                kWithMeasured}, gridMeasured.circular);
     v.number({"correction.sseBefore", "µm²", "sum of squares, measured", kWithMeasured, "sum of squares"}, c.before.sse);
-    v.number({"correction.sseAfter", "µm²", "sum of squares of the face predicted after the pass (re-simulated)", kWithMeasured, "sum of squares"}, c.after.sse);
+    v.number({"correction.sseAfter", "µm²", "sum of squares of the face after the pass on the identified machine (re-simulated)", kWithMeasured, "sum of squares"}, c.after.sse);
     v.number({"correction.maxBefore", "µm", "largest absolute deviation, measured", kWithMeasured, "largest |deviation|"}, c.before.max);
-    v.number({"correction.maxAfter", "µm", "largest absolute deviation predicted after the pass", kWithMeasured, "largest |deviation|"}, c.after.max);
+    v.number({"correction.maxAfter", "µm", "largest absolute deviation after the pass on the identified machine", kWithMeasured, "largest |deviation|"}, c.after.max);
     v.number({"correction.rmsBefore", "µm", "root mean square, measured", kWithMeasured, "rms"}, c.before.rms);
-    v.number({"correction.rmsAfter", "µm", "root mean square predicted after the pass", kWithMeasured, "rms"}, c.after.rms);
+    v.number({"correction.rmsAfter", "µm", "root mean square after the pass on the identified machine, probe noise and all (the pass can leave more, up to correction.predictedRmsHigh)", kWithMeasured, "rms"}, c.after.rms);
     v.number({"correction.predictedRms", "µm", "the face the exact axes leave on the probe grid if the identified error is all of the machine's, rms: the misfit left less its expected probe noise (the pass can leave more, up to the bound)", kWithMeasured},
              c.predictedRms);
     v.number({"correction.predictedRmsHigh", "µm", "at most this rms on the probe grid: the misfit, the probe noise through the identified directions and the error the face cannot show (assumed no larger than the one it shows)", kWithMeasured},
@@ -657,18 +657,18 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
             c.passesJoined);
     v.number({"correction.peakToValleyBefore", "µm", "largest minus smallest deviation, measured", kWithMeasured, "peak-to-valley"},
              c.before.peakToValley);
-    v.number({"correction.peakToValleyAfter", "µm", "largest minus smallest deviation predicted after the pass", kWithMeasured, "peak-to-valley"},
+    v.number({"correction.peakToValleyAfter", "µm", "largest minus smallest deviation after the pass on the identified machine", kWithMeasured, "peak-to-valley"},
              c.after.peakToValley);
     v.number({"correction.thicknessBefore", "µm", "thickness error at the mean point, measured", kWithMeasured, "thickness error"},
              c.before.thickness);
-    v.number({"correction.thicknessAfter", "µm", "thickness error predicted after the pass", kWithMeasured, "thickness error"}, c.after.thickness);
-    v.number({"correction.sseRounded", "µm²", "sum of squares predicted with correction.roundedAxes (re-simulated)", kWithMeasured, "sum of squares"},
+    v.number({"correction.thicknessAfter", "µm", "thickness error after the pass on the identified machine", kWithMeasured, "thickness error"}, c.after.thickness);
+    v.number({"correction.sseRounded", "µm²", "sum of squares with correction.roundedAxes on the identified machine (re-simulated)", kWithMeasured, "sum of squares"},
              c.afterRounded.sse);
-    v.number({"correction.maxRounded", "µm", "largest absolute deviation predicted with correction.roundedAxes", kWithMeasured, "largest |deviation|"},
+    v.number({"correction.maxRounded", "µm", "largest absolute deviation with correction.roundedAxes on the identified machine", kWithMeasured, "largest |deviation|"},
              c.afterRounded.max);
-    v.number({"correction.thicknessRounded", "µm", "thickness error predicted with correction.roundedAxes", kWithMeasured, "thickness error"},
+    v.number({"correction.thicknessRounded", "µm", "thickness error with correction.roundedAxes on the identified machine", kWithMeasured, "thickness error"},
              c.afterRounded.thickness);
-    v.number({"correction.rmsRounded", "µm", "root mean square predicted with correction.roundedAxes (re-simulated)", kWithMeasured, "rms"},
+    v.number({"correction.rmsRounded", "µm", "root mean square with correction.roundedAxes on the identified machine (re-simulated)", kWithMeasured, "rms"},
              c.afterRounded.rms);
     v.number({"correction.resolutionFloor", "µm", "the pass's floor, rms on the probe grid: the face rms that quantising each axis position to correction.resolution causes; each position's error uniform in +-step/2 (sd step/sqrt 12), independent between axes, through the face's sensitivity to a constant change of the axis", kWithMeasured},
              c.resolutionFloor);
@@ -689,7 +689,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     for (const UnobservableCombination& u : c.unobservable) unobservable.push_back(u.description);
     v.texts({"correction.unobservable", "", "sentences: coefficient combinations the grid cannot see to first order: left out of the error and the change, or, where the sentence says so, sought all the same", kWithMeasured},
             unobservable);
-    v.number({"correction.uncorrectableShare", "", "share of the measured sum of squares predicted to stay after the pass, 0..1",
+    v.number({"correction.uncorrectableShare", "", "share of the measured sum of squares that stays after the pass on the identified machine, 0..1",
               kWithMeasured}, c.uncorrectableShare);
     v.text({"correction.verdict", "", "one sentence for the engineer", kWithMeasured}, c.verdict);
     if (c.atProbes() || every) visitPointCorrection(c, v);

@@ -41,7 +41,7 @@ test('the class with its conformity and the proven class lead, above the maps; s
   const [a, b] = await page.$$eval('#inspection-lead .lead-box', (els) => els.map((e) => e.getBoundingClientRect().toJSON()));
   assert.ok(Math.abs(a.top - b.top) < 1 && b.left > a.right, 'side by side at 1366 px');
   const verdict = await page.textContent('#inspection-verdict');
-  assert.match(verdict, /^Rake face \(DIN 3968, module band over 6\.3 to 10 mm, measured face\): class A \(limited by the radial alignment\); predicted after the correction: class /);
+  assert.match(verdict, /^Rake face \(DIN 3968, module band over 6\.3 to 10 mm, measured face\): class A \(limited by the radial alignment\); after the correction, if the identified error is all of the machine's: class /);
   const [lead, v, maps] = await page.evaluate(() => ['#inspection-lead', '#inspection-verdict', '#plot-before-2d']
     .map((s) => document.querySelector(s).getBoundingClientRect().top + window.scrollY));
   assert.ok(lead < v && v < maps, 'the class leads, the verdict follows, the maps come after');

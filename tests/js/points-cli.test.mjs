@@ -94,7 +94,7 @@ test("the results CSV's point blocks read back as points CSVs, in either style",
       return lines.slice(start, lines.indexOf('', start)).join('\n');
     };
     assert.deepEqual(readPoints(block('measured points')).points, points, style);
-    assert.deepEqual(readPoints(block('predicted at the measured points after correction')).points, r.correction.pointResidual, style);
+    assert.deepEqual(readPoints(block('predicted at the measured points after correction, on the identified machine')).points, r.correction.pointResidual, style);
     assert.ok(!lines.some((l) => l.startsWith('measuredPoints')), 'the points are not an input row');
   }
 });

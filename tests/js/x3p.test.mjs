@@ -54,7 +54,7 @@ test('the container: main.xml, bindata/data.bin and md5checksum.hex as md5sum wr
   const xml = strFromU8(f[MAIN_FILE]);
   assert.match(xml, new RegExp(`^<\\?xml version="1.0" encoding="UTF-8"\\?>\\n<p:ISO5436_2 xmlns:p="${X3P_NAMESPACE}"`));
   assert.match(xml, /<Record1>\s*<Revision>ISO5436 - 2000<\/Revision>\s*<FeatureType>SUR<\/FeatureType>\s*<Axes>\s*<CX>\s*<AxisType>I<\/AxisType>\s*<DataType>D<\/DataType>\s*<Increment>0.0175<\/Increment>\s*<Offset>-0.07<\/Offset>\s*<\/CX>\s*<CY>\s*<AxisType>I<\/AxisType>\s*<DataType>D<\/DataType>\s*<Increment>0.00525<\/Increment>\s*<Offset>0.019<\/Offset>\s*<\/CY>\s*<CZ>\s*<AxisType>A<\/AxisType>\s*<DataType>D<\/DataType>/);
-  assert.match(xml, /<Record2>\s*<Date>2026-11-23T12:00:00.000Z<\/Date>\s*<Creator>HobSharp<\/Creator>\s*<Instrument>\s*<Manufacturer>[^<]+<\/Manufacturer>\s*<Model>[^<]+<\/Model>\s*<Serial>[^<]+<\/Serial>\s*<Version>[^<]+<\/Version>\s*<\/Instrument>\s*<ProbingSystem>\s*<Type>Software<\/Type>\s*<Identification>HobSharp predicted<\/Identification>\s*<\/ProbingSystem>\s*<Comment>normal deviation of the rake face predicted after the correction/);
+  assert.match(xml, /<Record2>\s*<Date>2026-11-23T12:00:00.000Z<\/Date>\s*<Creator>HobSharp<\/Creator>\s*<Instrument>\s*<Manufacturer>[^<]+<\/Manufacturer>\s*<Model>[^<]+<\/Model>\s*<Serial>[^<]+<\/Serial>\s*<Version>[^<]+<\/Version>\s*<\/Instrument>\s*<ProbingSystem>\s*<Type>Software<\/Type>\s*<Identification>HobSharp predicted<\/Identification>\s*<\/ProbingSystem>\s*<Comment>normal deviation of the rake face predicted after the correction on the identified machine/);
   assert.match(xml, new RegExp(`<Record3>\\s*<MatrixDimension>\\s*<SizeX>9</SizeX>\\s*<SizeY>5</SizeY>\\s*<SizeZ>1</SizeZ>\\s*</MatrixDimension>\\s*<DataLink>\\s*<PointDataLink>bindata/data.bin</PointDataLink>\\s*<MD5ChecksumPointData>${md5(f[DATA_FILE])}</MD5ChecksumPointData>\\s*</DataLink>\\s*</Record3>\\s*<Record4>\\s*<ChecksumFile>md5checksum.hex</ChecksumFile>\\s*</Record4>\\s*</p:ISO5436_2>\\n$`));
   // The points: float64 little-endian metres, x index fastest, rows root to tip.
   assert.equal(f[DATA_FILE].length, 45 * 8);
@@ -120,6 +120,15 @@ test('the topographies a result offers: measured and predicted with a measuremen
   const result = { topography: { normal: full }, correction: { residual: short } };
   assert.deepEqual(x3pTopographies(result, { measured: short }).map((t) => t.kind), ['measured', 'predicted']);
   assert.deepEqual(x3pTopographies({ topography: { normal: full } }, {}).map((t) => [t.kind, t.values]), [['simulated', full]]);
+  // The predicted grid is the identified machine's face; its note carries the bound on what the pass leaves.
+  const bounded = { topography: { normal: full }, correction: { residual: short, predictedRmsHigh: 0.44612 } };
+  const micrometres = (path) => (path === 'correction.predictedRmsHigh' ? 'µm' : '');
+  assert.equal(x3pTopographies(bounded, {}, micrometres)[0].note,
+    "The pass leaves at most 0.446 µm rms on the probe grid (the bound); this grid is what it leaves if the identified error is all of the machine's.");
+  assert.equal(x3pTopographies({ ...bounded, correction: { ...bounded.correction, stop: true } }, {}, micrometres)[0].note, '', 'no pass after a stop, no bound');
+  assert.equal(x3pTopographies(bounded, {})[0].note, '', 'no unit from the module, no figure');
+  const read = readX3p(writeX3p({ ...grid, values: short, kind: 'predicted', date, note: x3pTopographies(bounded, {}, micrometres)[0].note }));
+  assert.match(read.meta.comment, /Metres\. The pass leaves at most 0\.446 µm rms/);
 });
 
 test('metresToMicrons picks the shortest of the doubles that store as the same metres', () => {

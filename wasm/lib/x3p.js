@@ -101,7 +101,7 @@ function mainXml({ r, x, dataMd5, date, comment, kind }) {
 // The comment each kind of topography carries in Record2.
 export const X3P_KINDS = {
   measured: 'measured normal deviation of the rake face, as given to HobSharp',
-  predicted: 'normal deviation of the rake face predicted after the correction (re-simulated)',
+  predicted: 'normal deviation of the rake face predicted after the correction on the identified machine (re-simulated with the identified machine error)',
   simulated: 'normal deviation of the rake face simulated for the axes run',
 };
 
@@ -417,13 +417,18 @@ export function x3pGridCsv({ r, x, values }) {
 
 // The topographies a result can be written as: measured (the grid the case gave), predicted
 // after the correction (correction.residual), simulated for the axes run (when nothing was
-// measured). -> [{kind, label, values}]
-export function x3pTopographies(result, caseObject) {
+// measured). -> [{kind, label, values, note}]; the predicted one's note gives the bound on what the
+// pass leaves (correction.predictedRmsHigh) in the unit the module gives it (unitOf: a result path
+// to its unit): the grid is the identified machine's face.
+export function x3pTopographies(result, caseObject, unitOf = () => '') {
   const out = [];
   const measured = caseObject && Array.isArray(caseObject.measured) ? caseObject.measured : null;
   if (measured) out.push({ kind: 'measured', label: 'measured', values: measured });
   if (result && result.correction && Array.isArray(result.correction.residual)) {
-    out.push({ kind: 'predicted', label: 'predicted (corrected)', values: result.correction.residual });
+    const high = result.correction.predictedRmsHigh, unit = unitOf('correction.predictedRmsHigh');
+    const note = Number.isFinite(high) && unit && result.correction.stop !== true && result.correction.usable !== false
+      ? `The pass leaves at most ${Number(high.toPrecision(3))} ${unit} rms on the probe grid (the bound); this grid is what it leaves if the identified error is all of the machine's.` : '';
+    out.push({ kind: 'predicted', label: 'predicted (corrected, identified machine)', values: result.correction.residual, note });
   }
   if (!measured && result && result.topography) out.push({ kind: 'simulated', label: 'simulated', values: result.topography.normal });
   return out;

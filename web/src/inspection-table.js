@@ -49,7 +49,7 @@ export function classLead(inspection, unitOf = unitText) {
 }
 
 // "Rake face (DIN 3968, module band over 6.3 to 10 mm, measured face): class A (limited by the
-// pitch jump); predicted after the correction: class AA." A class that is not graded says why.
+// pitch jump); after the correction, if the identified error is all of the machine's: class AA." A class that is not graded says why.
 export function verdictSentence(inspection) {
   if (!inspection) return '';
   const klass = (c, limiting) => (c === 'not graded'
@@ -57,7 +57,7 @@ export function verdictSentence(inspection) {
     : `class ${c}${limiting ? ` (limited by the ${label(limiting)})` : ''}`);
   const source = { gashTopographies: 'the worst of the gash topographies', measuredPoints: 'measured points' }[inspection.source] || `${inspection.source} face`;
   let text = `Rake face (DIN 3968, module band ${inspection.moduleBand}, ${source}): ${klass(inspection.class, inspection.limitingCheck)}`;
-  if (inspection.after && inspection.after.class) text += `; predicted after the correction: ${klass(inspection.after.class, inspection.after.limitingCheck)}`;
+  if (inspection.after && inspection.after.class) text += `; after the correction, if the identified error is all of the machine's: ${klass(inspection.after.class, inspection.after.limitingCheck)}`;
   return `${text}.`;
 }
 

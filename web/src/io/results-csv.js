@@ -39,10 +39,15 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   const c = r.correction;
   if (c) {
     lines.push('', '# correction', row('verdict', c.verdict), row('method', c.method), row('status', c.status));
-    lines.push('', '# figures (normal deviation)', row('figure', 'unit', 'measured', 'predicted after correction'));
+    // After the pass: the identified machine's figures (the face re-simulated with the identified
+    // error); what the pass leaves is at most the bound, a row of its own (correction.predictedRmsHigh).
+    lines.push('', '# figures (normal deviation)', row('figure', 'unit', 'measured', 'after the pass on the identified machine'));
     for (const q of FACE_FIGURES) {
       const before = `correction.${q}Before`;
       lines.push(row(fieldLabel(before), fieldUnit(before), c[`${q}Before`], c[`${q}After`]));
+    }
+    if (Number.isFinite(c.predictedRmsHigh) && c.stop !== true && c.usable !== false) {
+      lines.push(row('rms the pass leaves at most (bound)', fieldUnit('correction.predictedRmsHigh'), '', c.predictedRmsHigh));
     }
   } else {
     const t = r.topography;
@@ -78,7 +83,7 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   if (caseObject && caseObject.measured) grid('measured normal deviation (µm)', caseObject.measured);
   grid(`simulated normal deviation (${unitText('topography.normal')}) for the axes run`, r.topography.normal);
   grid(`simulated circular deviation (${unitText('topography.circular')} at the mean radius)`, r.topography.circular);
-  if (c) grid(`predicted normal deviation after correction (${unitText('correction.residual')})`, c.residual);
+  if (c) grid(`predicted normal deviation after correction, on the identified machine (${unitText('correction.residual')})`, c.residual);
   // At the measuring machine's points (docs/measured-points.md): each block reads back as a
   // points CSV (wasm/lib/points-csv.js), its title line a comment; its header is that format's.
   const points = (title, list) => {
@@ -87,7 +92,7 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   };
   if (c && c.pointMeasured) {
     points('measured points', c.pointMeasured);
-    points('predicted at the measured points after correction', c.pointResidual);
+    points('predicted at the measured points after correction, on the identified machine', c.pointResidual);
   }
   lines.push('', row(`# ${fieldMeaning('topography.thickness')} (${unitText('topography.thickness')})`, r.topography.thickness));
   return BOM + lines.join('\n') + '\n';

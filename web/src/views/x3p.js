@@ -7,6 +7,7 @@
 import { MAX_X3P_BYTES, writeX3p, x3pFileName, x3pGridCsv, x3pTopographies } from '../../../wasm/lib/x3p.js';
 import { readX3pOffPage } from '../x3p-reader.js';
 import { download } from '../io/files.js';
+import { unitText } from '../result-fields.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -47,7 +48,7 @@ export function mountX3p(store, { take, refuse }) {
   });
 
   store.on('result', ({ result, caseObject }) => {
-    offered = x3pTopographies(result, caseObject);
+    offered = x3pTopographies(result, caseObject, unitText);
     const was = kind.value;
     kind.innerHTML = offered.map((o) => `<option value="${o.kind}">${o.label}</option>`).join('');
     if (offered.some((o) => o.kind === was)) kind.value = was;
@@ -58,6 +59,6 @@ export function mountX3p(store, { take, refuse }) {
     const chosen = offered.find((o) => o.kind === kind.value);
     if (!r || !chosen) return;
     const date = new Date();
-    download(x3pFileName(chosen.kind, date), writeX3p({ r: r.topography.r, x: r.topography.x, values: chosen.values, kind: chosen.kind, date }), 'application/octet-stream');
+    download(x3pFileName(chosen.kind, date), writeX3p({ r: r.topography.r, x: r.topography.x, values: chosen.values, kind: chosen.kind, date, note: chosen.note }), 'application/octet-stream');
   });
 }
