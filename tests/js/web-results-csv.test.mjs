@@ -48,8 +48,8 @@ test('a record of the job: its inputs, the measured grid, the verdict, the figur
   assert.ok(lines.includes(`verdict,"${r.correction.verdict.replace(/"/g, '""')}"`) || lines.includes(`verdict,${r.correction.verdict}`));
   assert.ok(lines.includes(`rms,µm,${r.correction.rmsBefore},${r.correction.rmsAfter}`));
   assert.ok(lines.includes(`sum of squares,µm²,${r.correction.sseBefore},${r.correction.sseAfter}`));
-  assert.ok(lines.includes('figure,unit,measured,after the pass on the identified machine'), 'the figures after are the identified machine\'s, said so');
-  assert.ok(lines.includes(`rms the pass leaves at most (bound),µm,,${r.correction.predictedRmsHigh}`), 'the bound is a row of its own');
+  assert.ok(lines.includes("figure,unit,measured,after the pass on the identified machine (the measurement's noise and all)"), 'the figures after are the identified machine\'s, said so');
+  assert.ok(lines.includes(`rms the pass leaves at most (the bound without the probe's noise),µm,,${r.correction.predictedRmsHigh}`), 'the bound is a row of its own');
   assert.ok(lines.includes(`Y a0,mm,${nominal.Y[0]},${axes.Y[0]},${r.correction.axes.Y[0]},${r.correction.axes.Y[0] - axes.Y[0]}`));
   const at = lines.findIndex((l) => l.startsWith('# measured normal deviation (µm)'));
   for (let i = 0; i < 5; i++) assert.deepEqual(numbers(lines[at + 2 + i]), measured[i]);

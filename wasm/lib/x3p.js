@@ -427,7 +427,7 @@ export function x3pTopographies(result, caseObject, unitOf = () => '') {
   if (result && result.correction && Array.isArray(result.correction.residual)) {
     const high = result.correction.predictedRmsHigh, unit = unitOf('correction.predictedRmsHigh');
     const note = Number.isFinite(high) && unit && result.correction.stop !== true && result.correction.usable !== false
-      ? `The pass leaves at most ${Number(high.toPrecision(3))} ${unit} rms on the probe grid (the bound); this grid is what it leaves if the identified error is all of the machine's.` : '';
+      ? `The pass leaves at most ${Number(high.toPrecision(3))} ${unit} rms on the probe grid (the bound, without the probe's noise); this grid is the face the identified error leaves, with the measurement's misfit (noise and all) kept.` : '';
     out.push({ kind: 'predicted', label: 'predicted (corrected, identified machine)', values: result.correction.residual, note });
   }
   if (!measured && result && result.topography) out.push({ kind: 'simulated', label: 'simulated', values: result.topography.normal });
