@@ -60,7 +60,7 @@ test('the verdict says what the left-out combinations are, not "left out as ampl
   assert.match(text, /The correction changes 10 independent combinations of the coefficients; 10 combinations are left unchanged, because they would need large axis moves for little gain\.$/);
   assert.match(verdictText({ ...c, rank: 1, amplifyingDropped: 1 }), /changes 1 independent combination of the coefficients; 1 combination is left unchanged, because it would need/);
   assert.match(verdictText({ ...c, amplifyingDropped: 0 }), /combinations of the coefficients\.$/);
-  assert.match(verdictText({ ...c, rmsBefore: 5.2376, rmsAfter: 0.01 }), /^Partly uncorrectable: .* If the identified error is all of the machine's: RMS 5\.238 → 0\.010 µm; sum of squares 1234\.5 → 456\.2 µm²; thickness/);
+  assert.match(verdictText({ ...c, rmsBefore: 5.2376, rmsAfter: 0.01 }), /^Partly uncorrectable: .* On the identified machine, with this measurement's misfit \(noise and all\) kept: RMS 5\.238 → 0\.010 µm; sum of squares 1234\.5 → 456\.2 µm²; thickness/);
 });
 
 test('a grid\'s figures: the sum of squares and the largest deviation, NaN (a dash) if any value is not', () => {

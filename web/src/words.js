@@ -41,12 +41,13 @@ export function verdictText(c, unitOf = unitText) {
       `${c.amplifyingDropped === 1 ? 'it' : 'they'} would need large axis moves for little gain`
     : '';
   // Led by the rms, which compares between grids; the paper's sum of squares after it. The figures
-  // after are the identified machine's (the face re-simulated with the identified error), said so:
-  // what the pass leaves is the bound the verdict quotes.
+  // after are the identified machine's (the face re-simulated with the identified error) with the
+  // measurement's misfit kept, noise and all, said so: what the pass leaves is the bound the verdict
+  // quotes, which leaves the probe's noise out and so can lie below them.
   const squares = `sum of squares ${fmt(c.sseBefore, 6)} → ${withUnit(fmt(c.sseAfter, 4), u('sse'))}`;
   const lead = Number.isFinite(c.rmsBefore) ? `RMS ${fixed(c.rmsBefore, 3)} → ${withUnit(fixed(c.rmsAfter, 3), u('rms'))}; ${squares}`
     : `S${squares.slice(1)}`;
-  return `${c.verdict} If the identified error is all of the machine's: ${lead}; ` +
+  return `${c.verdict} On the identified machine, with this measurement's misfit (noise and all) kept: ${lead}; ` +
     `thickness ${signed(c.thicknessBefore, 3)} → ${withUnit(signed(c.thicknessAfter, 3), u('thickness'))}. ` +
     `The correction changes ${plural(c.rank, 'independent combination', 'independent combinations')} of the coefficients${dropped}.`;
 }
