@@ -74,7 +74,7 @@ export function coefficientsText(m, helical, digits) {
 }
 
 // The face the rounded axes grind on the identified machine (re-simulated with the identified
-// error; what the pass leaves is the verdict's bound) and the pass's floor the position resolution sets, in
+// error, the measurement's misfit kept, noise and all; what the pass leaves is the verdict's bound) and the pass's floor the position resolution sets, in
 // words with the units `unitOf(path)` gives (the module's resultFields()); '' without them.
 export function roundedFiguresText(c, unitOf) {
   if (!c || !c.roundedAxes) return '';
@@ -82,7 +82,7 @@ export function roundedFiguresText(c, unitOf) {
     const x = c[path.slice('correction.'.length)];
     return `${fmt(x, 3)}${Number.isFinite(x) ? ` ${unitOf(path)}` : ''}`;
   };
-  return `With these axes the identified machine grinds ${v('correction.rmsRounded')} rms (re-simulated). ` +
+  return `With these axes the identified machine grinds ${v('correction.rmsRounded')} rms (re-simulated, this measurement's misfit kept; the pass leaves at most the verdict's bound). ` +
     `The floor the position resolution sets (each axis position quantised to its step): ${v('correction.resolutionFloor')} rms.`;
 }
 
