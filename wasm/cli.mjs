@@ -6,7 +6,8 @@
 //                        wasm/lib/points-csv.js): replaces the case's `measured` and
 //                        `measuredPoints`
 //   --points-out prefix  writes prefix-measured.csv and prefix-predicted.csv: the measured points
-//                        and the face predicted after the correction at them (needs --points or
+//                        and the face the identified machine leaves at them after the correction
+//                        (correction.pointResidual; needs --points or
 //                        the case's measuredPoints off the grid)
 //   --nc CONTROL         prints the NC program of the axes to run instead of the JSON (CONTROL:
 //                        sinumerik, sinumerik-cubic or heidenhain; docs/nc-programs.md), the

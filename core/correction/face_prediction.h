@@ -1,7 +1,8 @@
 // What a pass will leave on the probe grid, with a bound (docs/method.md, "Correction"; issue 20): the
 // face the proposed exact axes grind, µm rms, and an upper figure that folds in
-//   - the misfit the identified error leaves: its shape, at most what it holds beyond the noise's
-//     expectation plus three of the noise's standard deviations (all of it after a stop),
+//   - the misfit the identified error leaves, its shape: the misfit's sum of squares less the noise's
+//     expectation, plus three standard deviations of the noise's sum of squares (chi-square), and
+//     never more than the misfit itself (all of it after a stop),
 //   - the probe noise carried through the identified directions (k of them: sigma² (k + 3 sqrt(2k))),
 //   - what the face cannot show: the machine's error along directions that do not move the
 //     measured face to first order (the structural null space, numerically null directions) moves

@@ -204,7 +204,7 @@ void visitPointCorrection(const Correction& c, ResultVisitor& v) {
     residual.row(k) << c.probes[k].r, c.probes[k].x, c.after.normal(k, 0);
   }
   matrix(v, {"correction.pointMeasured", "mm, mm, µm", "per measured point [r, x, deviation], in the case's order", kWithPoints}, measured);
-  matrix(v, {"correction.pointResidual", "mm, mm, µm", "per measured point [r, x, deviation after the pass on the identified machine]: re-simulated at the point with correction.axes and the identified error, plus the part no axis makes (the pass can leave more, up to correction.predictedRmsHigh)", kWithPoints},
+  matrix(v, {"correction.pointResidual", "mm, mm, µm", "per measured point [r, x, deviation after the pass on the identified machine]: re-simulated at the point with correction.axes and the identified error, plus the part no axis makes, noise and all (what the pass leaves is bounded by correction.predictedRmsHigh)", kWithPoints},
          residual);
   matrix(v, {"correction.measuredOnGrid", "µm", "on the grid: the face the identified error grinds with the axes run, re-simulated (the measurement as the axes explain it; what no axis makes is known only at the points)", kWithPoints},
          c.explainedOnGrid.normal);
@@ -634,7 +634,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     // With measuredPoints off the grid the grid views are the re-simulated faces (docs/measured-points.md).
     const Topography& gridAfter = c.atProbes() ? c.afterOnGrid : c.after;
     const Topography& gridMeasured = c.atProbes() ? c.explainedOnGrid : c.before;
-    matrix(v, {"correction.residual", "µm", "the face after the pass on the identified machine: re-simulated with correction.axes and the identified error, plus the part no axis makes (the pass can leave more, up to correction.predictedRmsHigh)", kWithMeasured}, gridAfter.normal);
+    matrix(v, {"correction.residual", "µm", "the face after the pass on the identified machine: re-simulated with correction.axes and the identified error, plus the part no axis makes, noise and all; off the grid, on measured points, the re-simulated face alone (what the pass leaves is bounded by correction.predictedRmsHigh)", kWithMeasured}, gridAfter.normal);
     matrix(v, {"correction.residualCircular", "µm", "the same along the circle about the hob axis", kWithMeasured},
            gridAfter.circular);
     matrix(v, {"correction.measuredCircular", "µm", "the measured deviation along the circle about the hob axis",
@@ -644,7 +644,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     v.number({"correction.maxBefore", "µm", "largest absolute deviation, measured", kWithMeasured, "largest |deviation|"}, c.before.max);
     v.number({"correction.maxAfter", "µm", "largest absolute deviation after the pass on the identified machine", kWithMeasured, "largest |deviation|"}, c.after.max);
     v.number({"correction.rmsBefore", "µm", "root mean square, measured", kWithMeasured, "rms"}, c.before.rms);
-    v.number({"correction.rmsAfter", "µm", "root mean square after the pass on the identified machine, probe noise and all (the pass can leave more, up to correction.predictedRmsHigh)", kWithMeasured, "rms"}, c.after.rms);
+    v.number({"correction.rmsAfter", "µm", "root mean square after the pass on the identified machine, this measurement's misfit kept, noise and all (what the pass leaves is bounded by correction.predictedRmsHigh, which leaves that noise out and can be lower)", kWithMeasured, "rms"}, c.after.rms);
     v.number({"correction.predictedRms", "µm", "the face the exact axes leave on the probe grid if the identified error is all of the machine's, rms: the misfit left less its expected probe noise (the pass can leave more, up to the bound)", kWithMeasured},
              c.predictedRms);
     v.number({"correction.predictedRmsHigh", "µm", "at most this rms on the probe grid: the misfit, the probe noise through the identified directions and the error the face cannot show (assumed no larger than the one it shows)", kWithMeasured},

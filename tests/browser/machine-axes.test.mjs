@@ -27,7 +27,7 @@ test('the axes to run: degrees, the rounded proposal, copied and sampled', async
   const b0 = Number((await page.textContent('#machine-coefficients tr[data-axis="B"] td:nth-child(2)')).split(' ')[0]);
   assert.equal(b0, Number(b0.toPrecision(10)), `B a0 = ${b0} deg has at most 10 significant digits`);
   const figures = await page.textContent('#machine-axes-figures');
-  assert.match(figures, /^With these axes the identified machine grinds [\d.e-]+ µm rms \(re-simulated, this measurement's misfit kept; the pass leaves at most the verdict's bound\)\. The floor the position resolution sets \(each axis position quantised to its step\): 0\.0\d+ µm rms\.$/);
+  assert.match(figures, /^With these axes the identified machine grinds [\d.e-]+ µm rms \(re-simulated, this measurement's misfit kept; the exact axes leave at most the verdict's bound\)\. The floor the position resolution sets \(each axis position quantised to its step\): 0\.0\d+ µm rms\.$/);
   await page.click('#copy-axes');
   const copied = await page.evaluate(() => navigator.clipboard.readText());
   assert.match(copied, /^X \(mm\) = /);

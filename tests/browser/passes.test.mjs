@@ -68,7 +68,7 @@ async function identification(page) {
   assert.match(demand[1].join(' | '), /^X \| [\d.e+-]+ µm per µm \| [\d.e+-]+ µm per µm$/);
   assert.match(demand[5].join(' | '), /^B \| [\d.e+-]+ µm per µrad \| [\d.e+-]+ µrad per µm$/);
   assert.equal(await page.locator('[data-rounded-axis]').count(), 5);
-  assert.match(await page.textContent('#rounded-sse'), /^On the identified machine, re-simulated, the rounded axes leave sum of squares [\d.e+-]+ µm², largest \|deviation\| [\d.]+ µm, thickness error [+−-]?[\d.]+ µm; the exact proposal sum of squares [\d.e+-]+ µm².*What the pass leaves is at most the verdict's bound\.$/);
+  assert.match(await page.textContent('#rounded-sse'), /^On the identified machine, re-simulated, the rounded axes leave sum of squares [\d.e+-]+ µm², largest \|deviation\| [\d.]+ µm, thickness error [+−-]?[\d.]+ µm; the exact proposal sum of squares [\d.e+-]+ µm².*The exact axes leave at most the verdict's bound\.$/);
   assert.doesNotMatch(await page.textContent('#identification'), /NaN|undefined|Infinity|—/);
   await page.locator('#measured-section').screenshot({ path: path.join(shots, 'passes-identification.png') });
 }

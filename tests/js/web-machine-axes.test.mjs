@@ -49,7 +49,7 @@ test('the rounded axes: the program\'s digits, the predicted face and the floor 
   assert.ok(numbers.every((s) => s.replace(/^-/, '').replace(/e.*$/, '').replace('.', '').replace(/^0+/, '').length <= digits), copied);
   const units = Object.fromEntries(hobsharp.resultFields().map((f) => [f.path, f.unit]));
   const text = roundedFiguresText(c, (path) => units[path]);
-  assert.match(text, /^With these axes the identified machine grinds [\d.e-]+ µm rms \(re-simulated, this measurement's misfit kept; the pass leaves at most the verdict's bound\)\. /);
+  assert.match(text, /^With these axes the identified machine grinds [\d.e-]+ µm rms \(re-simulated, this measurement's misfit kept; the exact axes leave at most the verdict's bound\)\. /);
   assert.ok(text.includes(`${Number(c.resolutionFloor.toPrecision(3))} µm rms.`), text);
   assert.equal(roundedFiguresText({ sseAfter: 1 }, () => 'µm'), '');
   assert.equal(roundedFiguresText(undefined, () => 'µm'), '');

@@ -49,7 +49,12 @@ test('a record of the job: its inputs, the measured grid, the verdict, the figur
   assert.ok(lines.includes(`rms,µm,${r.correction.rmsBefore},${r.correction.rmsAfter}`));
   assert.ok(lines.includes(`sum of squares,µm²,${r.correction.sseBefore},${r.correction.sseAfter}`));
   assert.ok(lines.includes("figure,unit,measured,after the pass on the identified machine (the measurement's noise and all)"), 'the figures after are the identified machine\'s, said so');
-  assert.ok(lines.includes(`rms the pass leaves at most (the bound without the probe's noise),µm,,${r.correction.predictedRmsHigh}`), 'the bound is a row of its own');
+  assert.ok(lines.includes(`rms the pass leaves at most (the bound without this measurement's noise),µm,,${r.correction.predictedRmsHigh}`), 'the bound is a row of its own');
+  // No pass, no bound: a stop, a run kept, a proposal not to be used.
+  for (const none of [{ stop: true }, { runKept: true }, { usable: false }]) {
+    const text = resultsCsv({ ...r, correction: { ...r.correction, ...none } }, { caseObject });
+    assert.ok(!text.includes('rms the pass leaves at most'), JSON.stringify(none));
+  }
   assert.ok(lines.includes(`Y a0,mm,${nominal.Y[0]},${axes.Y[0]},${r.correction.axes.Y[0]},${r.correction.axes.Y[0] - axes.Y[0]}`));
   const at = lines.findIndex((l) => l.startsWith('# measured normal deviation (µm)'));
   for (let i = 0; i < 5; i++) assert.deepEqual(numbers(lines[at + 2 + i]), measured[i]);

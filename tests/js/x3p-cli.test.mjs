@@ -41,7 +41,7 @@ test('--x3p-out writes the measured and predicted topographies, and the printed 
   const predicted = readX3p(readFileSync(`${prefix}-predicted.x3p`));
   within1ulp(predicted.values, result.correction.residual);
   // The file says whose face it is and carries the bound on what the pass leaves, in the module's unit.
-  assert.ok(predicted.meta.comment.includes(`The pass leaves at most ${Number(result.correction.predictedRmsHigh.toPrecision(3))} µm rms on the probe grid (the bound, without the probe's noise)`), predicted.meta.comment);
+  assert.ok(predicted.meta.comment.includes(`The pass leaves at most ${Number(result.correction.predictedRmsHigh.toPrecision(3))} µm rms on the probe grid (the bound)`), predicted.meta.comment);
   assert.equal(existsSync(`${prefix}-simulated.x3p`), false);
   // Without a measurement, the simulated face.
   const sim = run(paperFile, '--x3p-out', path.join(dir, 'paper'));

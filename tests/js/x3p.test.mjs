@@ -124,9 +124,12 @@ test('the topographies a result offers: measured and predicted with a measuremen
   const bounded = { topography: { normal: full }, correction: { residual: short, predictedRmsHigh: 0.44612 } };
   const micrometres = (path) => (path === 'correction.predictedRmsHigh' ? 'µm' : '');
   assert.equal(x3pTopographies(bounded, {}, micrometres)[0].note,
-    "The pass leaves at most 0.446 µm rms on the probe grid (the bound, without the probe's noise); this grid is the face the identified error leaves, with the measurement's misfit (noise and all) kept.");
+    "The pass leaves at most 0.446 µm rms on the probe grid (the bound); this grid is the face on the identified machine, re-simulated.");
   assert.equal(x3pTopographies({ ...bounded, correction: { ...bounded.correction, stop: true } }, {}, micrometres)[0].note, '', 'no pass after a stop, no bound');
   assert.equal(x3pTopographies(bounded, {})[0].note, '', 'no unit from the module, no figure');
+  for (const none of [{ runKept: true }, { usable: false }]) {
+    assert.equal(x3pTopographies({ ...bounded, correction: { ...bounded.correction, ...none } }, {}, micrometres)[0].note, '', JSON.stringify(none));
+  }
   const read = readX3p(writeX3p({ ...grid, values: short, kind: 'predicted', date, note: x3pTopographies(bounded, {}, micrometres)[0].note }));
   assert.match(read.meta.comment, /Metres\. The pass leaves at most 0\.446 µm rms/);
 });

@@ -426,8 +426,8 @@ export function x3pTopographies(result, caseObject, unitOf = () => '') {
   if (measured) out.push({ kind: 'measured', label: 'measured', values: measured });
   if (result && result.correction && Array.isArray(result.correction.residual)) {
     const high = result.correction.predictedRmsHigh, unit = unitOf('correction.predictedRmsHigh');
-    const note = Number.isFinite(high) && unit && result.correction.stop !== true && result.correction.usable !== false
-      ? `The pass leaves at most ${Number(high.toPrecision(3))} ${unit} rms on the probe grid (the bound, without the probe's noise); this grid is the face the identified error leaves, with the measurement's misfit (noise and all) kept.` : '';
+    const note = Number.isFinite(high) && unit && result.correction.stop !== true && result.correction.runKept !== true && result.correction.usable !== false
+      ? `The pass leaves at most ${Number(high.toPrecision(3))} ${unit} rms on the probe grid (the bound); this grid is the face on the identified machine, re-simulated.` : '';
     out.push({ kind: 'predicted', label: 'predicted (corrected, identified machine)', values: result.correction.residual, note });
   }
   if (!measured && result && result.topography) out.push({ kind: 'simulated', label: 'simulated', values: result.topography.normal });

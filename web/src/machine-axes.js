@@ -82,7 +82,7 @@ export function roundedFiguresText(c, unitOf) {
     const x = c[path.slice('correction.'.length)];
     return `${fmt(x, 3)}${Number.isFinite(x) ? ` ${unitOf(path)}` : ''}`;
   };
-  return `With these axes the identified machine grinds ${v('correction.rmsRounded')} rms (re-simulated, this measurement's misfit kept; the pass leaves at most the verdict's bound). ` +
+  return `With these axes the identified machine grinds ${v('correction.rmsRounded')} rms (re-simulated, this measurement's misfit kept; the exact axes leave at most the verdict's bound). ` +
     `The floor the position resolution sets (each axis position quantised to its step): ${v('correction.resolutionFloor')} rms.`;
 }
 

@@ -43,7 +43,7 @@ export function verdictText(c, unitOf = unitText) {
   // Led by the rms, which compares between grids; the paper's sum of squares after it. The figures
   // after are the identified machine's (the face re-simulated with the identified error) with the
   // measurement's misfit kept, noise and all, said so: what the pass leaves is the bound the verdict
-  // quotes, which leaves the probe's noise out and so can lie below them.
+  // quotes, which leaves this measurement's noise out and so can lie below them.
   const squares = `sum of squares ${fmt(c.sseBefore, 6)} → ${withUnit(fmt(c.sseAfter, 4), u('sse'))}`;
   const lead = Number.isFinite(c.rmsBefore) ? `RMS ${fixed(c.rmsBefore, 3)} → ${withUnit(fixed(c.rmsAfter, 3), u('rms'))}; ${squares}`
     : `S${squares.slice(1)}`;

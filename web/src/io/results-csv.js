@@ -41,15 +41,16 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
     lines.push('', '# correction', row('verdict', c.verdict), row('method', c.method), row('status', c.status));
     // After the pass: the identified machine's figures (the face re-simulated with the identified
     // error, plus the measurement's residual, noise and all); what the pass leaves is at most the
-    // bound, a row of its own (correction.predictedRmsHigh, without the probe's noise, so it can be
-    // below the rms after).
+    // bound, a row of its own (correction.predictedRmsHigh, without this measurement's noise, so it
+    // can be below the rms after). No bound where there is no pass: a stop, a run kept, a proposal
+    // not to be used.
     lines.push('', '# figures (normal deviation)', row('figure', 'unit', 'measured', 'after the pass on the identified machine (the measurement\'s noise and all)'));
     for (const q of FACE_FIGURES) {
       const before = `correction.${q}Before`;
       lines.push(row(fieldLabel(before), fieldUnit(before), c[`${q}Before`], c[`${q}After`]));
     }
-    if (Number.isFinite(c.predictedRmsHigh) && c.stop !== true && c.usable !== false) {
-      lines.push(row('rms the pass leaves at most (the bound without the probe\'s noise)', fieldUnit('correction.predictedRmsHigh'), '', c.predictedRmsHigh));
+    if (Number.isFinite(c.predictedRmsHigh) && c.stop !== true && c.runKept !== true && c.usable !== false) {
+      lines.push(row('rms the pass leaves at most (the bound without this measurement\'s noise)', fieldUnit('correction.predictedRmsHigh'), '', c.predictedRmsHigh));
     }
   } else {
     const t = r.topography;

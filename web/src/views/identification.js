@@ -50,7 +50,7 @@ function renderRounded(c, r) {
   const f = roundedFigures(c);
   const digits = { sse: (v) => fmt(v, 4), max: (v) => fixed(v, 3), thickness: (v) => signed(v, 3) };
   const text = (x) => figureTexts(['sse', 'max', 'thickness'], (q) => `correction.${q}Rounded`, (q) => digits[q](x[q])).join(', ');
-  $('#rounded-sse').textContent = `On the identified machine, re-simulated, the rounded axes leave ${text(f.rounded)}; the exact proposal ${text(f.exact)}. What the pass leaves is at most the verdict's bound.`;
+  $('#rounded-sse').textContent = `On the identified machine, re-simulated, the rounded axes leave ${text(f.rounded)}; the exact proposal ${text(f.exact)}. The exact axes leave at most the verdict's bound.`;
 }
 
 export function mountIdentification(store) {

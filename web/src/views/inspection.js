@@ -70,7 +70,7 @@ function show(result, state) {
   const after = rows.some((r) => r.after);
   $('#inspection-table thead').innerHTML = `<tr><th>check</th><th>value</th><th>grade</th><th title="ISO 14253-1, with the measurement's uncertainty U95">conformity</th>
     <th title="the tightest class whose tolerance less U95 holds the value">proven</th><th title="where the tolerance the grade rests on comes from">tolerance from</th><th>class tolerances</th>${
-    after ? '<th title="the face on the identified machine: the pass can leave more, up to the verdict\'s bound">after correction</th><th>grade after</th>' : ''}</tr>`;
+    after ? '<th title="the face on the identified machine (re-simulated with the identified error), not what the pass is bound to leave">after correction</th><th>grade after</th>' : ''}</tr>`;
   $('#inspection-table tbody').innerHTML = rows.map((r) => rowHtml(r, after, i.notGraded)).join('');
 
   const starred = rows.filter((r) => r.series);

@@ -22,8 +22,8 @@ export function firstStepText(result) {
 // The face's rms before (measured, or simulated for the axes run) and after the pass, with the
 // module's units: "Face rms: 3.214 µm measured → at most 0.052 µm after the pass." After the pass
 // is the prediction's bound (correction.predictedRmsHigh), what the pass leaves; the identified
-// machine's figure below it (correction.rmsAfter) only with that condition, where there is no bound;
-// after a stop, nothing.
+// machine's figure (correction.rmsAfter) only with that condition, where there is no bound; after a
+// stop, nothing.
 export function rmsText(result, unitOf = fieldUnit) {
   if (!result) return '';
   const c = result.correction;

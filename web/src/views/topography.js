@@ -44,7 +44,7 @@ function topographyViews(r, caseObject, view) {
       afterNumbers, afterFigures: figuresText(afterNumbers),
       // Where the probe touched, marked on both maps, with the point's own figure.
       beforePoints: c.pointMeasured ? { list: c.pointMeasured, what: 'measured normal deviation' } : null,
-      afterPoints: c.pointResidual ? { list: c.pointResidual, what: 'predicted normal deviation' } : null,
+      afterPoints: c.pointResidual ? { list: c.pointResidual, what: 'normal deviation on the identified machine' } : null,
     };
   }
   const t = r.topography;
