@@ -85,6 +85,7 @@ test("the report's verdict line: the class with its conformity, the face's rms b
   const f = (v) => fmt(v, 3);
   // What the pass leaves by its bound alone, not the model's figure below it.
   assert.equal(verdictLine(r, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured, at most ${f(c.predictedRmsHigh)} µm rms after the correction.`);
+  assert.equal(verdictLine({ ...r, correction: { ...c, runKept: true } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured: no change proposed, keep the axes run.`);
   assert.equal(verdictLine({ ...r, correction: { ...c, predictedRmsHigh: NaN } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured.`);
   // Within the probe noise: stop, the axes run stay.
   const quiet = hobsharp.evaluate({ ...paper, measured: measured.map((row) => row.map(() => 0.01)), correction: { probeNoise: 0.5 } });
@@ -110,6 +111,7 @@ test("the answer's rms line: after the pass the prediction's bound, never the id
   assert.equal(rmsText(quiet, fieldUnit), 'Face rms: 0.010 µm measured: within the probe noise, the axes run stay.');
   // A proposal not to be run: nothing after it; a bound below a nanometre reads as 0.001, not 0.000.
   assert.equal(rmsText({ ...r, correction: { ...c, usable: false } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured.`);
+  assert.equal(rmsText({ ...r, correction: { ...c, runKept: true } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured: no change proposed, the axes run stay.`);
   assert.match(rmsText({ ...r, correction: { ...c, predictedRmsHigh: 2e-4 } }, fieldUnit), /→ at most 0\.001 µm after the pass\.$/);
 });
 

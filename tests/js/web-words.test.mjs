@@ -104,6 +104,7 @@ test('the prediction: what the pass will leave and its bound, µm rms at the pro
   assert.equal(predictionText({ ...c, predictedRms: undefined }, fieldUnit), null);
   assert.equal(predictionText({ ...c, usable: false }, fieldUnit), null);
   assert.equal(predictionText({ ...c, stop: true }, fieldUnit), null);
+  assert.equal(predictionText({ ...c, runKept: true }, fieldUnit), null, 'no change proposed, no pass to predict');
   assert.throws(() => setResultFields({}), /no description of its results/);
 });
 

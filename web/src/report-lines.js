@@ -32,7 +32,8 @@ export function reportInspectionLine(inspection) {
 // "Class A — conforms; face 12.3 µm rms measured, at most 0.11 µm rms after the correction": the
 // rake face's class with its conformity (ISO 14253-1), then the face's rms
 // before and after. Without a measurement the face is the one simulated for the axes run; when
-// the correction says stop, the face is within the probe noise and the axes stay.
+// the correction says stop, the face is within the probe noise and the axes stay; with no change
+// proposed (a run kept), the axes stay too.
 export function verdictLine(result, unitOf) {
   const lead = classLead(result && result.inspection, unitOf);
   const head = !lead ? 'Rake face not inspected' : lead.graded ? `Class ${lead.klass} — ${lead.conformity}` : 'Rake face not graded';
@@ -42,6 +43,7 @@ export function verdictLine(result, unitOf) {
     const unit = unitOf('correction.rmsBefore');
     const measured = `face ${figure(before, unit)} rms measured`;
     if (c.stop === true) return `${head}; ${measured}: within the probe noise, keep the axes run.`;
+    if (c.runKept === true) return `${head}; ${measured}: no change proposed, keep the axes run.`;
     // What the pass leaves by its bound alone (words.js, predictionText): the model's figure below
     // it is what the pass leaves only if the identified error is all of the machine's.
     const high = num(c.predictedRmsHigh);

@@ -61,10 +61,10 @@ const rmsFigure = (v) => fmt(v, 3);
 // bound); with the units the module gives its fields (unitOf: a path to its unit, null for a field
 // it does not describe): "Predicted after the pass: at most 0.446 µm rms at the probe points (0.012
 // µm rms if the identified error is all of the machine's)." Null when there is nothing to run
-// (correction.stop, or a proposal that is not usable), when a figure is not a finite number, or
+// (correction.stop, a run kept, or a proposal that is not usable), when a figure is not a finite number, or
 // when the module gives no unit.
 export function predictionText(c, unitOf) {
-  if (!c || c.stop === true || c.usable === false) return null;
+  if (!c || c.stop === true || c.runKept === true || c.usable === false) return null;
   const rms = c.predictedRms, high = c.predictedRmsHigh;
   if (!Number.isFinite(rms) || !Number.isFinite(high)) return null;
   const unit = unitOf('correction.predictedRms'), highUnit = unitOf('correction.predictedRmsHigh');

@@ -35,6 +35,8 @@ export function rmsText(result, unitOf = fieldUnit) {
     if (c.stop === true) return `${measured}: within the probe noise, the axes run stay.`;
     // A proposal that is not to be run: nothing after it either.
     if (c.usable === false) return `${measured}.`;
+    // No change proposed (the correction found would leave more): the axes run stay.
+    if (c.runKept === true) return `${measured}: no change proposed, the axes run stay.`;
     if (high && Number.isFinite(c.predictedRmsHigh))
       // A bound below the least rms written reads "at most 0.001", not 0.000.
       return `${measured} → at most ${fixed(Math.max(c.predictedRmsHigh, LEAST_RMS), 3)} ${high} after the pass.`;
