@@ -13,6 +13,7 @@
 import { Unzip, UnzipInflate, unzipSync, zipSync } from 'fflate';
 import { XMLParser, XMLValidator } from 'fast-xml-parser';
 import { md5 } from '@noble/hashes/legacy.js';
+import { passBound } from './pass-bound.js';
 
 export const X3P_NAMESPACE = 'http://www.opengps.eu/2008/ISO5436_2';
 export const MAIN_FILE = 'main.xml';
@@ -425,8 +426,8 @@ export function x3pTopographies(result, caseObject, unitOf = () => '') {
   const measured = caseObject && Array.isArray(caseObject.measured) ? caseObject.measured : null;
   if (measured) out.push({ kind: 'measured', label: 'measured', values: measured });
   if (result && result.correction && Array.isArray(result.correction.residual)) {
-    const high = result.correction.predictedRmsHigh, unit = unitOf('correction.predictedRmsHigh');
-    const note = Number.isFinite(high) && unit && result.correction.stop !== true && result.correction.runKept !== true && result.correction.usable !== false
+    const high = passBound(result.correction), unit = unitOf('correction.predictedRmsHigh');
+    const note = high !== null && unit
       ? `The pass leaves at most ${Number(high.toPrecision(3))} ${unit} rms on the probe grid (the bound); this grid is the face on the identified machine, re-simulated.` : '';
     out.push({ kind: 'predicted', label: 'predicted (corrected, identified machine)', values: result.correction.residual, note });
   }

@@ -3,6 +3,7 @@
 // correction's verdict.
 import { fixed, fmt, signed, withUnit } from './format.js';
 import { fieldUnit, unitText } from './result-fields.js';
+import { passBound } from '../../wasm/lib/pass-bound.js';
 
 
 // The status line once the newest inputs are computed.
@@ -64,9 +65,9 @@ const rmsFigure = (v) => fmt(v, 3);
 // (correction.stop, a run kept, or a proposal that is not usable), when a figure is not a finite number, or
 // when the module gives no unit.
 export function predictionText(c, unitOf) {
-  if (!c || c.stop === true || c.runKept === true || c.usable === false) return null;
-  const rms = c.predictedRms, high = c.predictedRmsHigh;
-  if (!Number.isFinite(rms) || !Number.isFinite(high)) return null;
+  const high = passBound(c);
+  if (high === null || !Number.isFinite(c.predictedRms)) return null;
+  const rms = c.predictedRms;
   const unit = unitOf('correction.predictedRms'), highUnit = unitOf('correction.predictedRmsHigh');
   if (!unit || !highUnit) return null;
   // No shape left beyond the probe's noise: say so rather than print a certain-looking 0.

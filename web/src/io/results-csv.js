@@ -10,6 +10,7 @@ import { FACE_FIGURES } from '../figures.js';
 import { FLANKS, gearEffectRows, hasGearEffect } from '../gear-effect-figures.js';
 import { fieldLabel, fieldMeaning, fieldUnit, unitText } from '../result-fields.js';
 import { POINTS_HEADER } from '../../../wasm/lib/points-csv.js';
+import { passBound } from '../../../wasm/lib/pass-bound.js';
 import { inputRows } from './input-rows.js';
 
 const BOM = '\uFEFF';
@@ -49,9 +50,8 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
       const before = `correction.${q}Before`;
       lines.push(row(fieldLabel(before), fieldUnit(before), c[`${q}Before`], c[`${q}After`]));
     }
-    if (Number.isFinite(c.predictedRmsHigh) && c.stop !== true && c.runKept !== true && c.usable !== false) {
-      lines.push(row('rms the pass leaves at most (the bound without this measurement\'s noise)', fieldUnit('correction.predictedRmsHigh'), '', c.predictedRmsHigh));
-    }
+    const bound = passBound(c);
+    if (bound !== null) lines.push(row('rms the pass leaves at most (the bound without this measurement\'s noise)', fieldUnit('correction.predictedRmsHigh'), '', bound));
   } else {
     const t = r.topography;
     lines.push('', '# figures (normal deviation, simulated for the axes run)', row('figure', 'unit', 'value'));

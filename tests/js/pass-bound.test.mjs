@@ -1,0 +1,16 @@
+// The bound of the pass proposed (wasm/lib/pass-bound.js): the bound where a pass is proposed,
+// null where none is (a stop, a run kept, a proposal not to be used) or the bound is not a number.
+import test from 'node:test';
+import assert from 'node:assert/strict';
+import { passBound } from '../../wasm/lib/pass-bound.js';
+
+test('the bound of the pass proposed, and none where no pass is proposed', () => {
+  const c = { predictedRmsHigh: 0.446, predictedRms: 0.012 };
+  assert.equal(passBound(c), 0.446);
+  assert.equal(passBound({ ...c, usable: true, stop: false, runKept: false }), 0.446);
+  for (const none of [{ stop: true }, { runKept: true }, { usable: false }, { predictedRmsHigh: NaN }, { predictedRmsHigh: undefined }]) {
+    assert.equal(passBound({ ...c, ...none }), null, JSON.stringify(none));
+  }
+  assert.equal(passBound(null), null);
+  assert.equal(passBound(undefined), null);
+});
