@@ -15,6 +15,7 @@
 #include "result_model.h"
 #include "wheel_correction.h"
 #include "wheel_input.h"
+#include "wheel_offset_sensitivity.h"
 
 namespace hobsharp::test {
 namespace {
@@ -219,6 +220,53 @@ TEST(WheelCorrection, TheProbeGridReadsTheOffsetAtItsKnots) {
     EXPECT_LT(left, 1e-3);
     std::printf("[ figures  ] Tab. 1         degree %d: the true offset's values dressed, true axes: %.2e µm²\n", degree, left);
   }
+}
+
+// The identification's Jacobian in W is the model's: the columns from wheelDeviationSpline's basis
+// are the central differences of the face re-simulated with withWheelDeviation. Off the nominal
+// axes (an axis error) and with 15 rows for 12 points, the wheel grinds between the points, where
+// a natural spline's basis (which the identification took before) differs from the not-a-knot
+// spline the wheel adds.
+TEST(WheelCorrection, TheJacobianInTheWheelIsTheModels) {
+  CaseInput c = paperCase();
+  c.grid.radial = 15;
+  const Scene s = sceneOf(c, faceShape(0), 1e3);
+  const SharpeningJob& job = s.job;
+  const WheelKnots knots = wheelKnots(job.setup, job.grid, std::max(job.grid.r.front(), job.rootRadius),
+                                      std::min(job.grid.r.back(), job.outerRadius)).value();
+  const int K = static_cast<int>(knots.R.size());
+  ASSERT_EQ(K, kMostWheelKnots);
+  Eigen::VectorXd W(K);
+  for (int k = 0; k < K; ++k) W(k) = 3 * std::sin(1.3 * k);  // µm
+  const AxisPolynomials axes = withMachineError(job.nominalAxes, s.error);
+  const GroundFace at = simulateGroundFace(withWheelDeviation(job.setup, knots, W), axes, job.grid).value();
+  const Eigen::MatrixXd model = wheelOffsetSensitivity(at, wheelDeviationSpline(knots, Eigen::VectorXd::Zero(K))).normal;
+  const Eigen::MatrixXd natural = wheelOffsetSensitivity(at, CubicSpline(knots.R, std::vector<double>(K, 0.0))).normal;
+  constexpr double h = 0.01;  // µm
+  double worst = 0, worstNatural = 0;
+  for (int k = 0; k < K; ++k) {
+    const auto faceAt = [&](double d) {
+      Eigen::VectorXd Wd = W;
+      Wd(k) += d;
+      const Eigen::MatrixXd f = faceOn(withWheelDeviation(job.setup, knots, Wd), axes, job.grid);
+      return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(f.data(), f.size()));
+    };
+    // faceOn's matrix is column-major, the sensitivities' rows row-major: compare as matrices.
+    const Eigen::VectorXd d = (faceAt(h) - faceAt(-h)) / (2 * h);
+    const Eigen::MatrixXd byDiff = Eigen::Map<const Eigen::MatrixXd>(d.data(), job.grid.rows(), job.grid.cols());
+    Eigen::MatrixXd byModel(job.grid.rows(), job.grid.cols()), byNatural(job.grid.rows(), job.grid.cols());
+    for (int i = 0; i < job.grid.rows(); ++i)
+      for (int j = 0; j < job.grid.cols(); ++j) {
+        byModel(i, j) = model(i * job.grid.cols() + j, k);
+        byNatural(i, j) = natural(i * job.grid.cols() + j, k);
+      }
+    worst = std::max(worst, (byModel - byDiff).cwiseAbs().maxCoeff());
+    worstNatural = std::max(worstNatural, (byNatural - byDiff).cwiseAbs().maxCoeff());
+  }
+  std::printf("[ figures  ] Tab. 1, 15 rows, 12 points: the wheel's Jacobian against differences %.1e µm/µm (natural basis %.1e)\n",
+              worst, worstNatural);
+  EXPECT_LT(worst, 1e-6);         // µm of face per µm of W
+  EXPECT_GT(worstNatural, 1e-3);  // the test tells the two apart
 }
 
 // With 1 µm of probe noise the face after the pass stays within the noise level between the

@@ -78,11 +78,15 @@ Outcome<WheelKnots> wheelKnots(const SharpeningSetup& setup, const FaceGrid& gri
   return knots;
 }
 
-SharpeningSetup withWheelDeviation(const SharpeningSetup& setup, const WheelKnots& knots, const Eigen::VectorXd& W) {
-  SharpeningSetup s = setup;
+CubicSpline wheelDeviationSpline(const WheelKnots& knots, const Eigen::VectorXd& W) {
   std::vector<double> y(knots.R.size());
   for (size_t k = 0; k < y.size(); ++k) y[k] = W(static_cast<int>(k)) / kMicrometresPerMm;
-  s.wheel.added = CubicSpline::notAKnot(knots.R, std::move(y));
+  return CubicSpline::notAKnot(knots.R, std::move(y));
+}
+
+SharpeningSetup withWheelDeviation(const SharpeningSetup& setup, const WheelKnots& knots, const Eigen::VectorXd& W) {
+  SharpeningSetup s = setup;
+  s.wheel.added = wheelDeviationSpline(knots, W);
   return s;
 }
 
@@ -105,7 +109,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
   const std::vector<Coefficient>& cs = a.space.coefficients;
   const int q = static_cast<int>(cs.size());
   const int K = static_cast<int>(knots.R.size());
-  const CubicSpline wheelBasis(knots.R, std::vector<double>(static_cast<size_t>(K), 0.0));
+  const CubicSpline wheelBasis = wheelDeviationSpline(knots, Eigen::VectorXd::Zero(K));
 
   // The run face with W = 0 in the model, so that it carries the partials to W: its envelope
   // points are runFace's (a zero offset grinds today's face), given the sensitivities again.

@@ -19,6 +19,7 @@
 #include <Eigen/Core>
 
 #include "axis_polynomials.h"
+#include "cubic_spline.h"
 #include "correction_options.h"
 #include "ground_face.h"
 #include "machine_error.h"
@@ -40,6 +41,11 @@ constexpr int kFewestWheelKnots = 4, kMostWheelKnots = 12;
 
 // clamp(grid rows, 4, 12) points from rLow to rHigh (tooth-face radii, mm; the grid's within the face).
 Outcome<WheelKnots> wheelKnots(const SharpeningSetup& setup, const FaceGrid& grid, double rLow, double rHigh);
+
+// W (µm at knots.R) as the spline the wheel adds, mm: not-a-knot, as a dressed wheel's offset
+// reads (wheel_input.cpp). With W = 0 its basis gives the face's sensitivities to W
+// (wheel_offset_sensitivity.h): the one spline for both, so the Jacobian is that of the model.
+CubicSpline wheelDeviationSpline(const WheelKnots& knots, const Eigen::VectorXd& W);
 
 // `setup` with its wheel's offset raised by W (µm at knots.R) along the profile normal, as its
 // WheelSurface::added spline (replacing any there).
