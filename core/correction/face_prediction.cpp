@@ -136,7 +136,10 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
     std::vector<int> unseen, seen;
     for (int i = 0; i < q; ++i) (i >= s.size() || s(i) <= kUnseenShare * s(0) ? unseen : seen).push_back(i);
     // The face directions the axes make: the left singular vectors u_i = S v_i / s_i (S = U S V^T),
-    // formed for the seen directions only (s_i above 1e-4 s_0).
+    // formed for the seen directions only (s_i above 1e-4 s_0). At E = 0, the run face's: the span
+    // of the sensitivities at the identified error (the identification's last Jacobian) was tried,
+    // and on campaign seeds 1001 to 1005 the bound held in 2 fewer of 2,950 noise-free passes and
+    // informed in 4 fewer of 3,214.
     Eigen::MatrixXd U(S.rows(), static_cast<int>(seen.size()));
     for (size_t i = 0; i < seen.size(); ++i)
       U.col(static_cast<int>(i)).noalias() = S * svd.V.col(seen[i]) / s(seen[i]);
