@@ -1,6 +1,7 @@
 // Eq. 17: one correction step by truncated SVD, then re-simulation.
-#include <map>
 #include <cmath>
+#include <cstdio>
+#include <map>
 
 #include "correction.h"
 #include "test_support.h"
@@ -47,6 +48,40 @@ TEST(Correction, OneStepCancelsAnErrorInTheSpanOfTheCoefficients) {
   const Topography after = topographyFor(job, withError(c->axes, nominal, error));
   EXPECT_LT(after.sse, 0.01) << "from " << measured.sse;
   EXPECT_LT(std::abs(after.thickness), 0.05);
+}
+
+// Eq. 16's thickness row is the derivative of its datum: the thickness the step predicts is the one
+// its predicted face reads (interpolated at the centre of a grid with no node there, the probe
+// nearest the mean point at probe points). Before, the row was the mean point's own sensitivity,
+// which on these faces the datum's reading misses by a share of the column.
+TEST(Correction, TheThicknessRowReadsTheFaceAsTheDatumDoes) {
+  CaseInput even = paperCase();
+  even.grid.radial = 6;
+  even.grid.axial = 8;
+  const SharpeningJob job = jobOf(even);
+  const AxisPolynomials& nominal = job.nominalAxes;
+  const AxisPolynomials error = machineError(nominal);
+  const GroundFace onGrid = groundFaceOf(job, nominal);
+  ProbePoints probes;
+  for (double r : {0.3, 0.55, 0.8})
+    for (double x : {-0.7, -0.2, 0.35, 0.9})
+      probes.push_back({job.grid.r.front() + r * (job.grid.r.back() - job.grid.r.front()), x * job.grid.x.back()});
+  const GroundFace atProbes = simulateGroundFace(job.setup, nominal, probes, job.grid).value();
+  for (const GroundFace* run : {&onGrid, &atProbes}) {
+    SCOPED_TRACE(run->atProbes() ? "probe points" : "6 x 8 grid");
+    auto measured = run->atProbes() ? simulateGroundFace(job.setup, withError(nominal, nominal, error), probes, job.grid)
+                                    : simulateGroundFace(job.setup, withError(nominal, nominal, error), job.grid);
+    ASSERT_TRUE(measured.ok());
+    auto c = correctionStep(*run, nominal, topographyOf(*measured).normal, CorrectionOptions{});
+    ASSERT_TRUE(c.ok()) << c.error().message;
+    const double read = topographyFromNormal(*run, c->after.normal).thickness;
+    EXPECT_NEAR(c->after.thickness, read, 1e-9 * (1 + std::abs(c->before.thickness)));  // µm
+    const double meanRow = sensitivityMatrix(*run, c->coefficients).thickness.dot(c->change);
+    const double datumRow = c->after.thickness - c->before.thickness;
+    std::printf("[ figures  ] %s: the thickness change by the datum's row %.6f µm, by the mean point's %.6f µm\n",
+                run->atProbes() ? "probe points" : "6 x 8 grid", datumRow, meanRow);
+    EXPECT_GT(std::abs(meanRow - datumRow), run->atProbes() ? 1e-2 : 1e-4);  // µm: the two rows differ here
+  }
 }
 
 TEST(Correction, ReportsXAgainstAAsUnobservable) {

@@ -48,10 +48,20 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
   const int p = grid.size(), q = static_cast<int>(c.coefficients.size());
   const bool helical = run.gash == GashKind::Helical;
 
-  // Eq. 16: p grid equations and the thickness at the mean point.
+  // Eq. 16: p grid equations and the thickness at the mean point. The thickness row is the
+  // derivative of the datum as c.before reads it from the measurement (topography.h: interpolated
+  // at the grid's centre, or the probe nearest the mean point): each column's normal sensitivities
+  // read the same way. On a grid with a node at the centre that is S.thickness (the mean point's
+  // own sensitivity); elsewhere the two differ (Tab. 1's error at 12 probe points: a thickness
+  // change of -15.74 µm by the datum's row, -15.89 µm by the mean point's; test_correction.cpp).
   Eigen::MatrixXd A(p + 1, q);
   A.topRows(p) = S.normal;
-  A.row(p) = S.thickness;
+  for (int j = 0; j < q; ++j) {
+    const Eigen::VectorXd column = S.normal.col(j);
+    A(p, j) = topographyFromNormal(run, Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+                                            column.data(), grid.rows(), grid.cols()))
+                  .thickness;
+  }
   Eigen::VectorXd d(p + 1);
   for (int i = 0; i < grid.rows(); ++i)
     for (int j = 0; j < grid.cols(); ++j) d(i * grid.cols() + j) = measured(i, j);
