@@ -236,6 +236,30 @@ TEST(WheelSurface, OffsetSensitivitiesEqualCentralDifferencesAwayFromNominal) {
   expectOffsetSensitivitiesMatch(paperCase(), &at);
 }
 
+// At probe points the sensitivities have a row per point (not per node of the grid that gives the
+// mean point): at points on grid nodes, the grid face's rows there.
+TEST(WheelSurface, OffsetSensitivitiesAtProbePointsHaveARowPerPoint) {
+  CaseInput c = paperCase();
+  c.wheelProfileOffset = offsetOver(rangeOf(c), 6, [](double R) { return 4 * std::sin(0.4 * R) + 1.5; });
+  const SharpeningJob job = jobOf(c);
+  const GroundFace grid = groundFaceOf(job, job.runAxes);
+  ProbePoints probes;
+  std::vector<int> nodes;
+  for (int i : {1, 3})
+    for (int j : {0, 2, 4, 7}) {
+      probes.push_back({job.grid.r[i], job.grid.x[j]});
+      nodes.push_back(i * job.grid.cols() + j);
+    }
+  const GroundFace atProbes = simulateGroundFace(job.setup, job.runAxes, probes, job.grid).value();
+  const WheelOffsetSensitivity S = wheelOffsetSensitivity(atProbes, job.setup.wheel);
+  const WheelOffsetSensitivity G = wheelOffsetSensitivity(grid, job.setup.wheel);
+  ASSERT_EQ(S.normal.rows(), 8);
+  ASSERT_EQ(S.normal.cols(), 6);
+  for (size_t k = 0; k < nodes.size(); ++k)
+    EXPECT_LT((S.normal.row(static_cast<int>(k)) - G.normal.row(nodes[k])).cwiseAbs().maxCoeff(), 1e-9) << "point " << k;
+  EXPECT_LT((S.thickness - G.thickness).cwiseAbs().maxCoeff(), 1e-9);
+}
+
 // The axis sensitivities (Eqs. 13-15) stay exact with a dressed wheel.
 TEST(WheelSurface, AxisSensitivitiesWithAnOffsetEqualCentralDifferences) {
   CaseInput c = paperCase();

@@ -11,7 +11,7 @@ WheelOffsetSensitivity wheelOffsetSensitivity(const GroundFace& face, const Whee
 
 WheelOffsetSensitivity wheelOffsetSensitivity(const GroundFace& face, const CubicSpline& spline) {
   WheelOffsetSensitivity S;
-  const int knots = static_cast<int>(spline.size()), n = face.grid.size();
+  const int knots = static_cast<int>(spline.size()), n = face.size();  // grid points, or probe points
   auto row = [&](const EnvelopePoint& e) {
     // delta = sum_k y_k B_k(R): dt/dy_k = dt/d(delta) B_k(R) + dt/d(delta') B_k'(R); mm per mm is
     // µm per µm.
