@@ -10,8 +10,10 @@
 // "before"; the prediction for a pass is what the previous pass's correction predicted (its
 // "after"; for the rms, correction.predictedRms with its bound correction.predictedRmsHigh), and
 // for the first pass the face simulated for its axes, with no machine error known. Beside them,
-// per pass, the probe noise its correction assumed (correction.probeNoise, sigma, µm rms): the
-// floor below which the measured rms only moves noise. When the correction says stop (the face
+// per pass, the probe noise its correction assumed (correction.probeNoise, sigma, µm rms): what
+// noise alone measures. The stop (correction.stop) takes the same chi-square test as the
+// identification's status, up to 3 of its standard deviations above n sigma² (1.28 sigma in rms
+// on 45 points), so a face a little above the drawn floor may be told to stop. When the correction says stop (the face
 // measured is within the probe noise), no next pass is predicted or offered.
 import { caseOf } from './store.js';
 

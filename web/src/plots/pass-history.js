@@ -73,7 +73,7 @@ export function drawPassHistory(Plotly, el, series, passCount, units = {}) {
         type: 'scatter', mode: 'lines', x: floor.x, y: floor.y, xaxis: `x${axis}`, yaxis: `y${axis}`,
         name: sigmas.length === 1 ? `probe noise σ ${figure(sigmas[0])} ${unit}` : 'probe noise σ',
         line: { color: COLOURS.floor, dash: 'dot', width: 2, shape: 'hvh' }, fill: 'tozeroy', fillcolor: 'rgba(113, 128, 150, 0.18)',
-        hovertemplate: `probe noise σ %{y:.3g} ${unit}: below it the face is noise<extra></extra>`,
+        hovertemplate: `probe noise σ %{y:.3g} ${unit}: what noise alone measures, rms (the stop allows 3 of its standard deviations more)<extra></extra>`,
       });
     }
     // The rms predicted is drawn at its bound (what the pass leaves), a bar down to the identified
