@@ -22,7 +22,7 @@ function renderCoefficients(r, state) {
   const pinned = pinnedCoefficients(state);
   const degree = r.axes.X.length - 1;
   const per = motionUnit(r);
-  $('#coefficients thead').innerHTML = '<tr><th>coefficient</th><th>unit</th><th>nominal</th><th>corrected</th><th>change</th>' +
+  $('#coefficients thead').innerHTML = '<tr><th>coefficient</th><th>unit</th><th>nominal</th><th>corrected</th><th title="the corrected coefficient less the nominal one: not the change from the axes run, which differs after a first pass (the results file gives that)">corrected − nominal</th>' +
     `${pinned ? '<th>nominal, difference to pinned</th>' : ''}</tr>`;
   const rows = [];
   for (const a of AXES) {
