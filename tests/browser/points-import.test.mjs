@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { afterResult, base, openPage, plotted, root, shots, useBrowser } from './support.mjs';
+import { after_, afterResult, base, openPage, plotted, root, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 const desk = { viewport: { width: 1366, height: 900 } };
@@ -79,6 +79,19 @@ test('a points CSV is previewed, corrected as points, and the maps show the grid
     assert.ok(Math.abs(m.dx) < 1.5 && Math.abs(m.dy) < 1.5, `${id}: the first point drawn at its place (${m.dx}, ${m.dy} px off)`);
   }
   await page.locator('#topography-section').screenshot({ path: path.join(shots, 'points-import-maps.png') });
+  // The circular view changes the maps, not the points the figures are of: they stay the points'
+  // (the circular grids are the faces the identified error grinds, without the points' misfit, and
+  // their figures made the face after the pass read 0.000 µm rms).
+  const figures = () => page.evaluate(() => [document.querySelector('#figures-before').textContent,
+    document.querySelector('#figures-after').textContent, document.querySelector('#before-title').textContent]);
+  const [beforeNormal, afterNormal] = await figures();
+  assert.match(afterNormal, /^At the 2000 points: /);
+  await after_(page, 'draws', () => page.check('input[name="view"][value="circular"]'));
+  const [beforeCircular, afterCircular, titleCircular] = await figures();
+  assert.equal(beforeCircular, beforeNormal);
+  assert.equal(afterCircular, afterNormal.replace('At the 2000 points: ', 'At the 2000 points, normal deviation: '));
+  assert.match(titleCircular, /^Measured at 2000 points \(figures at the points, normal deviation; map: as the axes explain it\)/);
+  await after_(page, 'draws', () => page.check('input[name="view"][value="normal"]'));
 
   // A file the reader refuses (no units): the message names the line; nothing else changes.
   await page.setInputFiles('#measured-file', file('no-units.csv', 'r,x,deviation\n19,1,2\n'));

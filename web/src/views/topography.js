@@ -31,17 +31,23 @@ function topographyViews(r, caseObject, view) {
   const viewName = circular ? 'circular deviation' : 'normal deviation';
   if (r.correction) {
     const c = r.correction;
+    // Points off the grid (docs/measured-points.md): the figures are the points' in both views (the
+    // circular grids are the faces the identified error grinds, without the points' misfit: their
+    // figures would show a face after the pass with nothing left), the maps those faces.
+    const points = Boolean(c.pointMeasured);
     const beforeNumbers = numbersOf({ sse: c.sseBefore, max: c.maxBefore, thickness: c.thicknessBefore, rms: c.rmsBefore,
-      peakToValley: c.peakToValleyBefore }, circular && c.measuredCircular);
+      peakToValley: c.peakToValleyBefore }, circular && !points && c.measuredCircular);
     const afterNumbers = numbersOf({ sse: c.sseAfter, max: c.maxAfter, thickness: c.thicknessAfter, rms: c.rmsAfter,
-      peakToValley: c.peakToValleyAfter }, circular && c.residualCircular);
+      peakToValley: c.peakToValleyAfter }, circular && !points && c.residualCircular);
     return {
-      // Points off the grid (docs/measured-points.md): the figures are the points', the map the face the identified error grinds.
-      beforeTitle: c.pointMeasured ? `Measured at ${c.pointMeasured.length} points (figures at the points; map: as the axes explain it)` : 'Measured',
+      beforeTitle: points
+        ? `Measured at ${c.pointMeasured.length} points (figures at the points${circular ? ', normal deviation' : ''}; map: as the axes explain it)`
+        : 'Measured',
       before: circular ? c.measuredCircular : caseObject.measured || c.measuredOnGrid, beforeName: `Measured ${viewName}`,
       beforeNumbers, beforeFigures: figuresText(beforeNumbers),
       after: circular ? c.residualCircular : c.residual, afterName: `After correction, ${viewName}`,
-      afterNumbers, afterFigures: figuresText(afterNumbers),
+      afterNumbers,
+      afterFigures: (points ? `At the ${c.pointMeasured.length} points${circular ? ', normal deviation' : ''}: ` : '') + figuresText(afterNumbers),
       // Where the probe touched, marked on both maps, with the point's own figure.
       beforePoints: c.pointMeasured ? { list: c.pointMeasured, what: 'measured normal deviation' } : null,
       afterPoints: c.pointResidual ? { list: c.pointResidual, what: 'normal deviation on the identified machine' } : null,
