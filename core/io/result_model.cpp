@@ -594,11 +594,11 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
         v.number({names[i], isRotary(a) ? rotary : linear, what, kWithMeasured, label}, values[i]);
       }
     };
-    perAxis(kIdentified, "µm", "µrad", "the identified machine error of the axis (actual minus commanded): largest over the motion range, signed; where correction.identifiedAxes is not \"alone\" a share of a combination the face does not split, not a finding about the axis",
+    perAxis(kIdentified, "µm", "µrad", "the identified machine error of the axis (actual minus commanded): largest over the motion range the face measured spans (a grid's: motion.min to motion.max; measured points may span less than the axes run), signed; where correction.identifiedAxes is not \"alone\" a share of a combination the face does not split, not a finding about the axis",
             c.identifiedErrorSize);
-    perAxis(kChange, "µm", "µrad", "the change proposed for the axis, correction.axes minus the axes run: largest over the motion range, signed",
+    perAxis(kChange, "µm", "µrad", "the change proposed for the axis, correction.axes minus the axes run: largest over the motion range the face measured spans (a grid's: motion.min to motion.max; measured points may span less than the axes run), signed",
             c.axisChangeSize);
-    perAxis(kUncertainty, "µm", "µrad", "standard uncertainty of the identified error and the change from the probe noise, over every direction the face shows, largest over the motion range: correction.precision.changePerNoise times correction.probeNoise",
+    perAxis(kUncertainty, "µm", "µrad", "standard uncertainty of the identified error and the change from the probe noise, over every direction the face shows, largest over the motion range the face measured spans (a grid's: motion.min to motion.max; measured points may span less than the axes run): correction.precision.changePerNoise times correction.probeNoise",
             c.uncertainty);
     perAxis(kFacePerError, "µm per µm", "µm per µrad", "precision demand: face deviation per unit of a constant error of the axis, largest over the grid",
             c.facePerAxisError, "face per unit of axis error, largest over the grid");
@@ -625,7 +625,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
       alone[i] = x.value;
       aloneUncertainty[i] = x.perNoise * probeNoise;
     }
-    perAxis(kAlone, "µm", "µrad", "the axis's error read on its own, its mean over the motion range; 0 unless correction.identifiedAxes gives \"alone\"",
+    perAxis(kAlone, "µm", "µrad", "the axis's error read on its own, its mean over the motion range the face measured spans (a grid's: motion.min to motion.max; measured points may span less than the axes run); 0 unless correction.identifiedAxes gives \"alone\"",
             alone);
     perAxis(kAloneUncertainty, "µm", "µrad", "standard uncertainty of correction.identifiedAlone from the probe noise; 0 unless \"alone\"",
             aloneUncertainty);
