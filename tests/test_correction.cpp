@@ -213,42 +213,6 @@ TEST(Correction, MeasuredOfTheWrongShapeIsRefused) {
   EXPECT_EQ(c.error().field, "measured");
 }
 
-// "Within the probe noise" is one test: the verdict says "down to the probe noise" only where the
-// identification's status says the misfit is within the noise (noiseCeiling), and a shape no axis
-// makes that stays above it is called partly uncorrectable, with the advice to correct the wheel.
-// (The verdict's test was an rms of twice sigma: a misfit between 1.28 and 2 sigma on Tab. 1's 45
-// points read "ended above the probe noise" in the status and "down to the probe noise" in the
-// verdict, and the wheel's advice was not given.)
-TEST(Correction, TheVerdictsNoiseIsTheStatussNoise) {
-  constexpr double kSigma = 0.5;  // µm
-  const SharpeningJob nominalJob = jobOf(paperCase());
-  const FaceGrid& g = nominalJob.grid;
-  for (double size : {0.3, 0.9}) {  // µm rms of the part no axis makes: below and above the ceiling
-    SCOPED_TRACE("shape " + std::to_string(size) + " µm rms");
-    // A checkerboard: + and - from point to point, which no smooth axis motion grinds.
-    Eigen::MatrixXd shape(g.rows(), g.cols());
-    for (int i = 0; i < g.rows(); ++i)
-      for (int j = 0; j < g.cols(); ++j) shape(i, j) = (i + j) % 2 ? -size : size;
-    CaseInput in = paperCase();
-    in.measured = topographyFor(nominalJob, machineError(nominalJob.nominalAxes)).normal + shape;
-    in.correction.probeNoise = kSigma;
-    auto e = evaluate(jobOf(in));
-    ASSERT_TRUE(e.ok()) << e.error().message;
-    const Correction& c = *e->correction;
-    ASSERT_FALSE(c.stop);
-    const bool above = c.summary.status == SolveStatus::AboveNoise;
-    std::printf("[ figures  ] Tab. 1, sigma 0.5 µm, a shape of %.1f µm rms no axis makes: %.3f µm rms left, %s; %.60s\n",
-                size, c.after.rms, statusName(c.summary.status), c.verdict.c_str());
-    EXPECT_EQ(above, size > kSigma);
-    EXPECT_EQ(above, c.after.sse > noiseCeiling(g.size(), kSigma)) << c.summary.reason;
-    EXPECT_EQ(c.leavesWithinNoise(kSigma, g.size()), !above);
-    if (above) {
-      EXPECT_EQ(c.verdict.find("down to the probe noise"), std::string::npos) << c.verdict;
-      EXPECT_EQ(c.verdict.rfind("Partly uncorrectable", 0), 0u) << c.verdict;
-    }
-  }
-}
-
 TEST(Correction, EvaluationWithMeasuredGivesTheCorrection) {
   CaseInput in = paperCase();
   const SharpeningJob nominalJob = jobOf(in);

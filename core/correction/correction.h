@@ -19,7 +19,6 @@
 #include "outcome.h"
 #include "sensitivity_matrix.h"
 #include "sharpening_setup.h"
-#include "solve_report.h"
 #include "topography.h"
 #include "unobservable.h"
 
@@ -87,12 +86,10 @@ struct Correction {
   // A change is proposed whose bound is above the face measured: the face does not show enough of
   // the machine's error to say that the pass improves it (the verdicts lead with "Uncertain:").
   bool uncertain() const { return !keepsRun() && predictedRmsHigh > before.rms; }
-  // The face the pass leaves (`after`, over `points` values) is within the probe noise (the
-  // verdicts' "down to the probe noise"): the test the identification's status and the stop take,
-  // its sum of squares at most noiseCeiling (solve_report.h). (It was an rms of twice sigma, so a
-  // status "ended above the probe noise" could stand beside a verdict "down to the probe noise".)
+  // The face the pass leaves (`after`, over `points` values) is within the probe noise: its rms at
+  // most twice the probe's sigma (the verdicts' "down to the probe noise").
   bool leavesWithinNoise(double probeNoise, int points) const {
-    return after.sse <= noiseCeiling(points, probeNoise);
+    return after.sse <= points * std::pow(2 * probeNoise, 2);
   }
   // The axes run alone grind no face the wheel envelops (a pass after a large machine error): the
   // correction was linearised at the nominal axes instead, from the face measured.
