@@ -213,6 +213,35 @@ TEST(Correction, MeasuredOfTheWrongShapeIsRefused) {
   EXPECT_EQ(c.error().field, "measured");
 }
 
+// What the verdict says of the noise is what it tests: an rms left of at most twice sigma is
+// "to within twice the probe noise", never "down to the probe noise", which the status's
+// chi-square ceiling (1.28 sigma on Tab. 1's 45 points) could deny beside it ("ended above the
+// probe noise").
+TEST(Correction, TheVerdictSaysWhichNoiseItMeans) {
+  constexpr double kSigma = 0.5;  // µm
+  const SharpeningJob nominalJob = jobOf(paperCase());
+  const FaceGrid& g = nominalJob.grid;
+  // A checkerboard of 0.9 µm: + and - from point to point, which no smooth axis motion grinds.
+  Eigen::MatrixXd shape(g.rows(), g.cols());
+  for (int i = 0; i < g.rows(); ++i)
+    for (int j = 0; j < g.cols(); ++j) shape(i, j) = (i + j) % 2 ? -0.9 : 0.9;
+  CaseInput in = paperCase();
+  in.measured = topographyFor(nominalJob, machineError(nominalJob.nominalAxes)).normal + shape;
+  in.correction.probeNoise = kSigma;
+  auto e = evaluate(jobOf(in));
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  const Correction& c = *e->correction;
+  std::printf("[ figures  ] Tab. 1, sigma 0.5 µm, a 0.9 µm checkerboard: %.3f µm rms left, %s\n", c.after.rms,
+              statusName(c.summary.status));
+  EXPECT_EQ(c.summary.status, SolveStatus::AboveNoise) << c.summary.reason;
+  EXPECT_GT(c.after.rms, 1.28 * kSigma);
+  EXPECT_LE(c.after.rms, 2 * kSigma);
+  EXPECT_GT(c.uncorrectableShare, CorrectionOptions{}.correctableShare);
+  EXPECT_EQ(c.verdict.rfind("Correctable: the axes can cancel the measured deviation to within twice the probe noise (rms)", 0), 0u)
+      << c.verdict;
+  EXPECT_EQ(c.verdict.find("down to the probe noise"), std::string::npos);
+}
+
 TEST(Correction, EvaluationWithMeasuredGivesTheCorrection) {
   CaseInput in = paperCase();
   const SharpeningJob nominalJob = jobOf(in);

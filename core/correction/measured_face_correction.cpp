@@ -87,7 +87,7 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
     v << "Identification " << how << "; the best estimate is proposed: " << leaves << ". " << c.summary.reason;
   } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
     v << "Correctable: the axes can cancel the measured deviation"
-      << (withinNoise && c.uncorrectableShare > o.correctableShare ? " down to the probe noise" : "")
+      << (withinNoise && c.uncorrectableShare > o.correctableShare ? " to within twice the probe noise (rms)" : "")
       << "; " << leaves << ".";
   } else {
     v << "Partly uncorrectable: " << 100 * c.uncorrectableShare
