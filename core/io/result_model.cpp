@@ -580,9 +580,11 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     v.axes({"correction.axes", kCoefficientUnit, "the exact proposal, the axes to run next: nominal minus the identified error (Tab. 2 right)",
             kWithMeasured}, c.axes);
     // The digits are the option's (machine_resolution.h), written once.
-    static const std::string kRounded = "correction.axes as the NC program carries them: each coefficient to " +
+    static const std::string kRounded = "correction.axes as a control keeps polynomial coefficients: each coefficient to " +
                                         std::to_string(MachineResolution{}.coefficientDigits) +
-                                        " significant digits in mm or deg per (deg or mm)^k (docs/conventions.md, Machine resolution)";
+                                        " significant digits in mm or deg per (deg or mm)^k (docs/conventions.md, Machine resolution); "
+                                        "the NC programs written re-expand the polynomials in blocks with their own digits and state "
+                                        "their own deviation from correction.axes (docs/nc-programs.md)";
     v.axes({"correction.roundedAxes", kCoefficientUnit, kRounded.c_str(), kWithMeasured}, c.roundedAxes);
     v.texts({"correction.coefficients", "", "the coefficients left free (not locked)", kWithMeasured}, names(c.coefficients));
     eigenNumbers(v, {"correction.change", "coefficient units", "the changes of correction.coefficients, in order: correction.axes minus the axes run", kWithMeasured}, c.change);
