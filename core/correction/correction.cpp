@@ -58,9 +58,8 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
   A.topRows(p) = S.normal;
   for (int j = 0; j < q; ++j) {
     const Eigen::VectorXd column = S.normal.col(j);
-    A(p, j) = topographyFromNormal(run, Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-                                            column.data(), grid.rows(), grid.cols()))
-                  .thickness;
+    A(p, j) = thicknessFromNormal(run, Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+                                           column.data(), grid.rows(), grid.cols()));
   }
   Eigen::VectorXd d(p + 1);
   for (int i = 0; i < grid.rows(); ++i)

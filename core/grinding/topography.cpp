@@ -37,6 +37,10 @@ double circularFactor(const GroundFace& face, int i, int j) {
 
 double thicknessFactor(const GroundFace& face) { return 1.0 / face.meanPoint.cosCircle; }
 
+double thicknessFromNormal(const GroundFace& face, const Eigen::MatrixXd& normal) {
+  return (face.atProbes() ? atNearestToMean(face, normal) : atCentre(normal)) * thicknessFactor(face);
+}
+
 Topography topographyFromNormal(const GroundFace& face, const Eigen::MatrixXd& normal) {
   Topography t;
   t.grid = face.grid;
@@ -44,7 +48,7 @@ Topography topographyFromNormal(const GroundFace& face, const Eigen::MatrixXd& n
   t.circular.resize(normal.rows(), normal.cols());
   for (int i = 0; i < normal.rows(); ++i)
     for (int j = 0; j < normal.cols(); ++j) t.circular(i, j) = normal(i, j) * circularFactor(face, i, j);
-  t.thickness = (face.atProbes() ? atNearestToMean(face, normal) : atCentre(normal)) * thicknessFactor(face);
+  t.thickness = thicknessFromNormal(face, normal);
   t.sse = normal.squaredNorm();
   t.max = normal.cwiseAbs().maxCoeff();
   t.rms = std::sqrt(t.sse / static_cast<double>(normal.size()));

@@ -35,4 +35,8 @@ Topography topographyOf(const GroundFace& face);
 // point nearest the mean point (nothing interpolated).
 Topography topographyFromNormal(const GroundFace& face, const Eigen::MatrixXd& normal);
 
+// The thickness error topographyFromNormal reads from those normal deviations (µm): linear in
+// them, so the same reading of a sensitivity column is the thickness's sensitivity.
+double thicknessFromNormal(const GroundFace& face, const Eigen::MatrixXd& normal);
+
 }  // namespace hobsharp
