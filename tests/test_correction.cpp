@@ -84,6 +84,42 @@ TEST(Correction, TheThicknessRowReadsTheFaceAsTheDatumDoes) {
   }
 }
 
+// The pass history's first prediction (correction.simulated) is the face the axes run grind with
+// no machine error, read as the measurement is: measured on a perfect machine, the two agree in
+// every figure, on a grid with no node at its centre and at probe points, where the simulated
+// face's own thickness at the mean point (topography.thickness) differs from that reading.
+TEST(Correction, TheFirstPassIsPredictedAsItIsMeasured) {
+  CaseInput even = paperCase();
+  even.grid.radial = 6;
+  even.grid.axial = 8;
+  const SharpeningJob job = jobOf(even);
+  const AxisPolynomials& nominal = job.nominalAxes;
+  const AxisPolynomials run = machineError(nominal);  // axes off the nominal ones, on a perfect machine
+  const Topography exact = topographyFor(job, run);
+  ProbePoints probes;
+  for (double r : {0.1, 0.3, 0.55, 0.8, 0.95})
+    for (double x : {-0.7, -0.2, 0.15, 0.35, 0.6, 0.9})
+      probes.push_back({job.grid.r.front() + r * (job.grid.r.back() - job.grid.r.front()), x * job.grid.x.back()});
+  const GroundFace atProbes = simulateGroundFace(job.setup, run, probes, job.grid).value();
+  const Eigen::VectorXd atProbesMeasured = topographyOf(atProbes).normal.col(0);
+  auto onGrid = correctMeasuredFace(job.setup, nominal, run, groundFaceOf(job, run), exact.normal, CorrectionOptions{});
+  auto onPoints = correctMeasuredPoints(job.setup, nominal, run, job.grid, probes, atProbesMeasured, CorrectionOptions{});
+  ASSERT_TRUE(onGrid.ok()) << onGrid.error().message;
+  ASSERT_TRUE(onPoints.ok()) << onPoints.error().message;
+  for (const Correction* c : {&*onGrid, &*onPoints}) {
+    SCOPED_TRACE(c->atProbes() ? "probe points" : "6 x 8 grid");
+    const double tol = 1e-9 * (1 + c->before.rms);
+    EXPECT_NEAR(c->simulated.rms, c->before.rms, tol);
+    EXPECT_NEAR(c->simulated.sse, c->before.sse, 1e-9 * (1 + c->before.sse));
+    EXPECT_NEAR(c->simulated.max, c->before.max, tol);
+    EXPECT_NEAR(c->simulated.thickness, c->before.thickness, 1e-9 * (1 + std::abs(c->before.thickness)));
+    std::printf("[ figures  ] %s: thickness read as measured %.4f µm, the simulated face's own at the mean point %.4f µm\n",
+                c->atProbes() ? "probe points" : "6 x 8 grid", c->simulated.thickness, exact.thickness);
+    EXPECT_GT(std::abs(c->simulated.thickness - exact.thickness), c->atProbes() ? 0.1 : 1e-4);  // µm: the readings differ here
+  }
+  EXPECT_NE(onPoints->simulated.rms, exact.rms);  // the points' figures, not the grid's
+}
+
 TEST(Correction, ReportsXAgainstAAsUnobservable) {
   const SharpeningJob job = jobOf(paperCase());
   const AxisPolynomials& nominal = job.nominalAxes;

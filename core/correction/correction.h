@@ -30,6 +30,10 @@ struct Correction {
   Eigen::VectorXd change;                // their changes, in their units
   Topography before;                     // the measured topography
   Topography after;                      // the predicted face after the pass
+  // The face the axes run grind with no machine error, at the measurement's points and read as
+  // `before` is (its thickness as topography.h reads a measurement): the pass history's prediction
+  // for a first pass. correctMeasuredFace fills it.
+  Topography simulated;
   Eigen::VectorXd singularValues;        // of the scaled matrix, largest first
   int rank = 0;                          // directions used in the step
   int amplifyingDropped = 0;             // directions above the truncation left out (see options)

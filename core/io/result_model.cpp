@@ -664,6 +664,11 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     v.number({"correction.thicknessBefore", "µm", "thickness error at the mean point, measured", kWithMeasured, "thickness error"},
              c.before.thickness);
     v.number({"correction.thicknessAfter", "µm", "thickness error after the pass on the identified machine", kWithMeasured, "thickness error"}, c.after.thickness);
+    // The pass history's first prediction, read as the measurement is (correction.h).
+    v.number({"correction.rmsSimulated", "µm", "root mean square of the face the axes run grind with no machine error, at the measured points and read as the measurement is", kWithMeasured, "rms"}, c.simulated.rms);
+    v.number({"correction.sseSimulated", "µm²", "sum of squares of the face the axes run grind with no machine error, at the measured points and read as the measurement is", kWithMeasured, "sum of squares"}, c.simulated.sse);
+    v.number({"correction.maxSimulated", "µm", "largest absolute deviation of the face the axes run grind with no machine error, at the measured points and read as the measurement is", kWithMeasured, "largest |deviation|"}, c.simulated.max);
+    v.number({"correction.thicknessSimulated", "µm", "thickness error of the face the axes run grind with no machine error, at the measured points and read as the measurement is (interpolated at the grid's centre, or at the probe nearest the mean point, as correction.thicknessBefore; topography.thickness is the simulated face's own value at the mean point)", kWithMeasured, "thickness error"}, c.simulated.thickness);
     v.number({"correction.sseRounded", "µm²", "sum of squares with correction.roundedAxes on the identified machine (re-simulated)", kWithMeasured, "sum of squares"},
              c.afterRounded.sse);
     v.number({"correction.maxRounded", "µm", "largest absolute deviation with correction.roundedAxes on the identified machine", kWithMeasured, "largest |deviation|"},

@@ -98,7 +98,14 @@ test('figures: measured, predicted next (the rms with its bound) and simulated, 
     correction: { ...correction, maxAfter: NaN, thicknessAfter: Infinity, rmsBefore: 1.6, predictedRms: 0.01, predictedRmsHigh: NaN, probeNoise: 0.5 } });
   assert.deepEqual(f.measured, { rms: 1.6, sse: 120, max: 6, thickness: 4.5 });
   assert.deepEqual(f.next, { rms: 0.01, rmsHigh: null, sse: 0.02, max: null, thickness: null });
-  assert.deepEqual(f.simulated, { rms: 4e-6, sse: 1e-9, max: 2e-5, thickness: -1e-5 });
+  // With a measurement, the face simulated for the axes run at its points, read as it is
+  // (correction.*Simulated: here a thickness interpolated at the grid's centre), not the topography's.
+  assert.deepEqual(f.simulated, { rms: null, sse: null, max: null, thickness: null });
+  const read = resultFigures({ topography: { ...topography, rms: 4e-6 },
+    correction: { ...correction, rmsSimulated: 5e-6, sseSimulated: 2e-9, maxSimulated: 3e-5, thicknessSimulated: -2e-5 } });
+  assert.deepEqual(read.simulated, { rms: 5e-6, sse: 2e-9, max: 3e-5, thickness: -2e-5 });
+  // Before a measurement: the topography.
+  assert.deepEqual(resultFigures({ topography: { ...topography, rms: 4e-6 } }).simulated, { rms: 4e-6, sse: 1e-9, max: 2e-5, thickness: -1e-5 });
   assert.equal(f.sigma, 0.5);
   assert.equal(f.stop, false);
   assert.deepEqual(resultFigures({ topography }).measured, null);

@@ -9,7 +9,8 @@
 // largest |deviation| (µm) and the thickness error (µm). The measured figures are the correction's
 // "before"; the prediction for a pass is what the previous pass's correction predicted (its
 // "after"; for the rms, correction.predictedRms with its bound correction.predictedRmsHigh), and
-// for the first pass the face simulated for its axes, with no machine error known. Beside them,
+// for the first pass the face simulated for its axes, with no machine error known, at the
+// measurement's points and its thickness read as the measurement's is. Beside them,
 // per pass, the probe noise its correction assumed (correction.probeNoise, sigma, µm rms): what
 // noise alone measures. The stop (correction.stop) takes the same chi-square test as the
 // identification's status, up to 3 of its standard deviations above n sigma² (1.28 sigma in rms
@@ -24,14 +25,15 @@ const figures = (rms, sse, max, thickness) => ({ rms: finiteOr(rms), sse: finite
 export const STOP_WHY = 'Stop: the face measured is within the probe noise; another pass would only move noise. Keep the axes run.';
 
 // A result's figures: the face measured, the one predicted after its correction (with the rms's
-// bound, rmsHigh), and the one simulated for the axes run; the probe noise the correction assumed
+// bound, rmsHigh), and the one simulated for the axes run (with a measurement, at its points and
+// read as it is: correction.*Simulated; before one, the topography); the probe noise the correction assumed
 // (sigma) and whether it says stop. A number that is not finite becomes null (shown as a dash).
 export function resultFigures(result) {
   const c = result.correction, t = result.topography;
   return {
     measured: c ? figures(c.rmsBefore, c.sseBefore, c.maxBefore, c.thicknessBefore) : null,
     next: c ? { ...figures(c.predictedRms, c.sseAfter, c.maxAfter, c.thicknessAfter), rmsHigh: finiteOr(c.predictedRmsHigh) } : null,
-    simulated: figures(t.rms, t.sse, t.max, t.thickness),
+    simulated: c ? figures(c.rmsSimulated, c.sseSimulated, c.maxSimulated, c.thicknessSimulated) : figures(t.rms, t.sse, t.max, t.thickness),
     sigma: c ? finiteOr(c.probeNoise) : null,
     stop: Boolean(c) && c.stop === true,
   };
