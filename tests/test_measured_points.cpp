@@ -288,6 +288,44 @@ TEST(MeasuredPoints, ScatteredPointsAreCorrectedAsWellAsTheGrid) {
   EXPECT_NEAR(r["inspection"]["radialAlignment"].get<double>(), grid->inspection.face.radialAlignment, 1e-6);
 }
 
+// Points over the middle of the face only span less motion than the program runs: the change is
+// also given over the grid's range (correction.axisChangeOverFace), checked against the change
+// polynomials sampled densely over it; on the grid the two figures are one.
+TEST(MeasuredPoints, TheChangeIsAlsoGivenOverTheRangeTheProgramRuns) {
+  const SharpeningJob job = test::jobOf(test::paperCase());
+  const AxisPolynomials actual = knownError(job);
+  ProbePoints middle;
+  std::mt19937 random(11);
+  const double x0 = job.grid.x.front(), x1 = job.grid.x.back();
+  std::uniform_real_distribution<double> r(job.grid.r.front(), job.grid.r.back()), x(x0 + 0.35 * (x1 - x0), x0 + 0.65 * (x1 - x0));
+  for (int k = 0; k < 60; ++k) middle.push_back(ProbePoint{r(random), x(random)});
+  auto grid = evaluateCase(measuredCase({}, actual).dump());
+  auto points = evaluateCase(measuredCase(middle, actual).dump());
+  ASSERT_TRUE(grid.ok()) << grid.error().message;
+  ASSERT_TRUE(points.ok()) << points.error().message;
+  const Correction &g = *grid->correction, &c = *points->correction;
+  for (int i = 0; i < kAxisCount; ++i) EXPECT_EQ(g.axisChangeOverFace[i], g.axisChangeSize[i]);
+  const MotionRange range = motionRange(points->groundFace);
+  bool beyond = false;
+  for (Axis a : kAxes) {
+    const int i = static_cast<int>(a);
+    double largest = 0;
+    for (int k = 0; k <= 4000; ++k) {
+      const double w = range.min + (range.max - range.min) * k / 4000.0;
+      const double v = (c.axes[a].at(w).value - job.runAxes[a].at(w).value) * displayFactor(a);
+      if (std::abs(v) > std::abs(largest)) largest = v;
+    }
+    EXPECT_NEAR(c.axisChangeOverFace[i], largest, 1e-6 * (1 + std::abs(largest))) << "axis " << i;
+    EXPECT_GE(std::abs(c.axisChangeOverFace[i]), std::abs(c.axisChangeSize[i]) - 1e-9);
+    std::printf("[ figures  ] axis %d: change %.4g over the points' range, %.4g over the program's\n", i,
+                c.axisChangeSize[i], c.axisChangeOverFace[i]);
+    beyond = beyond || std::abs(c.axisChangeOverFace[i]) > 1.5 * std::abs(c.axisChangeSize[i]) + 1e-3;
+  }
+  EXPECT_TRUE(beyond) << "points over a third of the face: some axis changes more beyond them";
+  Json j = Json::parse(resultJson(*points));
+  EXPECT_DOUBLE_EQ(j["correction"]["axisChangeOverFace"]["A"].get<double>(), c.axisChangeOverFace[3]);
+}
+
 TEST(MeasuredPoints, ThePointsPathAtTheGridsPositionsAgreesWithTheGrid) {
   // The correction forced through the points path with the grid's own positions: the same
   // correction as the grid's, to the solver's precision (the grid path is used for these points).

@@ -57,6 +57,10 @@ struct Correction {
   // or µrad (A, B).
   std::array<double, kAxisCount> identifiedErrorSize{};
   std::array<double, kAxisCount> axisChangeSize{};      // axes - run axes
+  // The same change over the motion range the program runs (the grid's): the figure above where
+  // the face was measured on the grid; at measured points that span less, the change the program
+  // makes beyond them (axisChangeOver; filled by the job, which has the grid's face).
+  std::array<double, kAxisCount> axisChangeOverFace{};
   // The standard uncertainty of the identified error and of the change, per axis, from sigma:
   // changePerNoise times sigma, exactly (docs/conventions.md §What the engineer reads about the machine).
   std::array<double, kAxisCount> uncertainty{};
@@ -132,6 +136,11 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
 // simulated); `identified`, when given with it, is the error identified from those axes. `history`,
 // when given, is the earlier passes the error is identified together with (machine_error.h); an
 // empty one is none, though its wheelCorrected still says whether a pass dressed the wheel.
+// Per axis, X Y Z A B, the change proposed - run of largest magnitude over the motion range
+// [range.min, range.max], signed: µm (X, Y, Z) or µrad (A, B).
+std::array<double, kAxisCount> axisChangeOver(const AxisPolynomials& proposed, const AxisPolynomials& run,
+                                              const MotionRange& range);
+
 struct MachineErrorEstimate;
 struct PassHistory;
 Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,

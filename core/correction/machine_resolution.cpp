@@ -57,10 +57,20 @@ double resolutionFloor(const Eigen::MatrixXd& perPosition, const MachineResoluti
 }
 
 double largestOverRange(const Polynomial& p, Axis a, double min, double max) {
-  double best = 0;
+  double best = 0, at = min;
   for (int i = 0; i < kRangeSamples; ++i) {
-    const double v = p.at(min + (max - min) * i / (kRangeSamples - 1)).value;
-    if (std::abs(v) > std::abs(best)) best = v;
+    const double w = min + (max - min) * i / (kRangeSamples - 1);
+    const double v = p.at(w).value;
+    if (std::abs(v) > std::abs(best)) best = v, at = w;
+  }
+  // Between the samples: Newton on p'(w) = 0 from the best one (an extremum inside the range).
+  for (int k = 0; k < 8 && max > min; ++k) {
+    const PolynomialValue f = p.at(at);
+    if (f.d2 == 0) break;
+    const double w = std::clamp(at - f.d1 / f.d2, min, max);
+    const double v = p.at(w).value;
+    if (std::abs(v) <= std::abs(best)) break;
+    best = v, at = w;
   }
   return best * displayFactor(a);
 }

@@ -100,6 +100,17 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
 
 }  // namespace
 
+std::array<double, kAxisCount> axisChangeOver(const AxisPolynomials& proposed, const AxisPolynomials& run,
+                                              const MotionRange& range) {
+  std::array<double, kAxisCount> out{};
+  for (Axis a : kAxes) {
+    Polynomial change = proposed[a];
+    for (size_t k = 0; k < change.a.size(); ++k) change.a[k] -= run[a].coefficient(static_cast<int>(k));
+    out[static_cast<int>(a)] = largestOverRange(change, a, range.min, range.max);
+  }
+  return out;
+}
+
 Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                         const AxisPolynomials& run, const GroundFace& runFace,
                                         const Eigen::MatrixXd& measured, const CorrectionOptions& o,
@@ -254,12 +265,11 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   for (Axis a : kAxes) {
     const int i = static_cast<int>(a);
     c.identifiedErrorSize[i] = largestOverRange(c.identifiedError[a], a, range.min, range.max);
-    Polynomial change = c.axes[a];
-    for (size_t k = 0; k < change.a.size(); ++k) change.a[k] -= run[a].a[k];
-    c.axisChangeSize[i] = largestOverRange(change, a, range.min, range.max);
     // The degree-0 column of the axis: µm of face per mm or rad, to per µm or per µrad.
     c.facePerAxisError[i] = S.normal.col(i).cwiseAbs().maxCoeff() / displayFactor(a);
   }
+  c.axisChangeSize = axisChangeOver(c.axes, run, range);
+  c.axisChangeOverFace = c.axisChangeSize;
   c.resolutionFloor = resolutionFloor(S.normal, o.resolution);
   // The data the identified error explains, linearised at it: the misfit left plus what it makes.
   // Joined with the pass history: what every face shows (machine_error.h).

@@ -27,6 +27,9 @@ constexpr const char* kIdentified[] = {"correction.identifiedError.X", "correcti
                                        "correction.identifiedError.B"};
 constexpr const char* kChange[] = {"correction.axisChange.X", "correction.axisChange.Y", "correction.axisChange.Z",
                                    "correction.axisChange.A", "correction.axisChange.B"};
+constexpr const char* kChangeOverFace[] = {"correction.axisChangeOverFace.X", "correction.axisChangeOverFace.Y",
+                                           "correction.axisChangeOverFace.Z", "correction.axisChangeOverFace.A",
+                                           "correction.axisChangeOverFace.B"};
 constexpr const char* kUncertainty[] = {"correction.uncertainty.X", "correction.uncertainty.Y",
                                         "correction.uncertainty.Z", "correction.uncertainty.A",
                                         "correction.uncertainty.B"};
@@ -600,6 +603,8 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
             c.identifiedErrorSize);
     perAxis(kChange, "µm", "µrad", "the change proposed for the axis, correction.axes minus the axes run: largest over the motion range the face measured spans (a grid's: motion.min to motion.max; measured points may span less than the axes run), signed",
             c.axisChangeSize);
+    perAxis(kChangeOverFace, "µm", "µrad", "the change proposed for the axis over the motion range the program runs (the grid's: motion.min to motion.max), signed: correction.axisChange where the face was measured on the grid; at measured points that span less, the change the program makes beyond them too, where no probe saw the face",
+            c.axisChangeOverFace);
     perAxis(kUncertainty, "µm", "µrad", "standard uncertainty of the identified error and the change from the probe noise, over every direction the face shows, largest over the motion range the face measured spans (a grid's: motion.min to motion.max; measured points may span less than the axes run): correction.precision.changePerNoise times correction.probeNoise",
             c.uncertainty);
     perAxis(kFacePerError, "µm per µm", "µm per µrad", "precision demand: face deviation per unit of a constant error of the axis, largest over the grid",

@@ -96,6 +96,8 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
                                    job.correction);
     if (!c) return c.error();
     e.correction = std::move(c).value();
+    // The program runs over the grid's motion range, which the points may not span.
+    e.correction->axisChangeOverFace = axisChangeOver(e.correction->axes, job.runAxes, motionRange(e.groundFace));
   }
   inspectEvaluation(e);
   gearEvaluation(e);

@@ -112,6 +112,22 @@ test('a points CSV is previewed, corrected as points, and the maps show the grid
   assert.equal(after.sseBefore, s.sseBefore, 'the correction shown is the one before');
   assert.match(after.title, /^Measured at 2000 points/);
   await page.locator('#measured-section .pair > div:first-child').screenshot({ path: path.join(shots, 'points-import-refused.png') });
+
+  // Points over the middle third of the face along x span less motion than the program runs: the
+  // change table says what the program changes over the whole face, beside the points' figure.
+  const xs = lines.slice(1).map((l) => Number(l.split(',')[1]));
+  const [x0, x1] = [Math.min(...xs), Math.max(...xs)];
+  const middle = [lines[0], ...pointsCsv.trim().split('\n').slice(1).filter((l) => {
+    const x = Number(l.split(',')[1]);
+    return x > x0 + (x1 - x0) / 3 && x < x1 - (x1 - x0) / 3;
+  })];
+  await afterResult(page, () => page.setInputFiles('#measured-file', file('middle-third.csv', middle.join('\n'))));
+  assert.match((await state(page)).title, new RegExp(`^Measured at ${middle.length - 1} points`));
+  const beyond = await page.$$eval('#identified-error [data-col="change-over-face"]', (cells) => cells.map((c) => c.textContent));
+  assert.ok(beyond.length > 0, 'some axis changes more beyond the points');
+  for (const b of beyond) assert.match(b, /^ \([+−-]?[\d.]+(e[+−-]?\d+)? µ(m|rad) over the whole face, beyond the probe points\)$/);
+  await page.evaluate(() => { for (const d of document.querySelectorAll('details')) if (d.contains(document.querySelector('#identified-error'))) d.open = true; });
+  await page.locator('#identified-error').screenshot({ path: path.join(shots, 'points-change-over-face.png') });
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

@@ -25,7 +25,7 @@ test('per axis: the error read on its own only where the face tells it apart, un
     axisChange: { X: -1.5, Y: 2, Z: 3.2, A: -12, B: -3 },
   };
   const rows = errorRows(c, AXES, unitOf);
-  assert.deepEqual(rows[2], { axis: 'Z', reading: 'alone', error: -3.01, errorUnit: 'µm', uncertainty: 0.06, change: 3.2, changeUnit: 'µm' });
+  assert.deepEqual(rows[2], { axis: 'Z', reading: 'alone', error: -3.01, errorUnit: 'µm', uncertainty: 0.06, change: 3.2, changeUnit: 'µm', changeOverFace: null });
   assert.equal(rows[0].error, null, 'X is not read on its own: its share of a combination is not shown as its error');
   assert.equal(rows[0].uncertainty, null);
   assert.equal(rows[0].change, -1.5, 'the change proposed is shown for every axis');
@@ -35,6 +35,19 @@ test('per axis: the error read on its own only where the face tells it apart, un
   assert.deepEqual(errorRows({ sseAfter: 1 }, AXES, unitOf), [], 'no rows without the fields');
   assert.deepEqual(errorRows({ identifiedError: { X: 1 }, axisChange: { X: 1 } }, ['X'], unitOf)[0].error, null,
     'a result without identifiedAxes reads no axis on its own');
+});
+
+test('the change over the whole face where measured points span less: given where it says more, not where it agrees', () => {
+  const c = {
+    identifiedAxes: { X: 'together', A: 'together', B: 'alone' },
+    axisChange: { X: 5.749, A: -244.3, B: 50.24 },
+    axisChangeOverFace: { X: 16.5, A: -244.30001, B: NaN },
+  };
+  const rows = errorRows(c, ['X', 'A', 'B'], unitOf);
+  assert.equal(rows[0].changeOverFace, 16.5, 'the program changes X by more beyond the points');
+  assert.equal(rows[1].changeOverFace, null, 'the same figure is not said twice');
+  assert.equal(rows[2].changeOverFace, null, 'NaN never reaches the table');
+  assert.equal(errorRows({ axisChange: { X: 1 } }, ['X'], unitOf)[0].changeOverFace, null, 'an older result without it');
 });
 
 test('the combinations in words: the sentences as given, nothing else', () => {

@@ -19,7 +19,16 @@ export const READING_WORDS = {
   locked: 'locked',
 };
 
-// Rows {axis, reading, error, errorUnit, uncertainty, change, changeUnit} for the axes the result
+// The change over the motion range the program runs (correction.axisChangeOverFace) where it
+// says more than correction.axisChange (over the range the face measured spans): measured points
+// that span less than the grid; null where the two agree to 1 part in 1000, or it is not given.
+function overFace(c, axis) {
+  const whole = pick(c.axisChangeOverFace, axis), change = pick(c.axisChange, axis);
+  if (whole === null || change === null) return null;
+  return Math.abs(whole - change) > 1e-3 * Math.max(Math.abs(whole), Math.abs(change)) ? whole : null;
+}
+
+// Rows {axis, reading, error, errorUnit, uncertainty, change, changeUnit, changeOverFace} for the axes the result
 // names. error and uncertainty are the value read on its own (correction.identifiedAlone): null
 // unless the face tells that axis from the others. A result without identifiedAxes (an older one)
 // has no value read on its own.
@@ -35,6 +44,7 @@ export function errorRows(c, axes, unitOf) {
       uncertainty: alone ? pick(c.identifiedAloneUncertainty, axis) : null,
       change: pick(c.axisChange, axis),
       changeUnit: unitOf(`correction.axisChange.${axis}`),
+      changeOverFace: overFace(c, axis),
     };
   });
 }

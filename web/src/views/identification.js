@@ -24,7 +24,8 @@ function renderErrors(c) {
     <td class="num" data-col="uncertainty">${r.uncertainty === null ? '—' : `± ${fmt(r.uncertainty, 3)} ${escapeHtml(r.errorUnit)}`}</td>`
       : `<td colspan="2" class="reading" data-col="reading">${escapeHtml(READING_WORDS[r.reading] || 'not read on its own')}</td>`;
     return `<tr data-axis="${r.axis}" data-reading="${escapeHtml(r.reading || '')}"><th>${r.axis}</th>${read}
-    <td class="num" data-col="change">${withUnit(r.change, r.changeUnit)}</td></tr>`;
+    <td class="num" data-col="change">${withUnit(r.change, r.changeUnit)}${r.changeOverFace === null ? ''
+      : `<span class="beyond" data-col="change-over-face"> (${withUnit(r.changeOverFace, r.changeUnit)} over the whole face, beyond the probe points)</span>`}</td></tr>`;
   }).join('');
   const words = combinationSentences(c);
   $('#identified-words').hidden = !words.length;
