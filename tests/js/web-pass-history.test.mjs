@@ -113,6 +113,24 @@ test('figures: measured, predicted next (the rms with its bound) and simulated, 
   assert.equal(resultFigures({ topography, correction: { ...correction, stop: true } }).stop, true);
 });
 
+test('a sum of squares predicted over other values than the measurement is not compared; the rms is', () => {
+  const grid = Array.from({ length: 5 }, () => Array(9).fill(0.1));
+  const points = Array.from({ length: 2000 }, () => [30, 0, 0.1]);
+  const onGrid = resultFigures({ topography, correction: { ...correction, rmsBefore: 9, predictedRms: 0.2, residual: grid } });
+  const atPoints = resultFigures({ topography, correction: { ...correction, rmsBefore: 0.3, residual: grid, pointMeasured: points } });
+  assert.equal(onGrid.points, 45);
+  assert.equal(atPoints.points, 2000, 'the points, not the grid the maps show');
+  const rows = historyRows([onGrid], atPoints);
+  assert.equal(rows[1].predicted.sse, null, 'predicted over the 45 grid values, measured over 2000 points');
+  assert.equal(rows[1].predicted.rms, 0.2, 'the rms is compared');
+  assert.equal(rows[1].note, 'sum of squares predicted over 45 values, measured over 2000: not compared');
+  assert.equal(historySeries(rows).sse.predicted.x.includes(2), false, 'nor drawn');
+  // The same grid twice: compared, no note.
+  const again = historyRows([onGrid], onGrid);
+  assert.equal(again[1].predicted.sse, onGrid.next.sse);
+  assert.equal(again[1].note, '');
+});
+
 test('stop: the face measured is within the probe noise; no next pass is predicted or offered, and the row says why', () => {
   const stopped = { ...correction, stop: true, probeNoise: 0.5, rmsBefore: 0.11, predictedRms: 0, predictedRmsHigh: 0.29 };
   const state = computed({ measured: [[0.1]] }, { axes: nominal, topography, correction: stopped });

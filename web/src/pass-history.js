@@ -10,7 +10,8 @@
 // "before"; the prediction for a pass is what the previous pass's correction predicted (its
 // "after"; for the rms, correction.predictedRms with its bound correction.predictedRmsHigh), and
 // for the first pass the face simulated for its axes, with no machine error known, at the
-// measurement's points and its thickness read as the measurement's is. Beside them,
+// measurement's points and its thickness read as the measurement's is. A predicted sum of squares
+// over another number of values than the measurement's is left out (the note says so). Beside them,
 // per pass, the probe noise its correction assumed (correction.probeNoise, sigma, µm rms): what
 // noise alone measures. The stop (correction.stop) takes the same chi-square test as the
 // identification's status, up to 3 of its standard deviations above n sigma² (1.28 sigma in rms
@@ -36,7 +37,23 @@ export function resultFigures(result) {
     simulated: c ? figures(c.rmsSimulated, c.sseSimulated, c.maxSimulated, c.thicknessSimulated) : figures(t.rms, t.sse, t.max, t.thickness),
     sigma: c ? finiteOr(c.probeNoise) : null,
     stop: Boolean(c) && c.stop === true,
+    points: c ? pointCount(c) : null,
   };
+}
+
+// How many values the correction's figures are over: the measured points, or the grid's nodes.
+function pointCount(c) {
+  if (Array.isArray(c.pointMeasured)) return c.pointMeasured.length;
+  if (Array.isArray(c.residual) && Array.isArray(c.residual[0])) return c.residual.length * c.residual[0].length;
+  return null;
+}
+
+// A sum of squares grows with the number of values: a prediction over another set of points than
+// the measurement's (a pass measured on the grid, the next at points) is not compared (the rms is).
+function comparable(predicted, from, measuredOver) {
+  if (!predicted || !from || from.points === null || measuredOver === null || from.points === measuredOver) return { predicted, note: '' };
+  return { predicted: { ...predicted, sse: null },
+    note: `sum of squares predicted over ${from.points} values, measured over ${measuredOver}: not compared` };
 }
 
 // Whether the result on screen is of the inputs now (not one for older inputs, still shown).
@@ -81,18 +98,21 @@ export function historyRows(kept, current) {
   const rows = [];
   let previous = null;  // the figures of the pass before
   const predictionFor = (k) => (k === 0 ? null : previous && previous.next);
+  const join = (...notes) => notes.filter(Boolean).join('; ');
   kept.forEach((f, k) => {
     const ok = f && !f.error ? f : null;
     const note = f === null ? 'computing…' : f.error ? f.error : ok.stop ? WITHIN_NOISE : '';
+    const p = k === 0 ? { predicted: ok && ok.simulated, note: '' } : comparable(predictionFor(k), previous, ok ? ok.points : null);
     rows.push({ pass: k + 1, label: `${k + 1}`, measured: ok && ok.measured,
-      predicted: k === 0 ? ok && ok.simulated : predictionFor(k), sigma: ok ? ok.sigma : null, note });
+      predicted: p.predicted, sigma: ok ? ok.sigma : null, note: join(note, p.note) });
     previous = ok;
   });
   const k = kept.length;
   if (current) {
     const note = !current.measured ? 'not measured yet' : current.stop ? WITHIN_NOISE : '';
+    const p = k === 0 ? { predicted: current.simulated, note: '' } : comparable(predictionFor(k), previous, current.measured ? current.points : null);
     rows.push({ pass: k + 1, label: `${k + 1} (under way)`, measured: current.measured,
-      predicted: k === 0 ? current.simulated : predictionFor(k), sigma: current.sigma, note });
+      predicted: p.predicted, sigma: current.sigma, note: join(note, p.note) });
     if (current.next && !current.stop) {
       rows.push({ pass: k + 2, label: `${k + 2} (next, predicted)`, measured: null, predicted: current.next, sigma: current.sigma, note: '' });
     }
