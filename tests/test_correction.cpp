@@ -1,6 +1,7 @@
 // Eq. 17: one correction step by truncated SVD, then re-simulation.
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <map>
 
 #include "correction.h"
@@ -26,6 +27,23 @@ AxisPolynomials withError(AxisPolynomials commanded, const AxisPolynomials& nomi
   for (Axis a : kAxes)
     for (size_t k = 0; k < commanded[a].a.size(); ++k) commanded[a].a[k] += err[a].a[k] - nominal[a].a[k];
   return commanded;
+}
+
+// Tab. 1's case on a 6 x 8 grid, which has no node at its centre.
+SharpeningJob evenGridJob() {
+  CaseInput even = paperCase();
+  even.grid.radial = 6;
+  even.grid.axial = 8;
+  return jobOf(even);
+}
+
+// Probe points at shares of the grid's radial span and of its axial half-length.
+ProbePoints probesAt(const SharpeningJob& job, std::initializer_list<double> radial, std::initializer_list<double> axial) {
+  ProbePoints probes;
+  for (double r : radial)
+    for (double x : axial)
+      probes.push_back({job.grid.r.front() + r * (job.grid.r.back() - job.grid.r.front()), x * job.grid.x.back()});
+  return probes;
 }
 
 TEST(Correction, OneStepCancelsAnErrorInTheSpanOfTheCoefficients) {
@@ -55,17 +73,11 @@ TEST(Correction, OneStepCancelsAnErrorInTheSpanOfTheCoefficients) {
 // nearest the mean point at probe points). Before, the row was the mean point's own sensitivity,
 // which on these faces the datum's reading misses by a share of the column.
 TEST(Correction, TheThicknessRowReadsTheFaceAsTheDatumDoes) {
-  CaseInput even = paperCase();
-  even.grid.radial = 6;
-  even.grid.axial = 8;
-  const SharpeningJob job = jobOf(even);
+  const SharpeningJob job = evenGridJob();
   const AxisPolynomials& nominal = job.nominalAxes;
   const AxisPolynomials error = machineError(nominal);
   const GroundFace onGrid = groundFaceOf(job, nominal);
-  ProbePoints probes;
-  for (double r : {0.3, 0.55, 0.8})
-    for (double x : {-0.7, -0.2, 0.35, 0.9})
-      probes.push_back({job.grid.r.front() + r * (job.grid.r.back() - job.grid.r.front()), x * job.grid.x.back()});
+  const ProbePoints probes = probesAt(job, {0.3, 0.55, 0.8}, {-0.7, -0.2, 0.35, 0.9});
   const GroundFace atProbes = simulateGroundFace(job.setup, nominal, probes, job.grid).value();
   for (const GroundFace* run : {&onGrid, &atProbes}) {
     SCOPED_TRACE(run->atProbes() ? "probe points" : "6 x 8 grid");
@@ -89,17 +101,11 @@ TEST(Correction, TheThicknessRowReadsTheFaceAsTheDatumDoes) {
 // every figure, on a grid with no node at its centre and at probe points, where the simulated
 // face's own thickness at the mean point (topography.thickness) differs from that reading.
 TEST(Correction, TheFirstPassIsPredictedAsItIsMeasured) {
-  CaseInput even = paperCase();
-  even.grid.radial = 6;
-  even.grid.axial = 8;
-  const SharpeningJob job = jobOf(even);
+  const SharpeningJob job = evenGridJob();
   const AxisPolynomials& nominal = job.nominalAxes;
   const AxisPolynomials run = machineError(nominal);  // axes off the nominal ones, on a perfect machine
   const Topography exact = topographyFor(job, run);
-  ProbePoints probes;
-  for (double r : {0.1, 0.3, 0.55, 0.8, 0.95})
-    for (double x : {-0.7, -0.2, 0.15, 0.35, 0.6, 0.9})
-      probes.push_back({job.grid.r.front() + r * (job.grid.r.back() - job.grid.r.front()), x * job.grid.x.back()});
+  const ProbePoints probes = probesAt(job, {0.1, 0.3, 0.55, 0.8, 0.95}, {-0.7, -0.2, 0.15, 0.35, 0.6, 0.9});
   const GroundFace atProbes = simulateGroundFace(job.setup, run, probes, job.grid).value();
   const Eigen::VectorXd atProbesMeasured = topographyOf(atProbes).normal.col(0);
   auto onGrid = correctMeasuredFace(job.setup, nominal, run, groundFaceOf(job, run), exact.normal, CorrectionOptions{});
