@@ -126,6 +126,21 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   for (const std::string& f : wheelOnly) EXPECT_EQ(writtenWithPoints.count(f), 0u) << f << " with points";
   writtenWithPoints.insert(wheelOnly.begin(), wheelOnly.end());
   EXPECT_EQ(writtenWithPoints, written);
+  // Axes run that alone grind no face the wheel envelops (A a0 one radian off): the correction is
+  // linearised at the nominal axes, and the face the run grinds is not given (correction.*Simulated
+  // would be the nominal axes' face).
+  CaseInput lost = paperCase();
+  lost.measured = measuredCase().measured;
+  lost.axes = test::jobOf(lost).nominalAxes;
+  (*lost.axes)[Axis::A].a[0] += 1.0;
+  const Json linearised = Json::parse(resultJson(evaluated(lost)));
+  ASSERT_TRUE(linearised["correction"]["linearisedAtNominal"].get<bool>());
+  const std::set<std::string> runFaceOnly = {"correction.rmsSimulated", "correction.sseSimulated", "correction.maxSimulated",
+                                             "correction.thicknessSimulated"};
+  for (const std::string& f : runFaceOnly) {
+    EXPECT_EQ(written.count(f), 1u) << f;
+    EXPECT_FALSE(linearised["correction"].contains(f.substr(f.find('.') + 1))) << f << " linearised at the nominal axes";
+  }
   // Without a measured topography there is no correction, without a wheel offset no wheelOffset.
   const Json nominal = Json::parse(resultJson(evaluated(paperCase())));
   EXPECT_FALSE(nominal.contains("correction"));

@@ -32,7 +32,8 @@ struct Correction {
   Topography after;                      // the predicted face after the pass
   // The face the axes run grind with no machine error, at the measurement's points and read as
   // `before` is (its thickness as topography.h reads a measurement): the pass history's prediction
-  // for a first pass. correctMeasuredFace fills it.
+  // for a first pass. correctMeasuredFace fills it, except where the axes run alone cannot be
+  // simulated (linearisedAtNominal).
   Topography simulated;
   Eigen::VectorXd singularValues;        // of the scaled matrix, largest first
   int rank = 0;                          // directions used in the step

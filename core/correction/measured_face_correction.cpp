@@ -231,7 +231,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   auto after = predictedFace(grinding, runFace, c.axes, c.identifiedError, unexplained, at, !dressed);
   if (!after) return after.error();
   c.after = *after;
-  c.simulated = topographyFromNormal(runFace, normalOf(runFace));
+  if (!linearisedAt) c.simulated = topographyFromNormal(runFace, normalOf(runFace));  // else the nominal axes' face
   // Within the noise: the measured sum of squares is what the probe's noise alone gives
   // (noiseCeiling). Then the verdict says to stop, and the axes run are kept: a change would only
   // move noise.

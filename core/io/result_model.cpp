@@ -19,6 +19,7 @@ using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::Ro
 
 constexpr const char* kHelicalOnly = "helical gash only";
 constexpr const char* kWithMeasured = "only with `measured`";
+constexpr const char* kWithSimulatedRun = "only with `measured`, where the axes run grind a face the wheel envelops (not correction.linearisedAtNominal)";
 constexpr const char* kCoefficientUnit = "mm or rad per (rad or mm)^k";
 constexpr const char* kMotionUnit = "rad or mm";
 // The per-axis fields of the correction, as {X, Y, Z, A, B} objects.
@@ -603,7 +604,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
             c.identifiedErrorSize);
     perAxis(kChange, "µm", "µrad", "the change proposed for the axis, correction.axes minus the axes run: largest over the motion range the face measured spans (a grid's: motion.min to motion.max; measured points may span less than the axes run), signed",
             c.axisChangeSize);
-    perAxis(kChangeOverFace, "µm", "µrad", "the change proposed for the axis over the motion range the program runs (the grid's: motion.min to motion.max), signed: correction.axisChange where the face was measured on the grid; at measured points that span less, the change the program makes beyond them too, where no probe saw the face",
+    perAxis(kChangeOverFace, "µm", "µrad", "the change proposed for the axis over the motion range the program runs (the grid's: motion.min to motion.max), signed: correction.axisChange where the face was measured on the grid, and where the grid's figure is not larger by more than half the axis's resolution step; at measured points that span less, the change the program makes beyond them, where no probe saw the face",
             c.axisChangeOverFace);
     perAxis(kUncertainty, "µm", "µrad", "standard uncertainty of the identified error and the change from the probe noise, over every direction the face shows, largest over the motion range the face measured spans (a grid's: motion.min to motion.max; measured points may span less than the axes run): correction.precision.changePerNoise times correction.probeNoise",
             c.uncertainty);
@@ -669,11 +670,14 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     v.number({"correction.thicknessBefore", "µm", "thickness error at the mean point, measured", kWithMeasured, "thickness error"},
              c.before.thickness);
     v.number({"correction.thicknessAfter", "µm", "thickness error after the pass on the identified machine", kWithMeasured, "thickness error"}, c.after.thickness);
-    // The pass history's first prediction, read as the measurement is (correction.h).
-    v.number({"correction.rmsSimulated", "µm", "root mean square of the face the axes run grind with no machine error, at the measured points and read as the measurement is", kWithMeasured, "rms"}, c.simulated.rms);
-    v.number({"correction.sseSimulated", "µm²", "sum of squares of the face the axes run grind with no machine error, at the measured points and read as the measurement is", kWithMeasured, "sum of squares"}, c.simulated.sse);
-    v.number({"correction.maxSimulated", "µm", "largest absolute deviation of the face the axes run grind with no machine error, at the measured points and read as the measurement is", kWithMeasured, "largest |deviation|"}, c.simulated.max);
-    v.number({"correction.thicknessSimulated", "µm", "thickness error of the face the axes run grind with no machine error, at the measured points and read as the measurement is (interpolated at the grid's centre, or at the probe nearest the mean point, as correction.thicknessBefore; topography.thickness is the simulated face's own value at the mean point)", kWithMeasured, "thickness error"}, c.simulated.thickness);
+    // The pass history's first prediction, read as the measurement is (correction.h); not where the
+    // axes run alone grind no face the wheel envelops (the face it was taken from is the nominal axes').
+    if (!c.linearisedAtNominal || every) {
+      v.number({"correction.rmsSimulated", "µm", "root mean square of the face the axes run grind with no machine error, at the measured points and read as the measurement is", kWithSimulatedRun, "rms"}, c.simulated.rms);
+      v.number({"correction.sseSimulated", "µm²", "sum of squares of the face the axes run grind with no machine error, at the measured points and read as the measurement is", kWithSimulatedRun, "sum of squares"}, c.simulated.sse);
+      v.number({"correction.maxSimulated", "µm", "largest absolute deviation of the face the axes run grind with no machine error, at the measured points and read as the measurement is", kWithSimulatedRun, "largest |deviation|"}, c.simulated.max);
+      v.number({"correction.thicknessSimulated", "µm", "thickness error of the face the axes run grind with no machine error, at the measured points and read as the measurement is (interpolated at the grid's centre, or at the probe nearest the mean point, as correction.thicknessBefore; topography.thickness is the simulated face's own value at the mean point)", kWithSimulatedRun, "thickness error"}, c.simulated.thickness);
+    }
     v.number({"correction.sseRounded", "µm²", "sum of squares with correction.roundedAxes on the identified machine (re-simulated)", kWithMeasured, "sum of squares"},
              c.afterRounded.sse);
     v.number({"correction.maxRounded", "µm", "largest absolute deviation with correction.roundedAxes on the identified machine", kWithMeasured, "largest |deviation|"},

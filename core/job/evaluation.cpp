@@ -96,8 +96,16 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
                                    job.correction);
     if (!c) return c.error();
     e.correction = std::move(c).value();
-    // The program runs over the grid's motion range, which the points may not span.
-    e.correction->axisChangeOverFace = axisChangeOver(e.correction->axes, job.runAxes, motionRange(e.groundFace));
+    // The program runs over the grid's motion range, which the points may not span: the change
+    // over it where it is larger than over the points by more than half a machine step (less is
+    // no move the machine makes; and points beyond the grid keep their own figure).
+    Correction& p = *e.correction;
+    const auto overGrid = axisChangeOver(p.axes, job.runAxes, motionRange(e.groundFace));
+    for (Axis a : kAxes) {
+      const int i = static_cast<int>(a);
+      const double halfStep = 0.5 * job.correction.resolution.inAxisUnit(a) * displayFactor(a);
+      p.axisChangeOverFace[i] = std::abs(overGrid[i]) > std::abs(p.axisChangeSize[i]) + halfStep ? overGrid[i] : p.axisChangeSize[i];
+    }
   }
   inspectEvaluation(e);
   gearEvaluation(e);

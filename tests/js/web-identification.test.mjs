@@ -40,13 +40,15 @@ test('per axis: the error read on its own only where the face tells it apart, un
 test('the change over the whole face where measured points span less: given where it says more, not where it agrees', () => {
   const c = {
     identifiedAxes: { X: 'together', A: 'together', B: 'alone' },
-    axisChange: { X: 5.749, A: -244.3, B: 50.24 },
-    axisChangeOverFace: { X: 16.5, A: -244.30001, B: NaN },
+    axisChange: { X: 5.749, A: -244.3, B: 50.24, Y: 3, Z: 1 },
+    axisChangeOverFace: { X: 16.5, A: -244.30001, B: NaN, Y: -5, Z: 0.9 },
   };
-  const rows = errorRows(c, ['X', 'A', 'B'], unitOf);
+  const rows = errorRows(c, ['X', 'A', 'B', 'Y', 'Z'], unitOf);
   assert.equal(rows[0].changeOverFace, 16.5, 'the program changes X by more beyond the points');
   assert.equal(rows[1].changeOverFace, null, 'the same figure is not said twice');
   assert.equal(rows[2].changeOverFace, null, 'NaN never reaches the table');
+  assert.equal(rows[3].changeOverFace, -5, 'larger with the other sign');
+  assert.equal(rows[4].changeOverFace, null, 'never a smaller figure as "over the whole face"');
   assert.equal(errorRows({ axisChange: { X: 1 } }, ['X'], unitOf)[0].changeOverFace, null, 'an older result without it');
 });
 

@@ -113,6 +113,14 @@ test('figures: measured, predicted next (the rms with its bound) and simulated, 
   assert.equal(resultFigures({ topography, correction: { ...correction, stop: true } }).stop, true);
 });
 
+test('a first pass whose axes alone grind no face the wheel envelops is not predicted, and says why', () => {
+  const lost = resultFigures({ topography, correction: { ...correction, rmsBefore: 40, linearisedAtNominal: true } });
+  const rows = historyRows([], lost);
+  assert.equal(rows[0].predicted, null, 'not the nominal axes\' face as the run\'s');
+  assert.equal(rows[0].note, 'the axes run alone grind no face the wheel envelops: not predicted');
+  assert.equal(historyRows([lost], lost)[0].note, 'the axes run alone grind no face the wheel envelops: not predicted');
+});
+
 test('a sum of squares predicted over other values than the measurement is not compared; the rms is', () => {
   const grid = Array.from({ length: 5 }, () => Array(9).fill(0.1));
   const points = Array.from({ length: 2000 }, () => [30, 0, 0.1]);

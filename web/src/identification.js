@@ -21,11 +21,12 @@ export const READING_WORDS = {
 
 // The change over the motion range the program runs (correction.axisChangeOverFace) where it
 // says more than correction.axisChange (over the range the face measured spans): measured points
-// that span less than the grid; null where the two agree to 1 part in 1000, or it is not given.
+// that span less than the grid (the module gives axisChange itself unless the program's is larger
+// by more than half a machine step); null where it is not larger by 1 part in 1000, or not given.
 function overFace(c, axis) {
   const whole = pick(c.axisChangeOverFace, axis), change = pick(c.axisChange, axis);
   if (whole === null || change === null) return null;
-  return Math.abs(whole - change) > 1e-3 * Math.max(Math.abs(whole), Math.abs(change)) ? whole : null;
+  return Math.abs(whole) - Math.abs(change) > 1e-3 * Math.abs(whole) ? whole : null;
 }
 
 // Rows {axis, reading, error, errorUnit, uncertainty, change, changeUnit, changeOverFace} for the axes the result

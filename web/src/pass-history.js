@@ -35,6 +35,7 @@ export function resultFigures(result) {
     measured: c ? figures(c.rmsBefore, c.sseBefore, c.maxBefore, c.thicknessBefore) : null,
     next: c ? { ...figures(c.predictedRms, c.sseAfter, c.maxAfter, c.thicknessAfter), rmsHigh: finiteOr(c.predictedRmsHigh) } : null,
     simulated: c ? figures(c.rmsSimulated, c.sseSimulated, c.maxSimulated, c.thicknessSimulated) : figures(t.rms, t.sse, t.max, t.thickness),
+    unsimulated: Boolean(c) && c.linearisedAtNominal === true,
     sigma: c ? finiteOr(c.probeNoise) : null,
     stop: Boolean(c) && c.stop === true,
     points: c ? pointCount(c) : null,
@@ -88,6 +89,12 @@ export function passCase(state, pass) {
 }
 
 const WITHIN_NOISE = 'within the probe noise: stop';
+// A first pass whose axes alone grind no face the wheel envelops (correction.linearisedAtNominal):
+// nothing to predict it by.
+const UNSIMULATED = 'the axes run alone grind no face the wheel envelops: not predicted';
+
+// A first pass's prediction: the face simulated for its axes, or why there is none.
+const first = (f) => (f && f.unsimulated ? { predicted: null, note: UNSIMULATED } : { predicted: f && f.simulated, note: '' });
 
 // The rows of the history table and plot. kept: per kept pass, its figures (resultFigures of its
 // passCase), or {error} (the message), or null while computed; current: resultFigures of the
@@ -102,7 +109,7 @@ export function historyRows(kept, current) {
   kept.forEach((f, k) => {
     const ok = f && !f.error ? f : null;
     const note = f === null ? 'computing…' : f.error ? f.error : ok.stop ? WITHIN_NOISE : '';
-    const p = k === 0 ? { predicted: ok && ok.simulated, note: '' } : comparable(predictionFor(k), previous, ok ? ok.points : null);
+    const p = k === 0 ? first(ok) : comparable(predictionFor(k), previous, ok ? ok.points : null);
     rows.push({ pass: k + 1, label: `${k + 1}`, measured: ok && ok.measured,
       predicted: p.predicted, sigma: ok ? ok.sigma : null, note: join(note, p.note) });
     previous = ok;
@@ -110,7 +117,7 @@ export function historyRows(kept, current) {
   const k = kept.length;
   if (current) {
     const note = !current.measured ? 'not measured yet' : current.stop ? WITHIN_NOISE : '';
-    const p = k === 0 ? { predicted: current.simulated, note: '' } : comparable(predictionFor(k), previous, current.measured ? current.points : null);
+    const p = k === 0 ? first(current) : comparable(predictionFor(k), previous, current.measured ? current.points : null);
     rows.push({ pass: k + 1, label: `${k + 1} (under way)`, measured: current.measured,
       predicted: p.predicted, sigma: current.sigma, note: join(note, p.note) });
     if (current.next && !current.stop) {
