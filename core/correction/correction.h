@@ -121,6 +121,11 @@ struct Correction {
   bool atProbes() const { return !probes.empty(); }
 };
 
+// Per axis, X Y Z A B, the change proposed - run of largest magnitude over the motion range
+// [range.min, range.max], signed: µm (X, Y, Z) or µrad (A, B).
+std::array<double, kAxisCount> axisChangeOver(const AxisPolynomials& proposed, const AxisPolynomials& run,
+                                              const MotionRange& range);
+
 // The paper's single linear step (Eq. 17), with the linear prediction in `after`.
 Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials& runAxes,
                                    const Eigen::MatrixXd& measured, const CorrectionOptions& options);
@@ -137,11 +142,6 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
 // simulated); `identified`, when given with it, is the error identified from those axes. `history`,
 // when given, is the earlier passes the error is identified together with (machine_error.h); an
 // empty one is none, though its wheelCorrected still says whether a pass dressed the wheel.
-// Per axis, X Y Z A B, the change proposed - run of largest magnitude over the motion range
-// [range.min, range.max], signed: µm (X, Y, Z) or µrad (A, B).
-std::array<double, kAxisCount> axisChangeOver(const AxisPolynomials& proposed, const AxisPolynomials& run,
-                                              const MotionRange& range);
-
 struct MachineErrorEstimate;
 struct PassHistory;
 Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const AxisPolynomials& nominal,
