@@ -16,17 +16,12 @@
 #include "structural_null_space.h"
 #include "number_text.h"
 #include "solve_report.h"
-#include "units.h"
 
 namespace hobsharp {
 namespace {
 
-Eigen::MatrixXd normalOf(const GroundFace& f) {
-  Eigen::MatrixXd n(f.rows(), f.cols());
-  for (int i = 0; i < f.rows(); ++i)
-    for (int j = 0; j < f.cols(); ++j) n(i, j) = kMicrometresPerMm * f.envelope[i * f.cols() + j].t;
-  return n;
-}
+// The face's normal deviations (µm) as a grid, or one column at probe points.
+Eigen::MatrixXd normalOf(const GroundFace& f) { return gridOf(faceNormal(f), f.rows(), f.cols()); }
 
 // True when the two differ by no more than rounding in their last bits: the same face.
 bool sameAxes(const AxisPolynomials& a, const AxisPolynomials& b) {
