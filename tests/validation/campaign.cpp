@@ -49,12 +49,16 @@ bool anyRefused(const ScenarioOutcome& o) {
   return std::any_of(o.passes.begin(), o.passes.end(), [](const PassOutcome& p) { return p.refused; });
 }
 
+bool anyUnground(const ScenarioOutcome& o) {
+  return std::any_of(o.passes.begin(), o.passes.end(), [](const PassOutcome& p) { return p.unground; });
+}
+
 }  // namespace
 
 double finalRms(const ScenarioOutcome& o) {
   double v = o.initialDenseRms;
   for (const PassOutcome& p : o.passes)
-    if (!p.refused) v = p.denseRms;
+    if (p.ground()) v = p.denseRms;
   return v;
 }
 
@@ -78,16 +82,18 @@ Campaign summarise(std::uint64_t seed, std::vector<ScenarioOutcome> outcomes, do
         ++s.unjudged;
         continue;
       }
-      const bool refused = anyRefused(o);
-      if (refused) ++s.refused;
+      if (anyRefused(o)) ++s.refused;
+      if (anyUnground(o)) ++s.unground;
+      // A refused pass, or a proposal not ground in full, misses every target.
+      const bool missed = anyRefused(o) || anyUnground(o);
       const double last = finalRms(o);
       s.finals.push_back(last);
       const PassOutcome* p = lastPass(o);
       bool firstMet = false;  // the class's first target (the face left with the exact axes)
       for (size_t i = 0; i < goals.size(); ++i) {
         ++s.targets[i].of;
-        const double v = goals[i].rounded ? (p && !p->refused ? p->denseRmsRounded : o.initialDenseRms) : last;
-        const bool met = !refused && v <= goals[i].limit;
+        const double v = goals[i].rounded ? (p && p->ground() ? p->denseRmsRounded : o.initialDenseRms) : last;
+        const bool met = !missed && v <= goals[i].limit;
         if (met) ++s.targets[i].met;
         if (i == 0) firstMet = met;
       }
@@ -98,13 +104,13 @@ Campaign summarise(std::uint64_t seed, std::vector<ScenarioOutcome> outcomes, do
         }
         if (!firstMet) {
           ++s.misses;
-          if (p && !p->refused && p->twinMisfit >= 0 && p->twinMisfit <= p->probeNoise &&
+          if (p && p->ground() && p->twinMisfit >= 0 && p->twinMisfit <= p->probeNoise &&
               p->twinGap > 2 * goals[0].limit)
             ++s.twins;
         }
       }
       for (const PassOutcome& q : o.passes) {
-        if (q.refused) continue;
+        if (!q.ground()) continue;
         Target& within = noisy(s.kind) ? inNoisy : inNoiseFree;
         ++within.of;
         if (q.predictedRmsHigh >= 0 && q.probeRms <= q.predictedRmsHigh) ++within.met;
@@ -181,7 +187,7 @@ nlohmann::json toJson(const Campaign& c) {
   j["unit"] = "µm rms of the face left between the probe points (a grid 4 times as dense)";
   for (const ClassSummary& s : c.classes) {
     nlohmann::json k = {{"class", className(s.kind)}, {"title", classTitle(s.kind)}, {"count", s.count},
-                        {"refused", s.refused}, {"unjudged", s.unjudged}, {"median", s.median}, {"p90", s.p90},
+                        {"refused", s.refused}, {"unground", s.unground}, {"unjudged", s.unjudged}, {"median", s.median}, {"p90", s.p90},
                         {"p95", s.p95}, {"worst", s.worst}, {"finals", s.finals}, {"misses", s.misses},
                         {"twins", s.twins}, {"nullPartMisses", s.nullPartMisses}, {"nullPartOf", s.nullPartOf}};
     for (const Target& t : s.targets) k["targets"].push_back(targetJson(t));
@@ -194,7 +200,7 @@ nlohmann::json toJson(const Campaign& c) {
                         {"finalRms", finalRms(o)}, {"seconds", o.seconds}, {"rejectedDraws", o.scenario.rejected}};
     if (!o.message.empty()) s["message"] = o.message;
     for (const PassOutcome& p : o.passes) {
-      nlohmann::json q = {{"refused", p.refused}, {"measuredRms", p.measuredRms}, {"probeRms", p.probeRms},
+      nlohmann::json q = {{"refused", p.refused}, {"unground", p.unground}, {"measuredRms", p.measuredRms}, {"probeRms", p.probeRms},
                           {"denseRms", p.denseRms}, {"denseRmsRounded", p.denseRmsRounded},
                           {"predictedRms", p.predictedRms}, {"predictedRmsHigh", p.predictedRmsHigh}, {"predictedUnseenPart", p.predictedUnseenPart},
                           {"status", p.status}, {"verdict", p.verdict}, {"rank", p.rank},
@@ -216,7 +222,8 @@ std::string tableText(const Campaign& c) {
     << c.seconds << " s\n";
   t << "The face left between the probe points, µm rms:\n";
   for (const ClassSummary& s : c.classes) {
-    t << "\n" << classTitle(s.kind) << " (" << s.count << " scenarios, " << s.refused << " refused";
+    t << "\n" << classTitle(s.kind) << " (" << s.count << " scenarios, " << s.refused << " refused by the calculator, "
+      << s.unground << (s.unground == 1 ? " proposal" : " proposals") << " not ground in full by the machine";
     if (s.unjudged) t << ", " << s.unjudged << " not judged";
     t << ")\n  median " << micrometres(s.median) << ", 90th " << micrometres(s.p90) << ", 95th " << micrometres(s.p95)
       << ", worst " << micrometres(s.worst) << "\n";
@@ -237,16 +244,18 @@ std::string markdownTable(const Campaign& c) {
   std::ostringstream t;
   t << "Seed " << c.seed << ", " << c.count << " scenarios, " << std::fixed << std::setprecision(0) << c.seconds
     << " s. The face left between the probe points (a grid " << kDenseFactor << " times as dense), µm rms.\n\n";
-  t << "| class | scenarios | refused | median | 90th | 95th | worst | target | share (asked) |\n";
-  t << "|---|---|---|---|---|---|---|---|---|\n";
+  t << "| class | scenarios | refused by the calculator | proposal not ground in full | median | 90th | 95th | worst | "
+       "target | share (asked) |\n";
+  t << "|---|---|---|---|---|---|---|---|---|---|\n";
   for (const ClassSummary& s : c.classes)
     for (size_t i = 0; i < s.targets.size(); ++i) {
       const Target& g = s.targets[i];
       if (i == 0)
-        t << "| " << classTitle(s.kind) << " | " << s.count << " | " << s.refused << " | " << micrometres(s.median)
+        t << "| " << classTitle(s.kind) << " | " << s.count << " | " << s.refused << " | " << s.unground << " | "
+          << micrometres(s.median)
           << " | " << micrometres(s.p90) << " | " << micrometres(s.p95) << " | " << micrometres(s.worst) << " | ";
       else
-        t << "| | | | | | | | ";
+        t << "| | | | | | | | | ";
       t << g.what << " | " << (g.holds() ? "" : "**") << percent(g.share()) << (g.holds() ? "" : "**") << " ("
         << percent(g.required) << ") |\n";
     }

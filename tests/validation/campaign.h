@@ -24,9 +24,11 @@ struct Target {
 
 struct ClassSummary {
   ScenarioClass kind = ScenarioClass::Medium;
-  int count = 0, refused = 0, unjudged = 0;
+  // refused: scenarios with a pass the calculator refused; unground: with a proposal the machine,
+  // with its true error, does not grind in full (run_scenario.h). Either misses every target.
+  int count = 0, refused = 0, unground = 0, unjudged = 0;
   // The face after the last pass, between the probe points, µm rms: over the judged scenarios
-  // (a refused one counts as the face before the pass).
+  // (one refused or not ground in full counts as the face before that pass).
   double median = 0, p90 = 0, p95 = 0, worst = 0;
   std::vector<double> finals;  // sorted, for the empirical distribution
   std::vector<Target> targets;
@@ -52,8 +54,8 @@ struct Campaign {
 
 Campaign summarise(std::uint64_t seed, std::vector<ScenarioOutcome> outcomes, double seconds);
 
-// The face after the last pass between the probe points, µm rms (the face before the first pass
-// when a pass was refused).
+// The face after the last pass between the probe points, µm rms (the face before a pass that was
+// refused or whose proposal was not ground in full).
 double finalRms(const ScenarioOutcome& o);
 
 nlohmann::json toJson(const Campaign& c);

@@ -116,9 +116,15 @@ ScenarioOutcome runScenario(const Scenario& s) {
     }
     out.initialDenseRms = *r;
   }
-  // A pass the calculator refuses, or whose proposal cannot be judged, ends the scenario.
+  // A pass the calculator refuses ends the scenario ...
   const auto refused = [&out](PassOutcome& p, std::string why) {
     p.refused = true;
+    p.message = std::move(why);
+    out.passes.push_back(p);
+  };
+  // ... or whose proposal the machine does not grind in full.
+  const auto unground = [&out](PassOutcome& p, std::string why) {
+    p.unground = true;
     p.message = std::move(why);
     out.passes.push_back(p);
   };
@@ -126,7 +132,7 @@ ScenarioOutcome runScenario(const Scenario& s) {
     PassOutcome p;
     auto machine = machineJob(s, recorded);
     if (!machine) {
-      refused(p, "the machine's wheel: " + machine.error().message);
+      unground(p, "the machine's wheel, dressed as proposed: " + machine.error().message);
       break;
     }
     auto ground = simulateGroundFace(machine->setup, plusError(run, s.error), machine->grid, Sensitivities::Skip);
@@ -178,14 +184,14 @@ ScenarioOutcome runScenario(const Scenario& s) {
     }
     auto after = machineJob(s, next);
     if (!after) {
-      refused(p, "the dressed wheel: " + after.error().message);
+      unground(p, "the dressed wheel: " + after.error().message);
       break;
     }
     auto probe = rmsOf(*after, k.axes, s.error, after->grid);
     auto left = faceOf(*after, k.axes, s.error, dense);
     auto rounded = rmsOf(*after, k.roundedAxes, s.error, dense);
     if (!probe || !left || !rounded) {
-      refused(p, "the proposed axes grind a face that cannot be simulated: " +
+      unground(p, "the proposed axes grind a face that cannot be simulated: " +
                      (!probe ? probe.error() : !left ? left.error() : rounded.error()).message);
       break;
     }

@@ -16,6 +16,10 @@ constexpr int kDenseFactor = 4;
 
 struct PassOutcome {
   bool refused = false;      // the calculator refused the case (message says why)
+  // The calculator proposed, but the machine, with its true error (and the dressing proposed),
+  // does not grind the proposal's face in full: the module finds no wheel position for part of it,
+  // which would stay unground (message says where). Not a refusal; the pass is missed all the same.
+  bool unground = false;
   std::string message;
   double measuredRms = 0;    // the measurement's rms (with the noise), µm
   double probeRms = 0;       // the face the pass leaves, on the probe grid, noise-free, µm
@@ -45,6 +49,8 @@ struct PassOutcome {
   // blind to the rest, leaves. -1: not computed (a later pass, a wheel shape, a face not simulated).
   double nullPartRms = -1;
   double probeNoise = 0;  // the probe noise declared in the case (sigma, µm)
+  // The pass left a face to judge: the calculator proposed, and the machine ground it.
+  bool ground() const { return !refused && !unground; }
 };
 
 struct ScenarioOutcome {

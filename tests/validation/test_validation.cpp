@@ -65,6 +65,10 @@ TEST(Validation, CampaignTargets) {
   // face, 31/34 before a face above the noise was sought over every coefficient and the search over
   // the pass history got its second start); 93/99 on the whole run.
   for (const Target& t : classOf(ScenarioClass::Large).targets) EXPECT_GE(t.share(), t.required) << t.what;
+  // No scenario of any class is refused by the calculator (issue 20: "no scenario is refused").
+  // A proposal the machine does not grind in full is counted apart (ClassSummary::unground) and
+  // misses its targets.
+  for (const ClassSummary& s : campaign().classes) EXPECT_EQ(s.refused, 0) << classTitle(s.kind);
   std::printf("%s", tableText(campaign()).c_str());
 }
 
@@ -76,7 +80,7 @@ TEST(Validation, ASecondPassWhoseAxesAloneCannotBeSimulatedIsCorrected) {
   ASSERT_TRUE(s.ok());
   const ScenarioOutcome o = runScenario(*s);
   ASSERT_EQ(o.passes.size(), 2u);
-  EXPECT_FALSE(o.passes[1].refused) << o.passes[1].message;
+  EXPECT_TRUE(o.passes[1].ground()) << o.passes[1].message;
   EXPECT_TRUE(o.passes[1].linearisedAtNominal);
   EXPECT_LT(o.passes[1].denseRms, 0.1);
   EXPECT_LE(o.passes[1].probeRms, o.passes[1].predictedRmsHigh);
@@ -90,10 +94,10 @@ TEST(Validation, AStalledFirstPassIsSoughtOverEveryCoefficientNotRefused) {
   ASSERT_TRUE(s.ok());
   const ScenarioOutcome o = runScenario(*s);
   ASSERT_EQ(o.passes.size(), 2u);
-  EXPECT_FALSE(o.passes[0].refused) << o.passes[0].message;
+  EXPECT_TRUE(o.passes[0].ground()) << o.passes[0].message;
   EXPECT_EQ(o.passes[0].status, "converged");
   EXPECT_LT(o.passes[0].denseRms, 0.2 * o.initialDenseRms);
-  EXPECT_FALSE(o.passes[1].refused) << o.passes[1].message;
+  EXPECT_TRUE(o.passes[1].ground()) << o.passes[1].message;
   EXPECT_LT(o.passes[1].denseRms, 0.1);
 }
 
@@ -129,7 +133,7 @@ TEST(Validation, OnlyThePassFaceUngroundIsSaidToStayUnground) {
   const ScenarioOutcome o = outcomeOf(452);
   ASSERT_GE(o.passes.size(), 1u);
   const PassOutcome& p = o.passes[0];
-  EXPECT_FALSE(p.refused) << p.message;
+  EXPECT_TRUE(p.ground()) << p.message;
   EXPECT_GT(p.predictedRmsHigh, p.measuredRms);
   EXPECT_NE(p.verdict.rfind("Uncertain: the face does not show enough", 0), std::string::npos) << p.verdict;
   EXPECT_EQ(p.verdict.find("part of it would stay unground"), std::string::npos) << p.verdict;
@@ -145,7 +149,7 @@ ScenarioOutcome runWheelScenario(int index) {
 // The pass was ground, the face it leaves lies within its bound, and the bound informs (at most
 // 10 times that face plus 0.02 µm).
 void expectBoundHoldsAndInforms(const PassOutcome& p) {
-  EXPECT_FALSE(p.refused) << p.message;
+  EXPECT_TRUE(p.ground()) << p.message;
   EXPECT_LE(p.probeRms, p.predictedRmsHigh);
   EXPECT_LE(p.predictedRmsHigh, 10 * p.probeRms + 0.02);
 }
@@ -185,7 +189,7 @@ TEST(Validation, TrialFacesThatCannotBeGroundAreRejectedStepsNotErrors) {
   ASSERT_TRUE(s.ok());
   const ScenarioOutcome o = runScenario(*s);
   ASSERT_EQ(o.passes.size(), 1u);
-  EXPECT_FALSE(o.passes[0].refused) << o.passes[0].message;
+  EXPECT_TRUE(o.passes[0].ground()) << o.passes[0].message;
   EXPECT_GT(o.passes[0].unsolvableTrials, 0);
   EXPECT_FALSE(o.passes[0].status.empty());
   EXPECT_LT(o.passes[0].denseRms, 0.1 * o.initialDenseRms);
