@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { after_, afterResult, base, openPage, plotted, root, shots, useBrowser } from './support.mjs';
+import { after_, afterResult, base, openPage, plotted, root, settled, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 const desk = { viewport: { width: 1366, height: 900 } };
@@ -125,9 +125,64 @@ test('a points CSV is previewed, corrected as points, and the maps show the grid
   assert.match((await state(page)).title, new RegExp(`^Measured at ${middle.length - 1} points`));
   const beyond = await page.$$eval('#identified-error [data-col="change-over-face"]', (cells) => cells.map((c) => c.textContent));
   assert.ok(beyond.length > 0, 'some axis changes more beyond the points');
-  for (const b of beyond) assert.match(b, /^ \([+−-]?[\d.]+(e[+−-]?\d+)? µ(m|rad) over the whole face, beyond the probe points\)$/);
+  for (const b of beyond) assert.match(b, /^[+−-]?[\d.]+(e[+−-]?\d+)? µ(m|rad) over the whole face\*$/);
+  assert.match(await page.textContent('#change-over-face-note'), /^\* The change over the whole motion range the program runs, beyond the probe\s+points/);
   await page.evaluate(() => { for (const d of document.querySelectorAll('details')) if (d.contains(document.querySelector('#identified-error'))) d.open = true; });
+  assert.ok(await page.isVisible('#change-over-face-note'));
   await page.locator('#identified-error').screenshot({ path: path.join(shots, 'points-change-over-face.png') });
+  // On a phone at the machine (390 px): the table within its box, no sideways scroll, and each
+  // change cell the points' figure on one line, the whole face's under it with its figure and unit
+  // on one line, the words at most two more.
+  const heights = () => page.$$eval('.plot', (els) => els.filter((el) => el.data && el.offsetParent !== null)
+    .map((el) => [el.id, el._fullLayout.height]));
+  const drawn = await heights();
+  assert.deepEqual(drawn.filter(([id]) => /2d$/.test(id)).map(([, h]) => h), [330, 330], 'the maps with the points marked');
+  // The window resized as a phone's does (turned, its toolbar sliding away): every plot keeps its
+  // height, and nothing is thrown (Plotly's responsive resize had shrunk the maps to 200 px and
+  // thrown "Something went wrong with axis scaling" from their colour bars).
+  await page.evaluate(() => {
+    window.mapResizes = 0;
+    document.querySelector('#plot-before-2d').on('plotly_relayout', () => { window.mapResizes += 1; });
+    // A resize that throws never relays out: counted as well, so that the test fails on its message.
+    window.addEventListener('unhandledrejection', () => { window.mapResizes += 1; });
+    window.addEventListener('error', () => { window.mapResizes += 1; });
+  });
+  let resizes = 0;
+  for (const [width, height] of [[390, 844], [390, 700], [390, 2000], [390, 844]]) {
+    await page.setViewportSize({ width, height });
+    // Plotly's own resize, after the window's (debounced): the map relaid out once more.
+    await page.waitForFunction((n) => window.mapResizes > n, resizes);
+    resizes = await page.evaluate(() => window.mapResizes);
+    await settled(page);
+  }
+  assert.deepEqual(page.problems, []);
+  assert.deepEqual(await heights(), drawn);
+  await page.locator('#identified-error').scrollIntoViewIfNeeded();
+  const phone = await page.evaluate(() => {
+    const table = document.querySelector('#identified-error');
+    const box = table.closest('.scroll');
+    const lines = (node) => {
+      const range = document.createRange();
+      range.selectNodeContents(node);
+      return new Set([...range.getClientRects()].map((r) => Math.round(r.top))).size;
+    };
+    return {
+      overflow: box.scrollWidth - box.clientWidth,
+      right: table.getBoundingClientRect().right,
+      page: document.documentElement.scrollWidth,
+      cells: [...table.querySelectorAll('td[data-col="change"]')].map((td) => {
+        const over = td.querySelector('.beyond');
+        // The points' figure: the cell's text before the span.
+        return { points: lines(td.firstChild), over: over ? lines(over) : 0, figure: over ? lines(over.querySelector('.figure')) : 0 };
+      }),
+    };
+  });
+  await page.locator('#identification').screenshot({ path: path.join(shots, 'points-change-over-face-390.png') });
+  assert.ok(phone.overflow <= 0 && phone.right <= 390 && phone.page <= 390, JSON.stringify(phone));
+  for (const c of phone.cells) assert.ok(c.points === 1 && c.over <= 3 && c.figure <= 1, JSON.stringify(phone.cells));
+  assert.ok(phone.cells.some((c) => c.over > 0));
+  await page.locator('#plot-before-2d').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(shots, 'points-maps-390-after-resize.png') });
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

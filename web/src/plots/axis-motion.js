@@ -5,7 +5,7 @@
 import { AXES, AXIS_UNIT, isRotary } from '../limits.js';
 import { motionSymbol, motionUnit } from '../format.js';
 import { polynomialAt } from '../../../wasm/lib/polynomial.js';
-import { PLOT_CONFIG } from './config.js';
+import { reactPlot } from './config.js';
 
 const ARCSEC_PER_RAD = (180 / Math.PI) * 3600;
 
@@ -26,7 +26,7 @@ export function drawAxisMotion(Plotly, el, r) {
   const title = corrected
     ? 'Correction of the axis motions (corrected − nominal)'
     : 'Axis motions over the motion range (nominal)';
-  return Plotly.react(el, traces, {
+  return reactPlot(Plotly, el, traces, {
     title: { text: title, font: { size: 14 }, y: 0.97 }, height: 340, margin: { t: 64, r: 70, b: 50, l: 70 },
     hovermode: 'x unified',
     xaxis: { title: { text: `motion parameter ${motionSymbol(r)} (${motionUnit(r)})` } },
@@ -34,5 +34,5 @@ export function drawAxisMotion(Plotly, el, r) {
     yaxis2: { title: { text: corrected ? 'ΔA, ΔB (arc-seconds)' : `A, B (${AXIS_UNIT.A})` }, overlaying: 'y', side: 'right', showgrid: false },
     // Above the plot, under its title: clear of the axis titles and of the curves.
     legend: { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' },
-  }, PLOT_CONFIG);
+  });
 }

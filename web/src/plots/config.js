@@ -3,6 +3,17 @@
 // its buttons are never a tab stop (keepToolbarsUntabbed).
 export const PLOT_CONFIG = Object.freeze({ responsive: true, displaylogo: false, displayModeBar: 'hover' });
 
+// Draws (or redraws) a plot: Plotly.react, with the plot's container held at the layout's height.
+// On a window's resize (a phone's toolbar sliding away, a tablet turned) Plotly's responsive mode
+// drops a layout's height unless it also gives a width, and sizes the plot to its container: a
+// container left to its content then shrank the plot to the page's smallest (200 px), cutting the
+// maps' axes, colour bars and legends.
+export function reactPlot(Plotly, el, traces, layout, config = PLOT_CONFIG) {
+  const node = typeof el === 'string' && typeof document !== 'undefined' ? document.getElementById(el) : el;
+  if (layout.height && node && node.style) node.style.height = `${layout.height}px`;
+  return Plotly.react(node, traces, layout, config);
+}
+
 // Takes the toolbars' buttons out of the tab order (Plotly makes them <button>s), each as Plotly
 // adds it, whichever view drew its plot.
 export function keepToolbarsUntabbed(root = document.body) {

@@ -3,6 +3,7 @@
 // two-line titles are HTML above each map (#gallery-titles), not Plotly annotations: measuring 50
 // lines of SVG text took longer than drawing the 25 maps. As many columns as fit, up to 5.
 // el: the figure's element; labels: the element over it that holds the titles.
+import { reactPlot } from './config.js';
 import { DEVIATION_SCALE } from './colours.js';
 import { escapeHtml } from '../format.js';
 
@@ -30,5 +31,5 @@ export function drawGallery(Plotly, el, labels, x, y, items) {
   });
   labels.style.height = `${height}px`;
   labels.innerHTML = titles.join('');
-  return Plotly.react(el, traces, layout, { staticPlot: true, responsive: true });
+  return reactPlot(Plotly, el, traces, layout, { staticPlot: true, responsive: true });
 }

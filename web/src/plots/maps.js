@@ -3,7 +3,7 @@
 // (docs/measured-points.md), those points marked on it (a scatter trace on the same axes).
 import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
 import { gridAxisTitles, gridHover } from './grid-units.js';
-import { PLOT_CONFIG } from './config.js';
+import { reactPlot } from './config.js';
 
 // The probe points as a scatter trace: list holds [r, x, deviation] per point (grid-units.js), the
 // deviation named by `what` when the pointer is on a point.
@@ -27,10 +27,10 @@ export function drawMap(Plotly, el, { x, y, z, range, title, points = null }) {
     hovertemplate: gridHover(),
   }];
   if (points) traces.push(probePointsTrace(points.list, points.what));
-  return Plotly.react(el, traces, {
+  return reactPlot(Plotly, el, traces, {
     title: { text: `${title} (map)`, font: { size: 14 } }, height: points ? 330 : 300,
     margin: { t: 40, r: 10, b: points ? 80 : 50, l: 60 },
     xaxis: { title: { text: gridAxisTitles().x } }, yaxis: { title: { text: gridAxisTitles().y } },
     showlegend: Boolean(points), legend: { orientation: 'h', x: 0, xanchor: 'left', y: -0.32, yanchor: 'top' },
-  }, PLOT_CONFIG);
+  });
 }

@@ -8,7 +8,7 @@
 // eighteen decades; the others linear. series: historySeries() of
 // web/src/pass-history.js, which leaves out every value that is not finite. units: the module's
 // units of the figures (result-fields.js), {rms, sse, max, thickness}.
-import { PLOT_CONFIG } from './config.js';
+import { reactPlot } from './config.js';
 
 const PANELS = [
   { q: 'rms', title: 'RMS', log: true },
@@ -100,5 +100,5 @@ export function drawPassHistory(Plotly, el, series, passCount, units = {}) {
       traces.push(trace);
     }
   });
-  return Plotly.react(el, traces, layout, PLOT_CONFIG);
+  return reactPlot(Plotly, el, traces, layout);
 }

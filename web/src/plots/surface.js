@@ -1,7 +1,7 @@
 // A deviation topography as a 3D surface: Plotly's surface trace (WebGL). Dragging turns it, the
 // wheel zooms, and the pointer shows the grid point's r, x and deviation with their units.
 import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
-import { PLOT_CONFIG } from './config.js';
+import { reactPlot } from './config.js';
 import { gridAxisTitles, gridHover } from './grid-units.js';
 
 // The box is 1.4 : 1 : 0.6, seen from far enough that the axis titles stay inside the plot.
@@ -21,7 +21,7 @@ const axis = (title, extra = {}) => ({
 export function drawSurface(Plotly, el, { x, y, z, range, title }) {
   self.plotlySurface();
   const titles = gridAxisTitles();
-  return Plotly.react(el, [{
+  return reactPlot(Plotly, el, [{
     type: 'surface', x, y, z, cmin: -range, cmax: range, colorscale: DEVIATION_SCALE,
     colorbar: deviationColourBar(),
     hovertemplate: gridHover(),
@@ -33,5 +33,5 @@ export function drawSurface(Plotly, el, { x, y, z, range, title }) {
       xaxis: axis(titles.x), yaxis: axis(titles.y),
       zaxis: axis(titles.z, { range: [-range, range] }),
     },
-  }, PLOT_CONFIG);
+  });
 }

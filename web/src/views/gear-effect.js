@@ -6,7 +6,7 @@
 import { escapeHtml, fixed, withUnit } from '../format.js';
 import { FLANKS, gearEffectRows, hasGearEffect } from '../gear-effect-figures.js';
 import { unitText } from '../result-fields.js';
-import { PLOT_CONFIG } from '../plots/config.js';
+import { reactPlot } from '../plots/config.js';
 
 const $ = (selector) => document.querySelector(selector);
 // A field's unit as the module gives it (result-fields.js).
@@ -40,12 +40,12 @@ function drawProfiles(Plotly, g) {
       hovertemplate: `${label}<br>height %{y:.2f} ${height}<br>deviation %{x:.4f} ${deviation}<extra>x = ${fixed(g.alongHob.x[t], 1)} ${x}</extra>`,
     }));
   }
-  return Plotly.react('plot-gear-profile', traces, {
+  return reactPlot(Plotly, 'plot-gear-profile', traces, {
     title: { text: 'Gear profile deviation over the active profile' }, height: 360, margin: { t: 40, r: 20, b: 50, l: 60 },
     xaxis: { title: { text: `profile deviation on the gear (${deviation}, + = more material)` }, zeroline: true },
     yaxis: { title: { text: `height on the gear tooth (${height}, tip up)` } },
     showlegend: false,
-  }, PLOT_CONFIG);
+  });
 }
 
 // A y range at least `least` µm wide about the values' middle, or none (Plotly's own) for a wider
@@ -69,12 +69,12 @@ function drawAlong(Plotly, g) {
   }));
   const range = leastRange(FLANKS.flatMap(([flank]) => Array.from(g.alongHob[flank].profileSlope)));
   const yRange = range ? { range, autorange: false } : { autorange: true };
-  return Plotly.react('plot-gear-along', traces, {
+  return reactPlot(Plotly, 'plot-gear-along', traces, {
     title: { text: 'fHα along the hob' }, height: 360, margin: { t: 40, r: 20, b: 50, l: 60 },
     xaxis: { title: { text: `tooth position along the hob axis x (${x})` } },
     yaxis: { title: { text: `fHα (${slope})` }, zeroline: true, ...yRange },
     legend: { orientation: 'h', y: -0.25 },
-  }, PLOT_CONFIG);
+  });
 }
 
 export function mountGearEffect(store, plots) {

@@ -25,8 +25,10 @@ function renderErrors(c) {
       : `<td colspan="2" class="reading" data-col="reading">${escapeHtml(READING_WORDS[r.reading] || 'not read on its own')}</td>`;
     return `<tr data-axis="${r.axis}" data-reading="${escapeHtml(r.reading || '')}"><th>${r.axis}</th>${read}
     <td class="num" data-col="change">${withUnit(r.change, r.changeUnit)}${r.changeOverFace === null ? ''
-      : `<span class="beyond" data-col="change-over-face"> (${withUnit(r.changeOverFace, r.changeUnit)} over the whole face, beyond the probe points)</span>`}</td></tr>`;
+      : `<span class="beyond" data-col="change-over-face"><span class="figure">${withUnit(r.changeOverFace, r.changeUnit)}</span> over the whole face*</span>`}</td></tr>`;
   }).join('');
+  // What "over the whole face" means, once under the table, where a row says it.
+  $('#change-over-face-note').hidden = !rows.some((r) => r.changeOverFace !== null);
   const words = combinationSentences(c);
   $('#identified-words').hidden = !words.length;
   $('#identified-words ul').innerHTML = words.map((w) => `<li>${escapeHtml(w)}</li>`).join('');

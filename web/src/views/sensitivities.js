@@ -4,7 +4,7 @@ import { coefficientUnit, isRotary } from '../limits.js';
 import { escapeHtml, fixed, fmt, motionUnit } from '../format.js';
 import { colourRange } from '../plots/colours.js';
 import { drawGallery } from '../plots/gallery.js';
-import { PLOT_CONFIG } from '../plots/config.js';
+import { reactPlot } from '../plots/config.js';
 import { gridUnits } from '../plots/grid-units.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -44,7 +44,7 @@ function drawSingular({ Plotly, result: r }) {
     };
   };
   const leftOut = nonlinear ? 'left out: within the probe noise, or would need wild axis moves' : 'left out: too small or would amplify noise';
-  return Plotly.react('plot-singular', [
+  return reactPlot(Plotly, 'plot-singular', [
     bars('used in the correction', '#2b6cb0', (k) => used.has(k + 1)),
     bars(leftOut, '#c53030', (k) => !used.has(k + 1)),
   ], {
@@ -54,7 +54,7 @@ function drawSingular({ Plotly, result: r }) {
     legend: { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' },
     yaxis: { type: 'log', exponentformat: 'power', title: { text: nonlinear ? 'σ (µm of face per machine step)' : 'σ (unit columns)' } },
     xaxis: { title: { text: 'index' } },
-  }, PLOT_CONFIG);
+  });
 }
 
 function renderUnobservable(r) {

@@ -6,7 +6,7 @@ import { download } from '../io/files.js';
 import { dresserCsv, profileCsv } from '../io/results-csv.js';
 import { offsetRange, wheelOffsetCurves } from '../wheel-offsets.js';
 import { pinnedProfile } from './pin.js';
-import { PLOT_CONFIG } from '../plots/config.js';
+import { reactPlot } from '../plots/config.js';
 import { unitText } from '../result-fields.js';
 
 const OFFSET_COLOURS = ['#1b7837', '#b35806', '#542788'];
@@ -60,7 +60,7 @@ function drawWheel(Plotly, r, state) {
     layout.xaxis2 = { title: { text: `offset along the profile normal, ${u.offset} (+ = more wheel), exaggerated` }, overlaying: 'x',
       side: 'top', range: offsetRange(curves), zeroline: true, showgrid: false };
   }
-  return Plotly.react('plot-wheel', traces, layout, PLOT_CONFIG);
+  return reactPlot(Plotly, 'plot-wheel', traces, layout);
 }
 
 export function mountWheel(store, plots) {
