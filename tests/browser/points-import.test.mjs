@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
-import { after_, afterResult, base, openPage, plotted, root, settled, shots, useBrowser } from './support.mjs';
+import { after_, afterResult, base, ON_DEMAND, openPage, openParts, plotted, root, settled, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 const desk = { viewport: { width: 1366, height: 900 } };
@@ -133,10 +133,18 @@ test('a points CSV is previewed, corrected as points, and the maps show the grid
   // On a phone at the machine (390 px): the table within its box, no sideways scroll, and each
   // change cell the points' figure on one line, the whole face's under it with its figure and unit
   // on one line, the words at most two more.
-  const heights = () => page.$$eval('.plot', (els) => els.filter((el) => el.data && el.offsetParent !== null)
+  // Every part on demand opened and the 3D surfaces shown: each of their plots drawn as it opens.
+  await openParts(page, ...ON_DEMAND);
+  await page.check('#show-3d');
+  await page.waitForFunction(() => Boolean(document.querySelector('#plot-after-3d').data));
+  await settled(page);
+  const heights = () => page.$$eval('.plot, #gallery', (els) => els.filter((el) => el.data && el.offsetParent !== null)
     .map((el) => [el.id, el._fullLayout.height]));
   const drawn = await heights();
   assert.deepEqual(drawn.filter(([id]) => /2d$/.test(id)).map(([, h]) => h), [330, 330], 'the maps with the points marked');
+  for (const id of ['plot-before-3d', 'plot-after-3d', 'plot-passes', 'plot-wheel', 'plot-axes', 'plot-singular', 'gallery']) {
+    assert.ok(drawn.some(([d]) => d === id), `${id} is drawn: ${JSON.stringify(drawn)}`);
+  }
   // The window resized as a phone's does (turned, its toolbar sliding away): every plot keeps its
   // height, and nothing is thrown (Plotly's responsive resize had shrunk the maps to 200 px and
   // thrown "Something went wrong with axis scaling" from their colour bars).
@@ -178,11 +186,23 @@ test('a points CSV is previewed, corrected as points, and the maps show the grid
     };
   });
   await page.locator('#identification').screenshot({ path: path.join(shots, 'points-change-over-face-390.png') });
+  // With every part open (the correction's options' fieldset had taken the page 5 px wide).
   assert.ok(phone.overflow <= 0 && phone.right <= 390 && phone.page <= 390, JSON.stringify(phone));
+  await page.locator('#correction-options').screenshot({ path: path.join(shots, 'points-correction-options-390.png') });
+  // Each of its controls whole within it (the method's select had run past its right edge).
+  const options = await page.$$eval('#correction-options select, #correction-options input', (els) => {
+    const box = document.querySelector('#correction-options').getBoundingClientRect();
+    return els.filter((el) => el.offsetParent !== null).map((el) => ({ id: el.id || el.dataset.field, right: el.getBoundingClientRect().right, box: box.right }));
+  });
+  for (const o of options) assert.ok(o.right <= o.box, JSON.stringify(o));
   for (const c of phone.cells) assert.ok(c.points === 1 && c.over <= 3 && c.figure <= 1, JSON.stringify(phone.cells));
   assert.ok(phone.cells.some((c) => c.over > 0));
   await page.locator('#plot-before-2d').scrollIntoViewIfNeeded();
   await page.screenshot({ path: path.join(shots, 'points-maps-390-after-resize.png') });
+  // Cleared: the plots emptied give their height back (no empty 330 px box under "No correction yet").
+  await afterResult(page, () => page.click('#clear-measured'));
+  await settled(page);
+  assert.deepEqual(await page.$$eval('#plot-after-2d, #plot-singular', (els) => els.map((el) => el.style.height)), ['', '']);
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

@@ -191,7 +191,8 @@ ScenarioOutcome runScenario(const Scenario& s) {
     auto left = faceOf(*after, k.axes, s.error, dense);
     auto rounded = rmsOf(*after, k.roundedAxes, s.error, dense);
     if (!probe || !left || !rounded) {
-      unground(p, "the proposed axes grind a face that cannot be simulated: " +
+      unground(p, std::string("the proposed axes grind a face that cannot be simulated ") +
+                     (!probe ? "on the probe grid" : !left ? "between the probe points" : "with the rounded axes") + ": " +
                      (!probe ? probe.error() : !left ? left.error() : rounded.error()).message);
       break;
     }

@@ -14,6 +14,14 @@ export function reactPlot(Plotly, el, traces, layout, config = PLOT_CONFIG) {
   return Plotly.react(node, traces, layout, config);
 }
 
+// Empties a plot (Plotly.purge) and lets its container fall back to the page's own height, which
+// reactPlot had held at the plot's.
+export function purgePlot(Plotly, el) {
+  const node = typeof el === 'string' && typeof document !== 'undefined' ? document.getElementById(el) : el;
+  if (node && node.style) node.style.height = '';
+  return Plotly.purge(node);
+}
+
 // Takes the toolbars' buttons out of the tab order (Plotly makes them <button>s), each as Plotly
 // adds it, whichever view drew its plot.
 export function keepToolbarsUntabbed(root = document.body) {

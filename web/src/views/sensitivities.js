@@ -4,7 +4,7 @@ import { coefficientUnit, isRotary } from '../limits.js';
 import { escapeHtml, fixed, fmt, motionUnit } from '../format.js';
 import { colourRange } from '../plots/colours.js';
 import { drawGallery } from '../plots/gallery.js';
-import { reactPlot } from '../plots/config.js';
+import { purgePlot, reactPlot } from '../plots/config.js';
 import { gridUnits } from '../plots/grid-units.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -31,7 +31,7 @@ function drawSensitivities({ Plotly, result: r }) {
 // moves for little gain; usedDirections (1-based) says which it used, not always the largest.
 // The linear step's are of the column-scaled matrix, the largest `rank` used.
 function drawSingular({ Plotly, result: r }) {
-  if (!r.correction) return Plotly.purge('plot-singular');
+  if (!r.correction) return purgePlot(Plotly, 'plot-singular');
   const c = r.correction;
   const sv = c.singularValues;
   const nonlinear = c.method !== 'linear';

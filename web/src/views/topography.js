@@ -6,6 +6,7 @@ import { fixed, fmt, signed } from '../format.js';
 import { colourRange } from '../plots/colours.js';
 import { drawMap } from '../plots/maps.js';
 import { drawSurface } from '../plots/surface.js';
+import { purgePlot } from '../plots/config.js';
 import { FACE_FIGURES, figureTexts, gridFigures } from '../figures.js';
 import { comparedToPinned } from './pin.js';
 
@@ -86,7 +87,7 @@ function drawSurfaces({ Plotly, result: r, state }) {
   const spec = (z, title) => ({ x: r.topography.x, y: r.topography.r, z, range, title });
   after.hidden = !v.after;
   return Promise.all([drawSurface(Plotly, before, spec(v.before, v.beforeName)),
-    v.after ? drawSurface(Plotly, after, spec(v.after, v.afterName)) : Plotly.purge(after)]);
+    v.after ? drawSurface(Plotly, after, spec(v.after, v.afterName)) : purgePlot(Plotly, after)]);
 }
 
 function drawMaps({ Plotly, result: r, state }) {
@@ -94,7 +95,7 @@ function drawMaps({ Plotly, result: r, state }) {
   const range = colourRange(v.before, v.after);
   const spec = (z, title, points) => ({ x: r.topography.x, y: r.topography.r, z, range, title, points });
   return Promise.all([drawMap(Plotly, 'plot-before-2d', spec(v.before, v.beforeName, v.beforePoints)),
-    v.after ? drawMap(Plotly, 'plot-after-2d', spec(v.after, v.afterName, v.afterPoints)) : Plotly.purge('plot-after-2d')]);
+    v.after ? drawMap(Plotly, 'plot-after-2d', spec(v.after, v.afterName, v.afterPoints)) : purgePlot(Plotly, 'plot-after-2d')]);
 }
 
 // The switch shows state.surfaces (a loaded case or link may set it); opening the surfaces draws
@@ -106,7 +107,7 @@ function mount3dSwitch(store, plots) {
     $('#show-3d').checked = state.surfaces;
     before.hidden = after.hidden = !state.surfaces;
     if (state.surfaces) plots.redraw();
-    else if (self.Plotly) { self.Plotly.purge(before); self.Plotly.purge(after); }
+    else if (self.Plotly) { purgePlot(self.Plotly, before); purgePlot(self.Plotly, after); }
   });
 }
 

@@ -5,6 +5,7 @@ import { fixed, withUnit } from '../format.js';
 import { fieldLabel, unitText } from '../result-fields.js';
 import { colourRange } from '../plots/colours.js';
 import { drawMap } from '../plots/maps.js';
+import { purgePlot } from '../plots/config.js';
 
 const $ = (selector) => document.querySelector(selector);
 const hasSplit = (r) => Boolean(r && r.correction && r.correction.removedByWheel && r.correction.removedByAxes);
@@ -20,7 +21,7 @@ export function shareText(c) {
 function drawSplit({ Plotly, result: r }) {
   const box = $('#wheel-split');
   box.hidden = !hasSplit(r);
-  if (!hasSplit(r)) return Promise.all(PLOTS.map(([id]) => Plotly.purge(id)));
+  if (!hasSplit(r)) return Promise.all(PLOTS.map(([id]) => purgePlot(Plotly, id)));
   const c = r.correction;
   $('#wheel-share').textContent = shareText(c);
   const range = colourRange(c.removedByAxes, c.removedByWheel, c.residual);
