@@ -138,16 +138,27 @@ test('a points CSV is previewed, corrected as points, and the maps show the grid
   await page.check('#show-3d');
   await page.waitForFunction(() => Boolean(document.querySelector('#plot-after-3d').data));
   await settled(page);
+  // Each drawn plot: its id, the height Plotly drew it at, its box's height, and (the gallery) its
+  // columns, or (the pass history) its rows of panels.
   const heights = () => page.$$eval('.plot, #gallery', (els) => els.filter((el) => el.data && el.offsetParent !== null)
-    .map((el) => [el.id, el._fullLayout.height]));
+    .map((el) => {
+      const L = el._fullLayout;
+      const columns = new Set(Object.keys(L).filter((k) => /^xaxis\d*$/.test(k)).map((k) => L[k].domain[0].toFixed(3))).size;
+      return [el.id, L.height, el.clientHeight, columns];
+    }));
   const drawn = await heights();
   assert.deepEqual(drawn.filter(([id]) => /2d$/.test(id)).map(([, h]) => h), [330, 330], 'the maps with the points marked');
   for (const id of ['plot-before-3d', 'plot-after-3d', 'plot-passes', 'plot-wheel', 'plot-axes', 'plot-singular', 'gallery']) {
     assert.ok(drawn.some(([d]) => d === id), `${id} is drawn: ${JSON.stringify(drawn)}`);
   }
-  // The window resized as a phone's does (turned, its toolbar sliding away): every plot keeps its
-  // height, and nothing is thrown (Plotly's responsive resize had shrunk the maps to 200 px and
-  // thrown "Something went wrong with axis scaling" from their colour bars).
+  const of = (list, id) => list.find(([d]) => d === id);
+  assert.equal(of(drawn, 'gallery')[3], 5, 'the gallery in 5 columns at 1366 px');
+  assert.equal(of(drawn, 'plot-passes')[3], 4, 'the pass history\'s 4 panels side by side');
+  // The window resized as a phone's does (turned, then its toolbar sliding away): each plot drawn
+  // again for the new width (the gallery in 2 columns, the pass history two by two), then kept at
+  // its height while only the height changes; its box as high as the plot; nothing thrown
+  // (Plotly's responsive resize had shrunk the plots to 200 px and thrown "Something went wrong
+  // with axis scaling" from the maps' colour bars, and kept the gallery's 5 columns on a phone).
   await page.evaluate(() => {
     window.mapResizes = 0;
     document.querySelector('#plot-before-2d').on('plotly_relayout', () => { window.mapResizes += 1; });
@@ -155,16 +166,28 @@ test('a points CSV is previewed, corrected as points, and the maps show the grid
     window.addEventListener('unhandledrejection', () => { window.mapResizes += 1; });
     window.addEventListener('error', () => { window.mapResizes += 1; });
   });
-  let resizes = 0;
+  let resizes = 0, phoneDrawn = null;
   for (const [width, height] of [[390, 844], [390, 700], [390, 2000], [390, 844]]) {
     await page.setViewportSize({ width, height });
     // Plotly's own resize, after the window's (debounced): the map relaid out once more.
     await page.waitForFunction((n) => window.mapResizes > n, resizes);
     resizes = await page.evaluate(() => window.mapResizes);
     await settled(page);
+    // The pass history draws on its own: two by two on a phone (580 px high).
+    await page.waitForFunction(() => document.querySelector('#plot-passes')._fullLayout.height === 580);
+    const now = await heights();
+    for (const [id, h, box] of now) assert.equal(box, h, `${id}'s box as high as the plot`);
+    if (!phoneDrawn) phoneDrawn = now;
+    else assert.deepEqual(now, phoneDrawn);
   }
   assert.deepEqual(page.problems, []);
-  assert.deepEqual(await heights(), drawn);
+  assert.equal(of(phoneDrawn, 'gallery')[3], 2, 'the gallery in 2 columns on a phone');
+  assert.equal(of(phoneDrawn, 'plot-passes')[3], 2, 'the pass history two by two on a phone');
+  assert.equal(of(phoneDrawn, 'plot-passes')[1], 580);
+  for (const id of ['plot-singular', 'plot-wheel', 'plot-before-3d', 'gallery', 'plot-passes']) {
+    await page.locator(`#${id}`).scrollIntoViewIfNeeded();
+    await page.locator(`#${id}`).screenshot({ path: path.join(shots, `points-390-${id}.png`) });
+  }
   await page.locator('#identified-error').scrollIntoViewIfNeeded();
   const phone = await page.evaluate(() => {
     const table = document.querySelector('#identified-error');

@@ -85,6 +85,23 @@ export function mountPlots(store) {
 
   store.on('result', pass);
   store.on('view', pass);
+  // The window made wider or narrower (a tablet turned, a desktop window resized): a pass draws
+  // every plot again, so that what a plot lays out by its width when drawn (the gallery's columns,
+  // the pass history's panels, the surfaces' camera, titles broken on a phone) fits the new width.
+  // Plotly's own resize only stretches the layout drawn. A change of height alone (a phone's
+  // toolbar sliding away) changes nothing drawn.
+  let width = window.innerWidth, widthTimer = 0, widthWaiting = false;
+  window.addEventListener('resize', () => {
+    clearTimeout(widthTimer);
+    widthWaiting = window.innerWidth !== width;
+    widthTimer = setTimeout(() => {
+      widthWaiting = false;
+      if (window.innerWidth === width) return;
+      width = window.innerWidth;
+      store.emit('width');  // the views that draw on their own (the pass history) draw again
+      if (store.state.result) pass();
+    }, 200);
+  });
   return {
     // draw({Plotly, result, state, current}) draws one view's plots; those added with
     // {later: true} are drawn after the others have shown. current() turns false once a newer
@@ -94,6 +111,6 @@ export function mountPlots(store) {
     // A view that shows a plot it did not show before (the 3D surfaces) asks for a pass.
     redraw() { if (store.state.result) pass(); },
     // Whether a pass is under way (the tests' hobsharpTest.settled() waits until none is).
-    busy: () => inFlight > 0,
+    busy: () => inFlight > 0 || widthWaiting,
   };
 }

@@ -4,10 +4,18 @@ import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
 import { reactPlot } from './config.js';
 import { gridAxisTitles, gridHover } from './grid-units.js';
 
-// The box is 1.4 : 1 : 0.6, seen from far enough that the axis titles stay inside the plot.
-const SCENE = {
-  aspectmode: 'manual', aspectratio: { x: 1.4, y: 1, z: 0.6 },
-  camera: { eye: { x: 2.0, y: -2.9, z: 1.5 }, center: { x: 0, y: 0, z: -0.12 } },
+// The box is 1.4 : 1 : 0.6, seen from far enough that the axis titles stay inside the plot: in a
+// plot narrower than WIDE px (a half-width card), from further away in proportion, at most 1.3
+// times. On a phone (narrower than NARROW px) the colour bar lies under the scene, which then has
+// the plot's whole width.
+const WIDE = 760, NARROW = 560;
+const scene = (width) => {
+  // (On a phone the scene has the width the colour bar took beside it, and is seen a little nearer.)
+  const k = (width || WIDE) < NARROW ? 1.1 : Math.min(1.3, Math.max(1, WIDE / (width || WIDE)));
+  return {
+    aspectmode: 'manual', aspectratio: { x: 1.4, y: 1, z: 0.6 },
+    camera: { eye: { x: 2.0 * k, y: -2.9 * k, z: 1.5 * k }, center: { x: 0, y: 0, z: -0.12 } },
+  };
 };
 
 // No zero lines (they stood out of the surface as stray vertical lines) and no spike lines.
@@ -21,15 +29,20 @@ const axis = (title, extra = {}) => ({
 export function drawSurface(Plotly, el, { x, y, z, range, title }) {
   self.plotlySurface();
   const titles = gridAxisTitles();
+  const width = el && el.clientWidth;
+  const narrow = (width || 1000) < NARROW;
+  const bar = deviationColourBar();
   return reactPlot(Plotly, el, [{
     type: 'surface', x, y, z, cmin: -range, cmax: range, colorscale: DEVIATION_SCALE,
-    colorbar: deviationColourBar(),
+    colorbar: narrow ? { ...bar, orientation: 'h', x: 0.5, xanchor: 'center', y: 0, yanchor: 'top', len: 0.8,
+      title: { ...bar.title, text: bar.title.text.replaceAll('<br>', ' '), side: 'top' } } : bar,
     hovertemplate: gridHover(),
   }], {
     // The title on the left, clear of the mode bar.
-    title: { text: `${title} (3D)`, font: { size: 14 }, x: 0.02, xanchor: 'left' }, height: 400, margin: { t: 36, r: 10, b: 0, l: 0 },
+    title: { text: `${title} (3D)`, font: { size: 14 }, x: 0.02, xanchor: 'left' }, height: narrow ? 460 : 400,
+    margin: { t: 36, r: 10, b: narrow ? 90 : 0, l: 0 },
     scene: {
-      ...SCENE,
+      ...scene(width),
       xaxis: axis(titles.x), yaxis: axis(titles.y),
       zaxis: axis(titles.z, { range: [-range, range] }),
     },

@@ -92,6 +92,7 @@ export function mountPassHistory(store, calculator, measuredView) {
 
   const update = () => { if (figures.size > 500) figures.clear(); render(); fill(); };
   for (const event of ['result', 'restore', 'inputs']) store.on(event, update);
+  store.on('width', render);  // the window made wider or narrower: the panels laid out again
 
   $('#next-run').addEventListener('click', () => {
     const { inputs, why } = nextRunInputs(store.state);

@@ -43,14 +43,17 @@ function drawSingular({ Plotly, result: r }) {
       hovertemplate: `σ%{x} = %{y:.3e}${nonlinear ? ' µm per step' : ''}: ${name}<extra></extra>`,
     };
   };
-  const leftOut = nonlinear ? 'left out: within the probe noise, or would need wild axis moves' : 'left out: too small or would amplify noise';
+  // On a phone (a plot narrower than 560 px) the title and the legend's longer entry on two lines.
+  const narrow = (document.getElementById('plot-singular').clientWidth || 1000) < 560;
+  const br = narrow ? '<br>' : ' ';
+  const leftOut = nonlinear ? `left out: within the probe noise,${br}or would need wild axis moves` : 'left out: too small or would amplify noise';
   return reactPlot(Plotly, 'plot-singular', [
     bars('used in the correction', '#2b6cb0', (k) => used.has(k + 1)),
     bars(leftOut, '#c53030', (k) => !used.has(k + 1)),
   ], {
-    title: { text: nonlinear ? `Singular values of the sensitivities in machine steps (${used.size} used)`
-      : `Singular values of the scaled sensitivity matrix (${used.size} used)`, font: { size: 14 }, y: 0.97 },
-    height: 340, margin: { t: 90, r: 10, b: 40, l: 60 }, barmode: 'overlay', showlegend: true,
+    title: { text: nonlinear ? `Singular values of the sensitivities${br}in machine steps (${used.size} used)`
+      : `Singular values of the scaled${br}sensitivity matrix (${used.size} used)`, font: { size: 14 }, y: 0.97 },
+    height: narrow ? 400 : 340, margin: { t: narrow ? 140 : 90, r: 10, b: 40, l: 60 }, barmode: 'overlay', showlegend: true,
     legend: { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' },
     yaxis: { type: 'log', exponentformat: 'power', title: { text: nonlinear ? 'σ (µm of face per machine step)' : 'σ (unit columns)' } },
     xaxis: { title: { text: 'index' } },

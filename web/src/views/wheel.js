@@ -48,16 +48,19 @@ function drawWheel(Plotly, r, state) {
       });
     }
   });
+  // On a phone (a plot narrower than 560 px) the top axis's title on two lines, and the legend,
+  // which wraps to several rows there, in a margin of its own under the x axis's title.
+  const narrow = curves.length > 0 && (document.getElementById('plot-wheel').clientWidth || 1000) < 560;
   const layout = {
     // With the offsets' scale at the top, its title takes the title's place (the section's heading names the plot).
-    title: { text: curves.length ? '' : 'Wheel axial profile (R against Z)' }, height: curves.length ? 400 : 360,
-    margin: { t: curves.length ? 60 : 40, r: 20, b: 50, l: 60 },
+    title: { text: curves.length ? '' : 'Wheel axial profile (R against Z)' }, height: (curves.length ? 400 : 360) + (narrow ? 120 : 0),
+    margin: { t: curves.length ? (narrow ? 80 : 60) : 40, r: 20, b: narrow ? 170 : 50, l: 60 },
     xaxis: { title: { text: `Z, along the wheel axis (${u.Z})` } },
     yaxis: { title: { text: `R, wheel radius (${u.R})` }, scaleanchor: 'x', scaleratio: 1 },
-    legend: { orientation: 'h', y: -0.2 },
+    legend: narrow ? { orientation: 'h', x: 0, xanchor: 'left', y: 0, yref: 'container', yanchor: 'bottom' } : { orientation: 'h', y: -0.2 },
   };
   if (curves.length) {
-    layout.xaxis2 = { title: { text: `offset along the profile normal, ${u.offset} (+ = more wheel), exaggerated` }, overlaying: 'x',
+    layout.xaxis2 = { title: { text: `offset along the profile normal, ${u.offset}${narrow ? '<br>' : ' '}(+ = more wheel), exaggerated` }, overlaying: 'x',
       side: 'top', range: offsetRange(curves), zeroline: true, showgrid: false };
   }
   return reactPlot(Plotly, 'plot-wheel', traces, layout);
