@@ -82,10 +82,11 @@ Campaign summarise(std::uint64_t seed, std::vector<ScenarioOutcome> outcomes, do
         ++s.unjudged;
         continue;
       }
-      if (anyRefused(o)) ++s.refused;
-      if (anyUnground(o)) ++s.unground;
+      const bool refused = anyRefused(o), unground = anyUnground(o);
+      if (refused) ++s.refused;
+      if (unground) ++s.unground;
       // A refused pass, or a proposal not ground in full, misses every target.
-      const bool missed = anyRefused(o) || anyUnground(o);
+      const bool missed = refused || unground;
       const double last = finalRms(o);
       s.finals.push_back(last);
       const PassOutcome* p = lastPass(o);

@@ -3,13 +3,26 @@
 // its buttons are never a tab stop (keepToolbarsUntabbed).
 export const PLOT_CONFIG = Object.freeze({ responsive: true, displaylogo: false, displayModeBar: 'hover' });
 
+// A plot's element: `el` itself, or the element of that id.
+const plotElement = (el) => (typeof el === 'string' && typeof document !== 'undefined' ? document.getElementById(el) : el);
+
+// A plot narrower than this (px) is on a phone: its long titles and legend entries break onto two
+// lines, and a 3D surface's colour bar lies under the scene.
+export const NARROW_PLOT = 560;
+// The width a plot is drawn at, px (0 without an element).
+export const plotWidth = (el) => {
+  const node = plotElement(el);
+  return (node && node.clientWidth) || 0;
+};
+export const isNarrowPlot = (el) => (plotWidth(el) || 1000) < NARROW_PLOT;
+
 // Draws (or redraws) a plot: Plotly.react, with the plot's container held at the layout's height.
 // On a window's resize (a phone's toolbar sliding away, a tablet turned) Plotly's responsive mode
 // drops a layout's height unless it also gives a width, and sizes the plot to its container: a
 // container left to its content then shrank the plot to the page's smallest (200 px), cutting the
 // maps' axes, colour bars and legends.
 export function reactPlot(Plotly, el, traces, layout, config = PLOT_CONFIG) {
-  const node = typeof el === 'string' && typeof document !== 'undefined' ? document.getElementById(el) : el;
+  const node = plotElement(el);
   if (layout.height && node && node.style) node.style.height = `${layout.height}px`;
   return Plotly.react(node, traces, layout, config);
 }
@@ -17,7 +30,7 @@ export function reactPlot(Plotly, el, traces, layout, config = PLOT_CONFIG) {
 // Empties a plot (Plotly.purge) and lets its container fall back to the page's own height, which
 // reactPlot had held at the plot's.
 export function purgePlot(Plotly, el) {
-  const node = typeof el === 'string' && typeof document !== 'undefined' ? document.getElementById(el) : el;
+  const node = plotElement(el);
   if (node && node.style) node.style.height = '';
   return Plotly.purge(node);
 }

@@ -1,17 +1,17 @@
 // A deviation topography as a 3D surface: Plotly's surface trace (WebGL). Dragging turns it, the
 // wheel zooms, and the pointer shows the grid point's r, x and deviation with their units.
 import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
-import { reactPlot } from './config.js';
+import { NARROW_PLOT, isNarrowPlot, plotWidth, reactPlot } from './config.js';
 import { gridAxisTitles, gridHover } from './grid-units.js';
 
 // The box is 1.4 : 1 : 0.6, seen from far enough that the axis titles stay inside the plot: in a
 // plot narrower than WIDE px (a half-width card), from further away in proportion, at most 1.3
-// times. On a phone (narrower than NARROW px) the colour bar lies under the scene, which then has
-// the plot's whole width.
-const WIDE = 760, NARROW = 560;
+// times. On a phone (narrower than NARROW_PLOT px) the colour bar lies under the scene, which then
+// has the plot's whole width.
+const WIDE = 760;
 const scene = (width) => {
   // (On a phone the scene has the width the colour bar took beside it, and is seen a little nearer.)
-  const k = (width || WIDE) < NARROW ? 1.1 : Math.min(1.3, Math.max(1, WIDE / (width || WIDE)));
+  const k = (width || WIDE) < NARROW_PLOT ? 1.1 : Math.min(1.3, Math.max(1, WIDE / (width || WIDE)));
   return {
     aspectmode: 'manual', aspectratio: { x: 1.4, y: 1, z: 0.6 },
     camera: { eye: { x: 2.0 * k, y: -2.9 * k, z: 1.5 * k }, center: { x: 0, y: 0, z: -0.12 } },
@@ -29,8 +29,8 @@ const axis = (title, extra = {}) => ({
 export function drawSurface(Plotly, el, { x, y, z, range, title }) {
   self.plotlySurface();
   const titles = gridAxisTitles();
-  const width = el && el.clientWidth;
-  const narrow = (width || 1000) < NARROW;
+  const width = plotWidth(el);
+  const narrow = isNarrowPlot(el);
   const bar = deviationColourBar();
   return reactPlot(Plotly, el, [{
     type: 'surface', x, y, z, cmin: -range, cmax: range, colorscale: DEVIATION_SCALE,

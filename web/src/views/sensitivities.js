@@ -4,7 +4,7 @@ import { coefficientUnit, isRotary } from '../limits.js';
 import { escapeHtml, fixed, fmt, motionUnit } from '../format.js';
 import { colourRange } from '../plots/colours.js';
 import { drawGallery } from '../plots/gallery.js';
-import { purgePlot, reactPlot } from '../plots/config.js';
+import { isNarrowPlot, purgePlot, reactPlot } from '../plots/config.js';
 import { gridUnits } from '../plots/grid-units.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -43,8 +43,8 @@ function drawSingular({ Plotly, result: r }) {
       hovertemplate: `σ%{x} = %{y:.3e}${nonlinear ? ' µm per step' : ''}: ${name}<extra></extra>`,
     };
   };
-  // On a phone (a plot narrower than 560 px) the title and the legend's longer entry on two lines.
-  const narrow = (document.getElementById('plot-singular').clientWidth || 1000) < 560;
+  // On a phone the title and the legend's longer entry on two lines.
+  const narrow = isNarrowPlot('plot-singular');
   const br = narrow ? '<br>' : ' ';
   const leftOut = nonlinear ? `left out: within the probe noise,${br}or would need wild axis moves` : 'left out: too small or would amplify noise';
   return reactPlot(Plotly, 'plot-singular', [

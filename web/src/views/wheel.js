@@ -6,7 +6,7 @@ import { download } from '../io/files.js';
 import { dresserCsv, profileCsv } from '../io/results-csv.js';
 import { offsetRange, wheelOffsetCurves } from '../wheel-offsets.js';
 import { pinnedProfile } from './pin.js';
-import { reactPlot } from '../plots/config.js';
+import { isNarrowPlot, reactPlot } from '../plots/config.js';
 import { unitText } from '../result-fields.js';
 
 const OFFSET_COLOURS = ['#1b7837', '#b35806', '#542788'];
@@ -48,9 +48,9 @@ function drawWheel(Plotly, r, state) {
       });
     }
   });
-  // On a phone (a plot narrower than 560 px) the top axis's title on two lines, and the legend,
-  // which wraps to several rows there, in a margin of its own under the x axis's title.
-  const narrow = curves.length > 0 && (document.getElementById('plot-wheel').clientWidth || 1000) < 560;
+  // On a phone the top axis's title on two lines, and the legend, which wraps to several rows
+  // there, in a margin of its own under the x axis's title.
+  const narrow = curves.length > 0 && isNarrowPlot('plot-wheel');
   const layout = {
     // With the offsets' scale at the top, its title takes the title's place (the section's heading names the plot).
     title: { text: curves.length ? '' : 'Wheel axial profile (R against Z)' }, height: (curves.length ? 400 : 360) + (narrow ? 120 : 0),
