@@ -7,7 +7,7 @@
 #                         a developer's quicker loop: the same, without the sanitizer build, the
 #                         tests under ASan + UBSan and the fuzzing (docs/testing.md)
 #   ./hobsharp.sh bench   build and run the benchmarks
-#   ./hobsharp.sh validate [--scenarios N] [--seed S] [--docs]
+#   ./hobsharp.sh validate [--scenarios N] [--seed S] [--docs] [--index I]
 #                         the validation campaign on random hobs (docs/validation.md); --docs
 #                         writes its table, JSON and plot into docs/validation/
 set -euo pipefail
@@ -160,6 +160,8 @@ case "${1:-}" in
       if [ "$a" = --docs ]; then OUT=$ROOT/docs/validation; else ARGS+=("$a"); fi
     done
     "$BUILD/tests/hobsharp_validate" --out "$OUT" "${ARGS[@]}"
+    # --index I: one scenario's record, printed; no table, no plot.
+    case " ${ARGS[*]} " in *" --index "*) exit 0 ;; esac
     # The plot beside the table: Plotly from node_modules in Debian's Chromium (playwright-core).
     install_npm
     node tests/validation/plot.mjs "$OUT/validation.json"

@@ -138,3 +138,21 @@ test('correcting the wheel too: the proposed offset on Fig. 4, the dresser path 
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+// The edge of the wheel's envelope (docs/method.md): a hob whose conjugate profile turns back
+// 0.077 mm below the tip (tests/data/wheel-edge.json) shows the module's warning in the answer,
+// and the paper's hob, loaded after it, takes it away.
+test('a face past the edge of the wheel\'s envelope is said in the answer, and goes with the hob', async () => {
+  const page = await openPage(base, desk);
+  await plotted(page);
+  assert.ok(await page.isHidden('#wheel-edge'), 'Tab. 1: the profile reaches the tip');
+  const edge = readFileSync(path.join(root, 'tests', 'data', 'wheel-edge.json'));
+  await afterResult(page, () => page.setInputFiles('#load-case', { name: 'wheel-edge.json', mimeType: 'application/json', buffer: edge }));
+  assert.ok(await page.isVisible('#wheel-edge'));
+  assert.match(await page.textContent('#wheel-edge'), /turns back at the face radius r = 23\.915 mm, 0\.077 mm below the tip \(r = 23\.992 mm\)/);
+  await page.locator('#summary').screenshot({ path: path.join(shots, 'wheel-edge.png') });
+  await afterResult(page, () => page.setInputFiles('#load-case', { name: 'tab1.json', mimeType: 'application/json',
+    buffer: readFileSync(path.join(root, 'tests', 'data', 'tab1.json')) }));
+  assert.ok(await page.isHidden('#wheel-edge'));
+  await page.context().close();
+});

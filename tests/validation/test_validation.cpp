@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include "campaign.h"
+#include "evaluation.h"
+#include "sharpening_job.h"
+#include "wheel_profile_turn.h"
 
 namespace hobsharp::validation {
 namespace {
@@ -75,6 +78,66 @@ TEST(Validation, CampaignTargets) {
 // Scenario 452 of the default seed (150 µm rms, two passes): after the first pass the axes it
 // proposes, run alone, grind no face the wheel envelops; the machine, with its error, did grind
 // one. The second pass is not refused: it is linearised at the nominal axes and corrects the face.
+// Seed 2026's scenario 311 (docs/method.md, "The edge of the wheel's envelope"): a hob whose
+// conjugate wheel profile turns back 0.08 mm below the tip. Found by the meridian speed's sign
+// (wheel_profile_turn.h) between two of the 41 profile points; a second method, the chords of a
+// profile 2001 points dense, turns back within one of its spacings of the same radius.
+TEST(Validation, AWheelProfileThatTurnsBackBelowTheTipIsFoundAndSaid) {
+  auto s = makeScenario(2026, 311);
+  ASSERT_TRUE(s.ok());
+  auto job = resolveJob(s->input);
+  ASSERT_TRUE(job.ok()) << job.error().message;
+  auto e = evaluate(*job);
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  ASSERT_TRUE(e->wheelTurnRadius.has_value());
+  const double turn = *e->wheelTurnRadius, tip = job->outerRadius;
+  EXPECT_GT(turn, tip - 0.1);
+  EXPECT_LT(turn, tip - 0.05);
+
+  const SharpeningSetup& q = job->setup;
+  const int n = 2001;
+  auto dense = wheelProfile(q.face, q.universal, q.normalSign, evenRadii(job->rootRadius, tip, n));
+  ASSERT_TRUE(dense.ok());
+  const double spacing = (tip - job->rootRadius) / (n - 1);
+  // The chord from point k to k + 1 along the meridian's direction at the root: positive while the
+  // profile runs one way.
+  const double dR = dense->R[1] - dense->R[0], dZ = dense->Z[1] - dense->Z[0];
+  int back = -1;
+  for (int k = 1; k + 1 < n && back < 0; ++k)
+    if ((dense->R[k + 1] - dense->R[k]) * dR + (dense->Z[k + 1] - dense->Z[k]) * dZ < 0) back = k;
+  ASSERT_GE(back, 0) << "the dense profile runs one way to the tip";
+  EXPECT_NEAR(dense->r[back], turn, 1.5 * spacing);
+
+  // The second pass's case records the first pass's dressing, and a dressed wheel cannot be
+  // simulated past the edge: the refusal says why first.
+  const ScenarioOutcome o = runScenario(*s);
+  ASSERT_EQ(o.passes.size(), 2u);
+  EXPECT_TRUE(o.passes[1].refused);
+  EXPECT_EQ(o.passes[1].message.rfind("The conjugate wheel's profile turns back at the face radius r = ", 0), 0u)
+      << o.passes[1].message;
+}
+
+// The hobs of the default campaign's first 60 scenarios: the meridian speed's sign on the 41
+// profile points finds a turn exactly where the chords of a profile 2001 points dense turn back.
+TEST(Validation, AWheelProfileThatReachesTheTipHasNoTurn) {
+  for (int i = 0; i < 60; ++i) {
+    auto s = makeScenario(kSeed, i);
+    ASSERT_TRUE(s.ok());
+    auto job = resolveJob(s->input);
+    ASSERT_TRUE(job.ok());
+    const SharpeningSetup& q = job->setup;
+    auto profile = wheelProfile(q.face, q.universal, q.normalSign, evenRadii(job->rootRadius, job->outerRadius, 41));
+    ASSERT_TRUE(profile.ok());
+    auto dense = wheelProfile(q.face, q.universal, q.normalSign, evenRadii(job->rootRadius, job->outerRadius, 2001));
+    ASSERT_TRUE(dense.ok());
+    const double dR = dense->R[1] - dense->R[0], dZ = dense->Z[1] - dense->Z[0];
+    bool back = false;
+    for (size_t k = 1; k + 1 < dense->r.size(); ++k)
+      back = back || (dense->R[k + 1] - dense->R[k]) * dR + (dense->Z[k + 1] - dense->Z[k]) * dZ < 0;
+    EXPECT_EQ(profileTurnRadius(q.face, q.universal, q.normalSign, *profile).has_value(), back) << "scenario " << i;
+  }
+}
+
 TEST(Validation, ASecondPassWhoseAxesAloneCannotBeSimulatedIsCorrected) {
   auto s = makeScenario(kSeed, 452);
   ASSERT_TRUE(s.ok());

@@ -1,6 +1,8 @@
 // ./hobsharp.sh validate [--scenarios N] [--seed S] [--out DIR]: the validation campaign
 // (docs/validation.md). Runs N random scenarios (default 600) on every core, prints the table and
-// writes DIR/validation.json and DIR/validation.md (the table the docs show).
+// writes DIR/validation.json and DIR/validation.md (the table the docs show). With --index I, runs
+// scenario I of the seed alone and prints its record (the campaign JSON's outcome) to standard
+// output, writing nothing: how a scenario the docs quote is reproduced.
 #include <atomic>
 #include <chrono>
 #include <cstdlib>
@@ -19,6 +21,7 @@ int main(int argc, char** argv) {
   int count = 600;  // 100 per class
   std::uint64_t seed = 20261125;
   std::string out = "build/validation";
+  int index = -1;
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -26,9 +29,10 @@ int main(int argc, char** argv) {
     if (a == "--scenarios" && hasValue) count = std::atoi(argv[++i]);
     else if (a == "--seed" && hasValue) seed = std::strtoull(argv[++i], nullptr, 10);
     else if (a == "--out" && hasValue) out = argv[++i];
+    else if (a == "--index" && hasValue) index = std::atoi(argv[++i]);
     else if (a == "--threads" && hasValue) threads = static_cast<unsigned>(std::max(1, std::atoi(argv[++i])));
     else {
-      std::cerr << "usage: validate [--scenarios N] [--seed S] [--out DIR] [--threads T]\n";
+      std::cerr << "usage: validate [--scenarios N] [--seed S] [--out DIR] [--threads T] [--index I]\n";
       return 2;
     }
   }
@@ -37,6 +41,17 @@ int main(int argc, char** argv) {
     return 2;
   }
   const auto start = std::chrono::steady_clock::now();
+  if (index >= 0) {
+    auto s = makeScenario(seed, index);
+    if (!s) {
+      std::cerr << "validate: scenario " << index << " of seed " << seed << ": " << s.error().message << "\n";
+      return 1;
+    }
+    std::vector<ScenarioOutcome> one{runScenario(*s)};
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << toJson(summarise(seed, std::move(one), seconds))["outcomes"][0].dump(1) << "\n";
+    return 0;
+  }
   std::vector<ScenarioOutcome> outcomes(static_cast<size_t>(count));
   std::atomic<int> next{0}, done{0};
   std::vector<std::thread> pool;
