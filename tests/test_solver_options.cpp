@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "correction.h"
+#include "solve_report.h"
 #include "test_support.h"
 #include "wheel_profile.h"
 
@@ -205,6 +206,30 @@ TEST(SolverOptions, ListedShareDecidesWhichCoefficientsDescribeACombination) {
     allCount += all->unobservable[k].coefficients.size();
   }
   EXPECT_GT(allCount, usualCount);
+}
+
+// stalledGradientCosine (least_squares_options.h): a solve ended by the function tolerance after
+// trial faces were rejected is convergence if the misfit is within the probe noise, a stall if it
+// is above it with the residual still leaning on an identified direction (cosine above the
+// option), and above the noise otherwise.
+TEST(SolverOptions, RejectedTrialFacesWithTheResidualLeaningOnADirectionAreAStall) {
+  using Eigen::LevenbergMarquardtSpace::RelativeReductionTooSmall;
+  LeastSquaresOptions o;
+  const int points = 45;
+  const double sigma = 0.01, within = 0.5 * points * sigma * sigma, above = 100 * points * sigma * sigma;
+  const auto end = [&](int unsolvable, double cosine, double misfit) {
+    LeastSquaresSummary s;
+    describeSolve(s, RelativeReductionTooSmall, unsolvable, cosine, o, "no axis direction");
+    judgeMisfit(s, misfit, points, sigma);
+    return s;
+  };
+  EXPECT_EQ(end(309, 0.77, above).status, SolveStatus::Stalled);
+  EXPECT_NE(end(309, 0.77, above).reason.find("309 trial faces rejected"), std::string::npos) << end(309, 0.77, above).reason;
+  EXPECT_EQ(end(309, 0.77, within).status, SolveStatus::Converged);
+  EXPECT_EQ(end(0, 0.77, above).status, SolveStatus::AboveNoise);
+  EXPECT_EQ(end(309, 0.5 * o.stalledGradientCosine, above).status, SolveStatus::AboveNoise);
+  o.stalledGradientCosine = 0.9;
+  EXPECT_EQ(end(309, 0.77, above).status, SolveStatus::AboveNoise);
 }
 
 }  // namespace

@@ -26,6 +26,11 @@ struct LeastSquaresOptions {
   // Converged when the largest cosine between the residual and a Jacobian column is at most this:
   // the residual is orthogonal to every direction the axes can move the face (MINPACK's gtol).
   double gradientTolerance = 1e-12;
+  // With trial faces the wheel could not grind (rejected steps): an end by the function or the
+  // parameter tolerance is convergence only when the largest cosine between the residual and a
+  // Jacobian column is at most this; above it the residual still leans on a direction the solve
+  // could move along but for the faces it could not simulate, so the solve stalled.
+  double stalledGradientCosine = 1e-3;
   // The first trust region, times the scaled norm of the start (or this value itself when the
   // start is zero), in the units of stepScale (MINPACK's factor).
   double initialTrustRegion = 1000;
@@ -58,6 +63,11 @@ struct LeastSquaresSummary {
   int unsolvableFaces = 0;   // trial steps whose face the wheel cannot grind: rejected, not an error
   double initialCost = 0;    // sum of squares at the start, µm²
   double finalCost = 0;      // sum of squares at the best iterate, µm²
+  // The last solve met the function or the parameter tolerance with trial faces rejected and the
+  // residual still leaning on an identified direction (stalledGradientCosine): if the misfit is
+  // above the probe noise, the solve stalled there (judgeMisfit) rather than ended above it.
+  bool blockedByUnsolvable = false;
+  std::string blockedReason;  // the sentence for that stall
 
   // As Ceres: the best iterate may be used unless the solve failed to start.
   bool IsSolutionUsable() const { return status != SolveStatus::Failed; }

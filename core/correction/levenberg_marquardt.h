@@ -45,7 +45,7 @@ bool solveLeastSquares(Residual& residual, Eigen::VectorXd& theta, const LeastSq
     ++iterations;
   } while (status == Running && iterations < left);
   summary.iterations += iterations;
-  describeSolve(summary, status, residual.unsolvable, o, makes);
+  describeSolve(summary, status, residual.unsolvable, lm.gnorm(), o, makes);
   return true;
 }
 

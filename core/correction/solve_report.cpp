@@ -18,8 +18,24 @@ std::string share(double tolerance) {
 }  // namespace
 
 void describeSolve(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Status st, int unsolvable,
-                   const LeastSquaresOptions& o, const std::string& makes) {
+                   double gradientCosine, const LeastSquaresOptions& o, const std::string& makes) {
   using namespace Eigen::LevenbergMarquardtSpace;
+  // Steps rejected because their faces could not be simulated shrink the trust region as failed
+  // steps do, until the function or the parameter tolerance ends the solve: convergence only if
+  // the residual no longer leans on a direction the solve can move.
+  s.blockedByUnsolvable = unsolvable > 0 && gradientCosine > o.stalledGradientCosine &&
+                          (st == RelativeReductionTooSmall || st == RelativeErrorAndReductionTooSmall ||
+                           st == RelativeErrorTooSmall);
+  s.blockedReason.clear();
+  if (s.blockedByUnsolvable) {
+    std::ostringstream r;
+    r.precision(2);
+    r << "the steps that would lower the sum of squares further lead to faces the wheel cannot grind ("
+      << unsolvable << " trial " << (unsolvable == 1 ? "face" : "faces")
+      << " rejected; the residual still leans on an identified direction, cosine " << gradientCosine
+      << "); the best estimate is kept.";
+    s.blockedReason = r.str();
+  }
   switch (st) {
     case RelativeReductionTooSmall:
     case RelativeErrorAndReductionTooSmall:
@@ -71,6 +87,13 @@ void judgeMisfit(LeastSquaresSummary& s, double misfit, int points, double sigma
   if (misfit <= noiseCeiling(points, sigma)) return;
   std::ostringstream r;
   r.precision(2);
+  if (s.blockedByUnsolvable) {
+    r << "stalled above the probe noise: " << std::sqrt(misfit / n) << " µm rms of the measured face is left (sigma "
+      << sigma << " µm), and " << s.blockedReason;
+    s.status = SolveStatus::Stalled;
+    s.reason = r.str();
+    return;
+  }
   r << "ended above the probe noise: " << std::sqrt(misfit / n) << " µm rms of the measured face is left (sigma "
     << sigma << " µm), a shape the identified directions do not make; " << s.reason;
   s.status = SolveStatus::AboveNoise;

@@ -10,10 +10,11 @@
 
 namespace hobsharp {
 
-// `unsolvable`: trial faces the wheel could not grind; `makes`: what cannot make the rest, for the
-// gradient's sentence ("no identified axis direction").
+// `unsolvable`: trial faces the wheel could not grind; `gradientCosine`: the largest cosine
+// between the residual and a Jacobian column at the end (MINPACK's gnorm); `makes`: what cannot
+// make the rest, for the gradient's sentence ("no identified axis direction").
 void describeSolve(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Status st, int unsolvable,
-                   const LeastSquaresOptions& o, const std::string& makes);
+                   double gradientCosine, const LeastSquaresOptions& o, const std::string& makes);
 
 // The largest sum of squares (µm²) the probe noise sigma alone gives over `points` values, to 3
 // standard deviations of its chi-square: points sigma² (1 + 3 sqrt(2 / points)).
