@@ -11,7 +11,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import QRCode from 'qrcode';
-import { afterError, afterResult, base, openPage, openParts, pngRegions, pngStats, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, openPage, openParts, pngRegions, pngStats, settled, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 const mmToPx = (mm) => (mm / 25.4) * 96;
@@ -126,6 +126,17 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
       [...e.querySelectorAll('.main-svg, .colorbar')].map((g) => [e.id, g.getAttribute('class'), g.getBoundingClientRect().right])
         .filter(([, , right]) => right > w + 1).map(([id, cls, right]) => `${id} ${cls} to ${Math.round(right)} px`)), width);
     assert.deepEqual(pastThePaper, [], `${format}: drawn past the printable width (${width} px) as the browser prints`);
+    // A pass that draws the plots while print media apply (here the redraw after the window's
+    // width changed, which had come 200 ms after the print's relayout and drawn them at the window's
+    // width): at the printable width too.
+    await page.setViewportSize({ width: 1300, height: 900 });
+    await settled(page);
+    const pastAfterRedraw = await page.evaluate((w) => [...document.querySelectorAll('.plot')].filter((e) => e.offsetParent && e.data).flatMap((e) =>
+      [...e.querySelectorAll('.main-svg, .colorbar')].map((g) => [e.id, g.getAttribute('class'), g.getBoundingClientRect().right])
+        .filter(([, , right]) => right > w + 1).map(([id, cls, right]) => `${id} ${cls} to ${Math.round(right)} px`)), width);
+    assert.deepEqual(pastAfterRedraw, [], `${format}: drawn past the printable width (${width} px) by a redraw while printing`);
+    await page.setViewportSize({ width: 1366, height: 900 });
+    await settled(page);
     const pdf = path.join(out, `report-${format}.pdf`);
     writeFileSync(pdf, await page.pdf({ format, printBackground: true }));
     const pages = Number(/Pages:\s+(\d+)/.exec(execFileSync('pdfinfo', [pdf], { encoding: 'utf8' }))[1]);

@@ -90,18 +90,24 @@ export function mountPlots(store) {
   // the pass history's panels, the surfaces' camera, titles broken on a phone) fits the new width.
   // Plotly's own resize only stretches the layout drawn. A change of height alone (a phone's
   // toolbar sliding away) changes nothing drawn.
+  // While print media apply the plots are at the paper's width (views/report.js), whatever the
+  // window's: a width pass then would draw them at the window's, past the paper's edge. It waits
+  // until print is over.
   let width = window.innerWidth, widthTimer = 0, widthWaiting = false;
+  const printMedia = window.matchMedia('print');
+  const widthPass = () => {
+    widthWaiting = false;
+    if (window.innerWidth === width || printMedia.matches) return;
+    width = window.innerWidth;
+    store.emit('width');  // the views that draw on their own (the pass history) draw again
+    if (store.state.result) pass();
+  };
   window.addEventListener('resize', () => {
     clearTimeout(widthTimer);
-    widthWaiting = window.innerWidth !== width;
-    widthTimer = setTimeout(() => {
-      widthWaiting = false;
-      if (window.innerWidth === width) return;
-      width = window.innerWidth;
-      store.emit('width');  // the views that draw on their own (the pass history) draw again
-      if (store.state.result) pass();
-    }, 200);
+    widthWaiting = window.innerWidth !== width && !printMedia.matches;
+    widthTimer = setTimeout(widthPass, 200);
   });
+  printMedia.addEventListener('change', () => { if (!printMedia.matches) widthPass(); });
   return {
     // draw({Plotly, result, state, current}) draws one view's plots; those added with
     // {later: true} are drawn after the others have shown. current() turns false once a newer
