@@ -19,18 +19,7 @@ std::optional<double> profileTurnRadius(const ToothFace& face, const UniversalSe
   const auto speedAt = [&](size_t k) {
     return meridianSpeed(face, s, normalSign, face.uAtRadius(profile.r[k]), profile.w[k]);
   };
-  const size_t n = profile.r.size();
-  if (n < 2) return std::nullopt;
-  // First a test with two speeds: the profile runs one way unless the speed at the tip has the
-  // root's sign no more, or two chords in a row between the points point apart (after a turn the
-  // profile runs back over itself). The speed at every point only where it may turn.
-  const auto chordDot = [&profile](size_t k) {  // chord k - 1 -> k . chord k -> k + 1
-    return (profile.R[k] - profile.R[k - 1]) * (profile.R[k + 1] - profile.R[k]) +
-           (profile.Z[k] - profile.Z[k - 1]) * (profile.Z[k + 1] - profile.Z[k]);
-  };
-  bool mayTurn = (speedAt(0) > 0) != (speedAt(n - 1) > 0);
-  for (size_t k = 1; k + 1 < n && !mayTurn; ++k) mayTurn = chordDot(k) < 0;
-  if (!mayTurn) return std::nullopt;
+  if (profile.r.empty()) return std::nullopt;
   double previous = speedAt(0);
   for (size_t k = 1; k < profile.r.size(); ++k) {
     const double speed = speedAt(k);
