@@ -227,7 +227,7 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
                       ": identified from this face alone.";
     else if (st == SolveStatus::Stalled)
       m.historyNote = "The search for one machine error explaining " + these + " stalled" + misfit.str() + left +
-                      ": identified from this face alone.";
+                      ": identified from this face alone (has the machine or the setup changed?).";
     else
       m.historyNote = "One machine error could not be sought over " + these + left + ": identified from this face alone.";
     return;

@@ -30,9 +30,9 @@ void describeSolve(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Statu
   if (s.blockedByUnsolvable) {
     std::ostringstream r;
     r.precision(2);
-    r << "the steps that would lower the sum of squares further lead to faces the wheel cannot grind ("
+    r << "the steps that would lower the sum of squares further may lead to faces the wheel cannot grind ("
       << unsolvable << " trial " << (unsolvable == 1 ? "face" : "faces")
-      << " rejected; the residual still leans on an identified direction, cosine " << gradientCosine
+      << " rejected during the solve; the residual still leans on an identified direction, cosine " << gradientCosine
       << "); the best estimate is kept.";
     s.blockedReason = r.str();
   }
@@ -88,6 +88,7 @@ void judgeMisfit(LeastSquaresSummary& s, double misfit, int points, double sigma
   std::ostringstream r;
   r.precision(2);
   if (s.blockedByUnsolvable) {
+    r.precision(3);  // as the verdict writes the face measured
     r << "stalled above the probe noise: " << std::sqrt(misfit / n) << " µm rms of the measured face is left (sigma "
       << sigma << " µm), and " << s.blockedReason;
     s.status = SolveStatus::Stalled;

@@ -10,8 +10,10 @@
 
 namespace hobsharp {
 
-// `unsolvable`: trial faces the wheel could not grind; `gradientCosine`: the largest cosine
-// between the residual and a Jacobian column at the end (MINPACK's gnorm); `makes`: what cannot
+// `unsolvable`: trial faces the wheel could not grind over the solve; `gradientCosine`: the largest
+// cosine between the residual and a Jacobian column at the start of the last iteration (MINPACK's
+// gnorm: at the final estimate unless that iteration's step was taken; on the five blocked solves
+// of the tests it equals the cosine at the final estimate to 3 digits); `makes`: what cannot
 // make the rest, for the gradient's sentence ("no identified axis direction").
 void describeSolve(LeastSquaresSummary& s, Eigen::LevenbergMarquardtSpace::Status st, int unsolvable,
                    double gradientCosine, const LeastSquaresOptions& o, const std::string& makes);

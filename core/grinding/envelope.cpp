@@ -288,7 +288,13 @@ namespace {
 // The dressed wheel's fault, not the grid's nor the measurement's: its profile offset curves too
 // sharply for the wheel to envelop the face at `point`. The field is the wheel's (the job names the
 // measured profile instead when the case gives that, evaluation.cpp).
-Error wildWheel(const GridPoint& point) {
+Error wildWheel(const SharpeningSetup& setup, const GridPoint& point) {
+  // Past the edge of the conjugate wheel's envelope too: the setup's fault, not the wheel's.
+  if (setup.wheelEdge && point.r >= setup.wheelEdge->turnRadius)
+    return Error{kWheelEdgeField,
+                 "Setup: a dressed wheel cannot be simulated near " + where(point) + ". " +
+                     wheelEdgeText(*setup.wheelEdge) + " Until the edge is past the tip, use the conjugate wheel.",
+                 ErrorCode::Unsolvable};
   return Error{kWildWheelField,
                "Wheel file: the dressed wheel's profile curves too sharply to grind the face near " + where(point) +
                    ": the wheel no longer envelops the face there (Eq. 11 holds past the envelope's edge). "
@@ -329,7 +335,7 @@ Outcome<EnvelopePoint> solve(const SharpeningSetup& setup, const SetupRotations&
     e.jacobians = jacobians;
     e.jacobianInverse = inverse;
     if (setup.wheel.hasOffset() && pastEnvelopeEdge(q, v, o.edgeStep(helical)))
-      return wildWheel(point);
+      return wildWheel(setup, point);
     if (sensitivities == Sensitivities::Skip) return e;
     if (!addSensitivities(q, e)) return fail();
     return e;

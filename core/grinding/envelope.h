@@ -73,6 +73,9 @@ struct EnvelopeSolverOptions {
 
 // The field of a refusal that blames the dressed wheel (its profile curves past the envelope's edge).
 inline constexpr const char* kWildWheelField = "wheel.profileOffset";
+// The field of a refusal at a point past the edge of any wheel's envelope (the setup's wheelEdge):
+// the tilt, which moves the edge.
+inline constexpr const char* kWheelEdgeField = "setup.tilt";
 
 // The setup's fixed angles by their cosines and sines (phi_1, gamma_m, eta of Eq. 3; psi_c of
 // Eq. 7): the same at every point of a face, so a face forms them once and hands them to each

@@ -80,7 +80,8 @@ Outcome<GroundFace> simulateGroundFace(const SharpeningSetup& setup, const AxisP
                  : nominalGuess(g, contactW);
     auto e = solveEnvelopePoint(setup, rotations, axes, g, guess, sensitivities, options);
     if (!e) {
-      if (e.error().field == kWildWheelField) return e.error();  // the wheel's fault, not the point's
+      // The wheel's fault or the setup's, not the point's.
+      if (e.error().field == kWildWheelField || e.error().field == kWheelEdgeField) return e.error();
       std::string why = e.error().message;
       const std::string gridWords = "grid: the ground face cannot be solved at the grid point";
       if (why.rfind(gridWords, 0) == 0) why = "the ground face cannot be solved at the point" + why.substr(gridWords.size());

@@ -6,7 +6,7 @@ namespace hobsharp {
 
 SharpeningSetup SharpeningSetup::make(const ToothFace& face, const UniversalSettings& universal,
                                       const MachineConstants& machine) {
-  return SharpeningSetup{face, universal, machine, outwardNormalSign(face, universal), WheelSurface{}};
+  return SharpeningSetup{face, universal, machine, outwardNormalSign(face, universal), WheelSurface{}, std::nullopt};
 }
 
 }  // namespace hobsharp

@@ -1,6 +1,7 @@
 #include "wheel_profile_turn.h"
 
 #include "autodiff.h"
+#include "number_text.h"
 #include "wheel_contact.h"
 
 namespace hobsharp {
@@ -33,13 +34,22 @@ std::optional<double> profileTurnRadius(const ToothFace& face, const UniversalSe
     for (int it = 0; it < 60 && b - a > 1e-9; ++it) {  // 1e-9 mm: far below any grid's spacing
       const double r = 0.5 * (a + b);
       auto w = contactCoordinate(face, s, normalSign, face.uAtRadius(r), 0.5 * (wa + wb));
-      if (!w) break;
+      if (!w) return a;  // the bracket's lower end: the band past the edge starts no higher
       if ((meridianSpeed(face, s, normalSign, face.uAtRadius(r), *w) > 0) == startPositive) a = r, wa = *w;
       else b = r, wb = *w;
     }
-    return 0.5 * (a + b);
+    return a;
   }
   return std::nullopt;
+}
+
+std::string wheelEdgeText(const WheelEdge& e) {
+  return "The wheel cannot grind the top " + numberText(e.outerRadius - e.turnRadius, 2) +
+         " mm of the face as designed: the conjugate wheel's profile turns back at the face radius r = " +
+         mmText(e.turnRadius) + ", below the tip (r = " + mmText(e.outerRadius) +
+         "), so the face above that radius lies past the edge of the wheel's envelope. The face figures above r = " +
+         mmText(e.turnRadius) + " are not what the machine grinds; do not rely on them. A larger tilt or a smaller "
+         "wheel moves the edge past the tip.";
 }
 
 }  // namespace hobsharp

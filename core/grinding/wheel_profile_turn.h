@@ -9,6 +9,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "tooth_face.h"
 #include "universal_settings.h"
@@ -21,9 +22,22 @@ namespace hobsharp {
 double meridianSpeed(const ToothFace& face, const UniversalSettings& s, double normalSign, double u, double w);
 
 // The first tooth-face radius (mm) of `profile` (root to tip) where the meridian speed changes sign,
-// refined between the two profile points that bracket it; nothing when the profile runs one way
-// from its first point to its last.
+// refined by bisection between the two profile points that bracket it (to 1e-9 mm; the lower end
+// of the bracket reached if a contact of Eq. 5 on the way cannot be found, so that the band said to
+// lie past the edge is never too small); nothing when the profile runs one way from its first
+// point to its last. Every point's speed is taken: the chords between the points can run one way
+// over a stretch where the speed does not (a turn and the way back inside one interval).
 std::optional<double> profileTurnRadius(const ToothFace& face, const UniversalSettings& s, double normalSign,
                                         const WheelProfile& profile);
+
+// The band of the face past the edge of the wheel's envelope: from the radius where the conjugate
+// profile turns back to the hob's outer radius, mm.
+struct WheelEdge {
+  double turnRadius = 0;
+  double outerRadius = 0;
+};
+
+// The band in the engineer's words: what the wheel cannot grind as designed, and what moves it.
+std::string wheelEdgeText(const WheelEdge& edge);
 
 }  // namespace hobsharp

@@ -539,9 +539,9 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
   numbers(v, {"wheelProfile.R", "mm", "wheel radius"}, e.wheelProfile.R);
   numbers(v, {"wheelProfile.Z", "mm", "axial position on the wheel"}, e.wheelProfile.Z);
   v.number({"wheelProfile.turnRadius", "mm", "the face radius where the conjugate profile turns back (the edge of the wheel's envelope); the outer radius when it reaches the tip", "", "profile turns back at"},
-           e.wheelTurnRadius.value_or(job.outerRadius));
+           job.setup.wheelEdge ? job.setup.wheelEdge->turnRadius : job.outerRadius);
   v.text({"wheelProfile.edge", "", "the band of the face past the edge of the wheel's envelope, in words; \"\" when the conjugate profile reaches the tip"},
-         e.wheelTurnRadius ? wheelEdgeText(*e.wheelTurnRadius, job.outerRadius) : "");
+         job.setup.wheelEdge ? wheelEdgeText(*job.setup.wheelEdge) : "");
   visitWheelOffset(e, v);
 
   const MotionRange motion = motionRange(e.groundFace);

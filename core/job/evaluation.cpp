@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "number_text.h"
-#include "wheel_profile_turn.h"
 
 namespace hobsharp {
 
@@ -63,7 +61,6 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
                               evenRadii(job.rootRadius, job.outerRadius, kWheelProfilePoints));
   if (!profile) return profile.error();
   e.wheelProfile = std::move(profile).value();
-  e.wheelTurnRadius = profileTurnRadius(s.face, s.universal, s.normalSign, e.wheelProfile);
   auto face = simulateGroundFace(s, job.runAxes, job.grid);
   // The machine ground a face with these axes and its error, but the axes alone grind none the wheel
   // envelops (a pass after a large machine error): with a measurement, the nominal axes' face stands
@@ -118,28 +115,15 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
 
 }  // namespace
 
-std::string wheelEdgeText(double turnRadius, double outerRadius) {
-  return "The conjugate wheel's profile turns back at the face radius r = " + mmText(turnRadius) + ", " +
-         numberText(outerRadius - turnRadius, 2) + " mm below the tip (r = " + mmText(outerRadius) +
-         "): the face above that radius lies past the edge of the wheel's envelope, where no wheel dressed to "
-         "this profile grinds it as designed (Eq. 11 gives the wheel's least reach there, not its greatest). "
-         "The figures of that band are the envelope's formal solution. A larger tilt or a smaller wheel may move "
-         "the edge past the tip (this note then goes).";
-}
-
 Outcome<Evaluation> evaluate(const SharpeningJob& job) {
   auto e = evaluateJob(job);
-  if (e || e.error().field != kWildWheelField) return e;
-  Error w = e.error();
   // A wheel too wild to grind with is the case's measured profile when it gives one (envelope.h).
-  if (job.wheelMeasured) w.field = "wheel.measuredProfile";
-  // Or the face is past the edge of the envelope of any wheel of this setup: say so first.
-  const SharpeningSetup& s = job.setup;
-  auto profile = wheelProfile(s.face, s.universal, s.normalSign, evenRadii(job.rootRadius, job.outerRadius, kWheelProfilePoints));
-  if (profile)
-    if (auto turn = profileTurnRadius(s.face, s.universal, s.normalSign, *profile))
-      w.message = wheelEdgeText(*turn, job.outerRadius) + " " + w.message;
-  return w;
+  if (!e && e.error().field == kWildWheelField && job.wheelMeasured) {
+    Error w = e.error();
+    w.field = "wheel.measuredProfile";
+    return w;
+  }
+  return e;
 }
 
 }  // namespace hobsharp

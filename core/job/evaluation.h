@@ -23,14 +23,9 @@
 
 namespace hobsharp {
 
-constexpr int kWheelProfilePoints = 41;
-
 struct Evaluation {
   SharpeningJob job;
   WheelProfile wheelProfile;
-  // Where the conjugate wheel's profile turns back, below the tip (wheel_profile_turn.h): the face
-  // above it lies past the edge of the wheel's envelope. Nothing when the profile reaches the tip.
-  std::optional<double> wheelTurnRadius;
   GroundFace groundFace;
   Topography topography;
   SensitivityMatrix sensitivities;  // every coefficient, at the axes that were run
@@ -62,10 +57,6 @@ struct Evaluation {
 
 // Reads the resolved job alone (sharpening_job.h), never the case's raw input.
 Outcome<Evaluation> evaluate(const SharpeningJob& job);
-
-// The sentence on a conjugate wheel profile that turns back at `turnRadius` below the tip at
-// `outerRadius` (mm): which band of the face lies past the edge of the wheel's envelope.
-std::string wheelEdgeText(double turnRadius, double outerRadius);
 
 // Fills e.inspection, e.indexCorrection and e.inspectionAfter from the rest of `e` (evaluate()
 // calls it last; the benchmark times it alone).

@@ -73,6 +73,13 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
                       " mm the wheel needs a radius of " + numberText(ends->R[0]) + " mm, but it has " +
                       numberText(job.wheelRadius) + " mm. Use a larger wheel or a smaller setup.centerDistance.");
 
+  // Where the conjugate wheel's profile turns back below the tip: the face above lies past the
+  // edge of the wheel's envelope (docs/method.md).
+  auto profile = wheelProfile(face, universal, job.setup.normalSign, evenRadii(job.rootRadius, job.outerRadius, kWheelProfilePoints));
+  if (!profile) return profile.error();
+  if (auto turn = profileTurnRadius(face, universal, job.setup.normalSign, *profile))
+    job.setup.wheelEdge = WheelEdge{*turn, job.outerRadius};
+
   // The wheel as dressed or measured (wheel_input.h), or the conjugate wheel.
   auto wheel = resolveWheelSurface(in, job.setup, job.rootRadius, job.outerRadius);
   if (!wheel) return wheel.error();

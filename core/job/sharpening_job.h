@@ -16,6 +16,10 @@
 
 namespace hobsharp {
 
+// The points of the wheel's axial profile, root to tip: the result's wheelProfile, and the
+// profile the setup's wheelEdge is found on.
+constexpr int kWheelProfilePoints = 41;
+
 struct SharpeningJob {
   SharpeningSetup setup;      // angles in rad; setup.wheel the case's wheel (wheel_input.h)
   double rootRadius = 0;      // mm

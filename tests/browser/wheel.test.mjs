@@ -149,8 +149,19 @@ test('a face past the edge of the wheel\'s envelope is said in the answer, and g
   const edge = readFileSync(path.join(root, 'tests', 'data', 'wheel-edge.json'));
   await afterResult(page, () => page.setInputFiles('#load-case', { name: 'wheel-edge.json', mimeType: 'application/json', buffer: edge }));
   assert.ok(await page.isVisible('#wheel-edge'));
-  assert.match(await page.textContent('#wheel-edge'), /turns back at the face radius r = 23\.915 mm, 0\.077 mm below the tip \(r = 23\.992 mm\)/);
+  assert.match(await page.textContent('#wheel-edge'), /^The wheel cannot grind the top 0\.077 mm of the face as designed: the conjugate wheel's profile turns back at the face radius r = 23\.915 mm, below the tip \(r = 23\.992 mm\)/);
   await page.locator('#summary').screenshot({ path: path.join(shots, 'wheel-edge.png') });
+  // A dressed wheel (a zero offset over the contact range) cannot be simulated past the edge:
+  // refused at the tilt, which moves the edge, in words; the conjugate wheel again, and it goes.
+  const R = await page.$eval('#plot-wheel', (el) => el.data.find((t) => !t.xaxis || t.xaxis === 'x').y);
+  const [lo, hi] = [Math.min(...R), Math.max(...R)];
+  await afterError(page, () => page.setInputFiles('#wheel-file', csvFile('zero.csv', `R (mm),offset (µm)\n${lo},0\n${(lo + hi) / 2},0\n${hi},0\n`)));
+  const tilt = page.locator('label:has([data-field="setup.tilt"]) .field-message');
+  assert.match(await tilt.textContent(), /^Setup: a dressed wheel cannot be simulated near r = 23\.992 mm, x = .*The wheel cannot grind the top 0\.077 mm of the face as designed/);
+  assert.doesNotMatch(await tilt.textContent(), /Wheel file/);
+  await page.locator('fieldset:has([data-field="setup.tilt"])').screenshot({ path: path.join(shots, 'wheel-edge-refused.png') });
+  await afterResult(page, () => page.click('#wheel-conjugate'));
+  assert.ok(await page.isHidden('label:has([data-field="setup.tilt"]) .field-message'), 'the refusal goes with the dressed wheel');
   await afterResult(page, () => page.setInputFiles('#load-case', { name: 'tab1.json', mimeType: 'application/json',
     buffer: readFileSync(path.join(root, 'tests', 'data', 'tab1.json')) }));
   assert.ok(await page.isHidden('#wheel-edge'));

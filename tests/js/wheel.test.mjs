@@ -150,15 +150,17 @@ test('an offset too sharp to grind blames the wheel, not the grid or the measure
 // The edge of the wheel's envelope (docs/method.md): seed 2026's scenario 311 of the validation
 // campaign as a case file, whose conjugate profile turns back 0.077 mm below the tip. The module
 // says where, in mm and in words; Tab. 1's profile reaches the tip, and says nothing. A dressed
-// wheel cannot be simulated past the edge, and the refusal says why first; with the conjugate
-// wheel the face is simulated (its tip band the envelope's formal solution).
+// wheel cannot be simulated past the edge: refused at the setup's tilt, saying why, not blaming
+// the wheel; with the conjugate wheel the face is simulated (its tip band the envelope's formal
+// solution, which the words say not to rely on).
 test('a conjugate profile that turns back below the tip is said, with its radius', async () => {
   const { readFileSync } = await import('node:fs');
   const edgeCase = () => JSON.parse(readFileSync(new URL('../data/wheel-edge.json', import.meta.url), 'utf8'));
   const r = hobsharp.evaluate(edgeCase());
   const tip = r.setup.outerRadius;
   assert.ok(r.wheelProfile.turnRadius > tip - 0.1 && r.wheelProfile.turnRadius < tip - 0.05, `turns at ${r.wheelProfile.turnRadius}`);
-  assert.match(r.wheelProfile.edge, /^The conjugate wheel's profile turns back at the face radius r = 23\.915 mm, 0\.077 mm below the tip \(r = 23\.992 mm\)/);
+  assert.match(r.wheelProfile.edge, /^The wheel cannot grind the top 0\.077 mm of the face as designed: the conjugate wheel's profile turns back at the face radius r = 23\.915 mm, below the tip \(r = 23\.992 mm\)/);
+  assert.match(r.wheelProfile.edge, /The face figures above r = 23\.915 mm are not what the machine grinds; do not rely on them\./);
   // The profile's points do not show it: R falls over the last interval too, the turn and the way
   // back lying inside it. The meridian's speed at each point finds it (wheel_profile_turn.h).
   const R = r.wheelProfile.R, n = R.length;
@@ -171,7 +173,8 @@ test('a conjugate profile that turns back below the tip is said, with its radius
   const dressed = edgeCase();
   const Rs = r.wheelProfile.R, lo = Math.min(...Rs), hi = Math.max(...Rs);
   dressed.wheel.profileOffset = { R: [lo, (lo + hi) / 2, hi], offset: [0, 0, 0] };
-  assert.throws(() => hobsharp.evaluate(dressed), (e) => e instanceof HobSharpError &&
-    /^The conjugate wheel's profile turns back at the face radius r = 23\.915 mm/.test(e.message));
+  assert.throws(() => hobsharp.evaluate(dressed), (e) => e instanceof HobSharpError && e.field === 'setup.tilt' &&
+    /^Setup: a dressed wheel cannot be simulated near r = 23\.992 mm, x = .* The wheel cannot grind the top 0\.077 mm/.test(e.message) &&
+    !/Wheel file/.test(e.message));
   assert.ok(hobsharp.evaluate(paper()).topography, 'the module lives on');
 });
