@@ -78,7 +78,7 @@ TEST(PaperExample, WheelProfileTable) {
 TEST(PaperExample, EvaluationCarriesTheWheelProfileRootToTip) {
   auto e = evaluate(jobOf(paperCase()));
   ASSERT_TRUE(e.ok()) << e.error().message;
-  const WheelProfile& p = e->wheelProfile;
+  const WheelProfile& p = e->job.wheelProfile;
   ASSERT_EQ(p.r.size(), static_cast<size_t>(kWheelProfilePoints));
   EXPECT_DOUBLE_EQ(p.r.front(), 19.0);
   EXPECT_DOUBLE_EQ(p.r.back(), 40.0);

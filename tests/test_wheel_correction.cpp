@@ -385,7 +385,7 @@ TEST(WheelCorrection, ResultFieldsAndTheSwitch) {
   // The dresser path lies the dressing's offset from the conjugate profile, along its normal.
   const WheelCorrection& w = *on->wheelCorrection;
   for (size_t k = 0; k < w.dresser.R.size(); ++k) {
-    const double moved = std::hypot(w.dresser.dressedR[k] - on->wheelProfile.R[k], w.dresser.dressedZ[k] - on->wheelProfile.Z[k]);
+    const double moved = std::hypot(w.dresser.dressedR[k] - on->job.wheelProfile.R[k], w.dresser.dressedZ[k] - on->job.wheelProfile.Z[k]);
     EXPECT_NEAR(moved * 1000, std::abs(w.dresser.offset[k] * 1000), 1e-9) << k;
     EXPECT_LE(std::abs(w.dresser.offset[k]) * 1000, 1.5 * largestOffset(w) + 1e-9);
   }

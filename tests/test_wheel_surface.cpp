@@ -157,9 +157,9 @@ void expectZeroOffsetChangesNothing(CaseInput c) {
   ASSERT_TRUE(zero.correction && plain.correction);
   EXPECT_LT((zero.correction->after.normal - plain.correction->after.normal).cwiseAbs().maxCoeff(), 1e-9);
   // The dressed profile is the conjugate one.
-  for (size_t k = 0; k < plain.wheelProfile.R.size(); ++k) {
-    EXPECT_EQ(zero.dressedProfile.dressedR[k], plain.wheelProfile.R[k]);
-    EXPECT_EQ(zero.dressedProfile.dressedZ[k], plain.wheelProfile.Z[k]);
+  for (size_t k = 0; k < plain.job.wheelProfile.R.size(); ++k) {
+    EXPECT_EQ(zero.dressedProfile.dressedR[k], plain.job.wheelProfile.R[k]);
+    EXPECT_EQ(zero.dressedProfile.dressedZ[k], plain.job.wheelProfile.Z[k]);
   }
 }
 
@@ -178,9 +178,9 @@ void expectConstantOffsetGrindsParallelFace(const CaseInput& base) {
     EXPECT_GT(e.topography.normal.cwiseAbs().minCoeff(), 0.9 * std::abs(delta));
     EXPECT_LT(miss, 1e-6) << delta;
     // The dressed profile lies delta from the conjugate one.
-    for (size_t k = 0; k < e.wheelProfile.R.size(); ++k)
-      EXPECT_NEAR(std::hypot(e.dressedProfile.dressedR[k] - e.wheelProfile.R[k],
-                             e.dressedProfile.dressedZ[k] - e.wheelProfile.Z[k]),
+    for (size_t k = 0; k < e.job.wheelProfile.R.size(); ++k)
+      EXPECT_NEAR(std::hypot(e.dressedProfile.dressedR[k] - e.job.wheelProfile.R[k],
+                             e.dressedProfile.dressedZ[k] - e.job.wheelProfile.Z[k]),
                   std::abs(delta) * 1e-3, 1e-12);
   }
 }

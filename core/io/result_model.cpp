@@ -533,11 +533,11 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
   v.axes({"runAxes", kCoefficientUnit, "the polynomials simulated: case.axes, or the nominal ones"}, job.runAxes);
 
   numbers(v, {"wheelProfile.r", "mm", "tooth-face radius, root to tip (limits().wheelProfilePoints points)"},
-          e.wheelProfile.r);
+          e.job.wheelProfile.r);
   numbers(v, {"wheelProfile.beta", kMotionUnit, "contact coordinate on the face: beta* (rad), x* for a straight gash (mm)"},
-          e.wheelProfile.w);
-  numbers(v, {"wheelProfile.R", "mm", "wheel radius"}, e.wheelProfile.R);
-  numbers(v, {"wheelProfile.Z", "mm", "axial position on the wheel"}, e.wheelProfile.Z);
+          e.job.wheelProfile.w);
+  numbers(v, {"wheelProfile.R", "mm", "wheel radius"}, e.job.wheelProfile.R);
+  numbers(v, {"wheelProfile.Z", "mm", "axial position on the wheel"}, e.job.wheelProfile.Z);
   v.number({"wheelProfile.turnRadius", "mm", "the face radius where the conjugate profile turns back (the edge of the wheel's envelope); the outer radius when it reaches the tip", "", "profile turns back at"},
            job.setup.wheelEdge ? job.setup.wheelEdge->turnRadius : job.outerRadius);
   v.text({"wheelProfile.edge", "", "the band of the face past the edge of the wheel's envelope, in words; \"\" when the conjugate profile reaches the tip"},

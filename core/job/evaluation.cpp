@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-
 namespace hobsharp {
 
 InspectedFace inspectedFace(const Evaluation& e) {
@@ -57,10 +56,6 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
   Evaluation e;
   e.job = job;
   const SharpeningSetup& s = job.setup;
-  auto profile = wheelProfile(s.face, s.universal, s.normalSign,
-                              evenRadii(job.rootRadius, job.outerRadius, kWheelProfilePoints));
-  if (!profile) return profile.error();
-  e.wheelProfile = std::move(profile).value();
   auto face = simulateGroundFace(s, job.runAxes, job.grid);
   // The machine ground a face with these axes and its error, but the axes alone grind none the wheel
   // envelops (a pass after a large machine error): with a measurement, the nominal axes' face stands
@@ -76,13 +71,13 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
   e.topography = topographyOf(e.groundFace);
   e.sensitivities = sensitivityMatrix(e.groundFace, allCoefficients(job.runAxes.degree()));
   if (s.wheel.hasOffset()) {
-    e.dressedProfile = dressedProfile(s, e.wheelProfile);
+    e.dressedProfile = dressedProfile(s, job.wheelProfile);
     e.offsetSensitivities = wheelOffsetSensitivity(e.groundFace, s.wheel);
   }
   if (measured.grid && job.correction.wheel) {  // docs/method.md §Wheel-profile correction
     const double rLow = std::max(job.grid.r.front(), job.rootRadius), rHigh = std::min(job.grid.r.back(), job.outerRadius);
     auto c = correctAxesAndWheel(s, job.nominalAxes, job.runAxes, e.groundFace, *measured.grid, job.correction,
-                                 e.wheelProfile, rLow, rHigh, linearisedAt);
+                                 job.wheelProfile, rLow, rHigh, linearisedAt);
     if (!c) return c.error();
     e.correction = std::move(c->correction);
     e.wheelCorrection = std::move(c->wheel);

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <optional>
-#include <string>
 
 #include "correction.h"
 #include "dressed_wheel.h"
@@ -25,7 +24,6 @@ namespace hobsharp {
 
 struct Evaluation {
   SharpeningJob job;
-  WheelProfile wheelProfile;
   GroundFace groundFace;
   Topography topography;
   SensitivityMatrix sensitivities;  // every coefficient, at the axes that were run
@@ -38,7 +36,7 @@ struct Evaluation {
   std::optional<IndexCorrection> indexCorrection;
   std::optional<GashFaces> gashFaces;  // with inspection.gashTopographies: per gash, and the worst
   std::optional<Inspection> inspectionAfter;
-  // With a wheel profile offset (job.setup.wheel): the dressed profile at wheelProfile's points and
+  // With a wheel profile offset (job.setup.wheel): the dressed profile at job.wheelProfile's points and
   // the face's sensitivity to the offset's knot values; empty for the conjugate wheel.
   DressedProfile dressedProfile;
   WheelOffsetSensitivity offsetSensitivities;

@@ -73,11 +73,12 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
                       " mm the wheel needs a radius of " + numberText(ends->R[0]) + " mm, but it has " +
                       numberText(job.wheelRadius) + " mm. Use a larger wheel or a smaller setup.centerDistance.");
 
-  // Where the conjugate wheel's profile turns back below the tip: the face above lies past the
-  // edge of the wheel's envelope (docs/method.md).
+  // The conjugate wheel's profile, and where it turns back below the tip: the face above lies
+  // past the edge of the wheel's envelope (docs/method.md).
   auto profile = wheelProfile(face, universal, job.setup.normalSign, evenRadii(job.rootRadius, job.outerRadius, kWheelProfilePoints));
   if (!profile) return profile.error();
-  if (auto turn = profileTurnRadius(face, universal, job.setup.normalSign, *profile))
+  job.wheelProfile = std::move(profile).value();
+  if (auto turn = profileTurnRadius(face, universal, job.setup.normalSign, job.wheelProfile))
     job.setup.wheelEdge = WheelEdge{*turn, job.outerRadius};
 
   // The wheel as dressed or measured (wheel_input.h), or the conjugate wheel.

@@ -13,6 +13,7 @@
 #include "outcome.h"
 #include "earlier_passes.h"
 #include "sharpening_setup.h"
+#include "wheel_profile.h"
 
 namespace hobsharp {
 
@@ -25,6 +26,7 @@ struct SharpeningJob {
   double rootRadius = 0;      // mm
   double outerRadius = 0;     // mm
   double wheelRadius = 0;     // mm
+  WheelProfile wheelProfile;  // the conjugate wheel's profile (Eq. 6), kWheelProfilePoints radii, root to tip
   bool settingAngleDerived = false;
   bool centerDistanceDerived = false;
   bool wheelMeasured = false;    // setup.wheel is the case's wheel.measuredProfile

@@ -84,10 +84,10 @@ void checkResult(const Evaluation& e) {
   finiteAxes(e.job.runAxes, "run axis coefficient");
   finite(e.job.rootRadius, "root radius");
   finite(e.job.wheelRadius, "wheel radius");
-  finiteAll(e.wheelProfile.r, "wheel profile r");
-  finiteAll(e.wheelProfile.w, "wheel profile contact coordinate");
-  finiteAll(e.wheelProfile.R, "wheel profile R");
-  finiteAll(e.wheelProfile.Z, "wheel profile Z");
+  finiteAll(e.job.wheelProfile.r, "wheel profile r");
+  finiteAll(e.job.wheelProfile.w, "wheel profile contact coordinate");
+  finiteAll(e.job.wheelProfile.R, "wheel profile R");
+  finiteAll(e.job.wheelProfile.Z, "wheel profile Z");
   for (const EnvelopePoint& p : e.groundFace.envelope) finite(p.phi, "motion parameter");
   finiteTopography(e.topography, "topography");
   finiteMatrix(e.sensitivities.normal, "sensitivity");
