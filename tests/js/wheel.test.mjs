@@ -6,6 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadHobSharp, HobSharpError } from '../../wasm/hobsharp.mjs';
 import { native, paper } from './native-build.mjs';
+import { wheelEdgeText } from '../../web/src/views/wheel-edge.js';
 
 const hobsharp = await loadHobSharp();
 
@@ -169,6 +170,10 @@ test('a conjugate profile that turns back below the tip is said, with its radius
   const p = hobsharp.evaluate(paper());
   assert.equal(p.wheelProfile.edge, '');
   assert.equal(p.wheelProfile.turnRadius, p.setup.outerRadius);
+  // The page's warning (views/wheel-edge.js) is the module's sentence, and nothing for Tab. 1.
+  assert.equal(wheelEdgeText(r), r.wheelProfile.edge);
+  assert.equal(wheelEdgeText(p), '');
+  assert.equal(wheelEdgeText(undefined), '');
 
   const dressed = edgeCase();
   const Rs = r.wheelProfile.R, lo = Math.min(...Rs), hi = Math.max(...Rs);

@@ -1,7 +1,7 @@
 // A deviation topography as a 3D surface: Plotly's surface trace (WebGL). Dragging turns it, the
 // wheel zooms, and the pointer shows the grid point's r, x and deviation with their units.
 import { DEVIATION_SCALE, deviationColourBar } from './colours.js';
-import { NARROW_PLOT, isNarrowPlot, plotWidth, reactPlot } from './config.js';
+import { isNarrowPlot, plotWidth, reactPlot } from './config.js';
 import { gridAxisTitles, gridHover } from './grid-units.js';
 
 // The box is 1.4 : 1 : 0.6, seen from far enough that the axis titles stay inside the plot: in a
@@ -9,9 +9,10 @@ import { gridAxisTitles, gridHover } from './grid-units.js';
 // times. On a phone (narrower than NARROW_PLOT px) the colour bar lies under the scene, which then
 // has the plot's whole width.
 const WIDE = 760;
-const scene = (width) => {
+// narrow: isNarrowPlot of the plot, whose width (px, 0 when unknown) this is.
+const scene = (width, narrow) => {
   // (On a phone the scene has the width the colour bar took beside it, and is seen a little nearer.)
-  const k = (width || WIDE) < NARROW_PLOT ? 1.1 : Math.min(1.3, Math.max(1, WIDE / (width || WIDE)));
+  const k = narrow ? 1.1 : Math.min(1.3, Math.max(1, WIDE / (width || WIDE)));
   return {
     aspectmode: 'manual', aspectratio: { x: 1.4, y: 1, z: 0.6 },
     camera: { eye: { x: 2.0 * k, y: -2.9 * k, z: 1.5 * k }, center: { x: 0, y: 0, z: -0.12 } },
@@ -42,7 +43,7 @@ export function drawSurface(Plotly, el, { x, y, z, range, title }) {
     title: { text: `${title} (3D)`, font: { size: 14 }, x: 0.02, xanchor: 'left' }, height: narrow ? 460 : 400,
     margin: { t: 36, r: 10, b: narrow ? 90 : 0, l: 0 },
     scene: {
-      ...scene(width),
+      ...scene(width, narrow),
       xaxis: axis(titles.x), yaxis: axis(titles.y),
       zaxis: axis(titles.z, { range: [-range, range] }),
     },

@@ -1,9 +1,9 @@
 // The summary at the top of the results (issue 23): what to do first, then the answer: the verdict
 // and what the pass will leave (views/measured.js writes them), the rake face's class with its
 // conformity (views/inspection.js), the face's rms before and after, the axes to run with their
-// Copy and NC program buttons (views/machine-axes.js) and "Use as next run". This view writes the
-// line on what to do and the rms, and the warning when part of the face lies past the edge of the
-// wheel's envelope; the others write their own elements, which stand here.
+// Copy and NC program buttons (views/machine-axes.js) and "Use as next run", and the warning when
+// part of the face lies past the edge of the wheel's envelope (views/wheel-edge.js). This view
+// writes the line on what to do and the rms; the others write their own elements, which stand here.
 import { LEAST_RMS, fixed } from '../format.js';
 import { fieldUnit } from '../result-fields.js';
 
@@ -50,10 +50,6 @@ export function rmsText(result, unitOf = fieldUnit) {
 export function mountSummary(store) {
   store.on('result', ({ result }) => {
     $('#first-step').textContent = firstStepText(result);
-    // A face whose tip band lies past the edge of the wheel's envelope (docs/method.md): the module's sentence.
-    const edge = (result && result.wheelProfile && result.wheelProfile.edge) || '';
-    $('#wheel-edge').hidden = !edge;
-    $('#wheel-edge').textContent = edge;
     $('#summary-rms').textContent = rmsText(result);
     $('#summary-class').hidden = !result.inspection;
   });
