@@ -10,6 +10,8 @@
 #   ./hobsharp.sh validate [--scenarios N] [--seed S] [--docs] [--index I]
 #                         the validation campaign on random hobs (docs/validation.md); --docs
 #                         writes its table, JSON and plot into docs/validation/
+#   ./hobsharp.sh validate --calibration [--hobs H] [--seed S] [--docs]
+#                         the calibration of the values read about the machine (calibration.json)
 set -euo pipefail
 cd "$(dirname "$0")"
 ROOT=$PWD
@@ -160,8 +162,9 @@ case "${1:-}" in
       if [ "$a" = --docs ]; then OUT=$ROOT/docs/validation; else ARGS+=("$a"); fi
     done
     "$BUILD/tests/hobsharp_validate" --out "$OUT" "${ARGS[@]}"
-    # --index I: one scenario's record, printed; no table, no plot.
-    case " ${ARGS[*]} " in *" --index "*) exit 0 ;; esac
+    # --index I: one scenario's record, printed; --calibration: the values read, calibration.json.
+    # No table, no plot.
+    case " ${ARGS[*]} " in *" --index "* | *" --calibration "*) exit 0 ;; esac
     # The plot beside the table: Plotly from node_modules in Debian's Chromium (playwright-core).
     install_npm
     node tests/validation/plot.mjs "$OUT/validation.json"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "identification_cases.h"
@@ -179,6 +180,34 @@ TEST(IdentifiedWords, CombinationValueIsCalibratedOverThirtySeeds) {
     EXPECT_LE(spread / given, 1.4);
     EXPECT_NEAR(mean, 8.0, 3 * given);
   }
+}
+
+// The identified error's spread (correction.changePerNoise) is taken at the identified error,
+// the values read at the axes run (measured_face_correction.cpp): the two are one formula,
+// axisSpreadPerNoise equals identifiedAxes' spreadPerNoise for the same sensitivities.
+TEST(IdentifiedWords, AxisSpreadIsIdentifiedAxesSpread) {
+  std::vector<Coefficient> cs;
+  for (Axis a : kAxes)
+    for (int k = 0; k <= 2; ++k) cs.push_back(Coefficient{a, k});
+  const int q = static_cast<int>(cs.size());
+  std::srand(7);
+  const Eigen::MatrixXd S = Eigen::MatrixXd::Random(40, q) * 100;
+  const Eigen::VectorXd step = Eigen::VectorXd::Constant(q, 1e-4);
+  const CorrectionOptions o;
+  const IdentifiedAxes id = identifiedAxes(cs, step, S, Eigen::MatrixXd(), Eigen::VectorXd::Random(40), -2, 3, 0.5, o);
+  const std::array<double, kAxisCount> spread = axisSpreadPerNoise(cs, step, S, Eigen::MatrixXd(), -2, 3);
+  for (int i = 0; i < kAxisCount; ++i) {
+    EXPECT_GT(spread[i], 0) << axisName(kAxes[i]);
+    EXPECT_NEAR(spread[i], id.spreadPerNoise[i], 1e-12 * spread[i]) << axisName(kAxes[i]);
+  }
+  // A column the face does not show at all adds nothing; one outside the identifiable space is
+  // left out of both.
+  Eigen::MatrixXd basis = Eigen::MatrixXd::Identity(q, q);
+  basis.row(0).setZero();
+  const std::array<double, kAxisCount> without = axisSpreadPerNoise(cs, step, S, Eigen::MatrixXd(), -2, 3, basis);
+  const IdentifiedAxes idWithout =
+      identifiedAxes(cs, step, S, Eigen::MatrixXd(), Eigen::VectorXd::Random(40), -2, 3, 0.5, o, basis);
+  for (int i = 0; i < kAxisCount; ++i) EXPECT_NEAR(without[i], idWithout.spreadPerNoise[i], 1e-12 * without[i]);
 }
 
 // The fields reach the result: per axis its reading and value, and the sentences.

@@ -37,8 +37,13 @@ constexpr int kDecisionRounds = 3;
 struct ParameterBlock {
   Eigen::MatrixXd directions;  // n x m: the block's free directions, per unit of z
   Wild wild = Wild::TakenWhenNeeded;
+  // The value (own units, n) the start face already holds, when the search starts at an estimate:
+  // the directions are decided on what the whole error makes (the data linearised at the start plus
+  // J times this), not on the misfit left at the start alone, of which a start near the solution
+  // leaves little (a few directions taken, the rest "unseen" to the bound and the words). Empty: 0.
+  Eigen::VectorXd startValue;
 
-  static ParameterBlock free(int n, Wild wild) { return {Eigen::MatrixXd::Identity(n, n), wild}; }
+  static ParameterBlock free(int n, Wild wild) { return {Eigen::MatrixXd::Identity(n, n), wild, Eigen::VectorXd()}; }
 };
 
 // What the identification asks of the face; x holds each block's value in its own units.

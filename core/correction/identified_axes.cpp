@@ -164,7 +164,86 @@ std::string listText(const std::vector<std::string>& items) {
   return s;
 }
 
+// The face's Jacobian in machine steps and the data, with the nuisance's directions taken out (the
+// wheel identified alongside: what it can make tells nothing about the axes), reduced to the
+// triangular factor of [A y] (Q^T [A y] = R): every fit of some of A's columns to y or to another
+// column is the same on R, which has q + 1 rows, not a row per probe point (a 150 x 150 grid has
+// 22,500). A coefficient outside the identifiable space `basis` (a straight gash's X, Y and B)
+// moves nothing the first-order face shows: its column is set to 0 (its computed one is rounding
+// and second order).
+void factorFace(const Eigen::MatrixXd& S, const Eigen::VectorXd& step, const Eigen::MatrixXd& nuisance,
+                const Eigen::VectorXd& data, const Eigen::MatrixXd& basis, Eigen::MatrixXd& A, Eigen::VectorXd& y) {
+  const int q = static_cast<int>(S.cols());
+  A = S * step.asDiagonal();
+  if (basis.rows() == q)
+    for (int j = 0; j < q; ++j)
+      if (basis.row(j).norm() < kLeak) A.col(j).setZero();
+  y = data;
+  if (nuisance.cols() > 0 && nuisance.rows() == S.rows()) {
+    const Eigen::JacobiSVD<Eigen::MatrixXd> ns(nuisance, Eigen::ComputeThinU);
+    for (int i = 0; i < ns.singularValues().size(); ++i) {
+      if (!(ns.singularValues()(i) > kNull * ns.singularValues()(0))) break;
+      const Eigen::VectorXd u = ns.matrixU().col(i);
+      A -= u * (u.transpose() * A);
+      y -= u * u.dot(y);
+    }
+  }
+  Eigen::MatrixXd Ay(A.rows(), q + 1);
+  Ay << A, y;
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Ay);
+  const int rows = static_cast<int>(std::min<Eigen::Index>(Ay.rows(), q + 1));
+  const Eigen::MatrixXd R = qr.matrixQR().topRows(rows).triangularView<Eigen::Upper>();
+  A = R.leftCols(q);
+  y = R.col(q);
+}
+
+// The directions the face shows: the singular values above kNull of the largest.
+int shownRank(const Eigen::VectorXd& s) {
+  int rank = 0;
+  while (rank < s.size() && s(rank) > kNull * s(0)) ++rank;
+  return rank;
+}
+
 }  // namespace
+
+std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>& cs, const Eigen::VectorXd& step,
+                                                  const Eigen::MatrixXd& S, const Eigen::MatrixXd& nuisance,
+                                                  double min, double max, const Eigen::MatrixXd& basis) {
+  std::array<double, kAxisCount> spread{};
+  const int q = static_cast<int>(cs.size());
+  if (q == 0 || S.rows() == 0 || S.cols() != q) return spread;
+  Eigen::MatrixXd A;
+  Eigen::VectorXd y;
+  factorFace(S, step, nuisance, Eigen::VectorXd::Zero(S.rows()), basis, A, y);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  if (!(s.size() && s(0) > 0)) return spread;
+  const int rank = shownRank(s);
+  const Eigen::MatrixXd W = svd.matrixV().leftCols(rank) * s.head(rank).cwiseInverse().asDiagonal();
+  // At each sample axis a's curve is g_a^T z (z the coefficients in machine steps, g_a their machine
+  // steps in µm or µrad times the sample's powers): its variance per unit noise g_a^T W W^T g_a, a
+  // quadratic form in the powers p_a whose matrix diag(c_a) W_a W_a^T diag(c_a) is formed once.
+  Blocks block;
+  for (int j = 0; j < q; ++j) block[static_cast<int>(cs[static_cast<size_t>(j)].axis)].push_back(j);
+  const MotionSamples samples = motionSamples(cs, min, max);
+  for (int i = 0; i < kAxisCount; ++i) {
+    const std::vector<int>& b = block[static_cast<size_t>(i)];
+    const int n = static_cast<int>(b.size());
+    if (n == 0 || rank == 0) continue;
+    Eigen::MatrixXd Wc(n, rank);
+    for (int k = 0; k < n; ++k) {
+      const int j = b[static_cast<size_t>(k)];
+      Wc.row(k) = W.row(j) * (step(j) * displayFactor(cs[static_cast<size_t>(j)].axis));
+    }
+    const Eigen::MatrixXd G = Wc * Wc.transpose();
+    Eigen::VectorXd power(n);
+    for (int sample = 0; sample < kSamples; ++sample) {
+      for (int k = 0; k < n; ++k) power(k) = samples.power(sample, cs[static_cast<size_t>(b[static_cast<size_t>(k)])].degree);
+      spread[static_cast<size_t>(i)] = std::max(spread[static_cast<size_t>(i)], std::sqrt(std::max(0.0, power.dot(G * power))));
+    }
+  }
+  return spread;
+}
 
 const char* readingName(AxisReading r) {
   switch (r) {
@@ -187,36 +266,9 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
     if (!block[static_cast<int>(a)].empty()) out.axes[static_cast<int>(a)].reading = AxisReading::Unseen;
   if (q == 0 || S.rows() == 0 || S.cols() != q || data.size() != S.rows()) return out;
 
-  // The face's Jacobian in machine steps, and the data, with the nuisance's directions taken out
-  // (the wheel identified alongside: what it can make tells nothing about the axes).
-  Eigen::MatrixXd A = S * step.asDiagonal();
-  // A coefficient outside the identifiable space (a straight gash's X, Y and B) moves nothing the
-  // first-order face shows: its column is set to 0 (its computed one is rounding and second order).
-  if (basis.rows() == q)
-    for (int j = 0; j < q; ++j)
-      if (basis.row(j).norm() < kLeak) A.col(j).setZero();
-  Eigen::VectorXd y = data;
-  if (nuisance.cols() > 0 && nuisance.rows() == S.rows()) {
-    const Eigen::JacobiSVD<Eigen::MatrixXd> ns(nuisance, Eigen::ComputeThinU);
-    for (int i = 0; i < ns.singularValues().size(); ++i) {
-      if (!(ns.singularValues()(i) > kNull * ns.singularValues()(0))) break;
-      const Eigen::VectorXd u = ns.matrixU().col(i);
-      A -= u * (u.transpose() * A);
-      y -= u * u.dot(y);
-    }
-  }
-  // Every fit below is a least-squares fit of some of A's columns to y or to another column: the
-  // same on the triangular factor of [A y] (Q^T [A y] = R), which has q + 1 rows, not a row per
-  // probe point (a 150 x 150 grid has 22,500).
-  {
-    Eigen::MatrixXd Ay(A.rows(), q + 1);
-    Ay << A, y;
-    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Ay);
-    const int rows = static_cast<int>(std::min<Eigen::Index>(Ay.rows(), q + 1));
-    const Eigen::MatrixXd R = qr.matrixQR().topRows(rows).triangularView<Eigen::Upper>();
-    A = R.leftCols(q);
-    y = R.col(q);
-  }
+  Eigen::MatrixXd A;
+  Eigen::VectorXd y;
+  factorFace(S, step, nuisance, data, basis, A, y);
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
   const Eigen::VectorXd& s = svd.singularValues();
   const double s0 = s.size() ? s(0) : 0.0;
@@ -224,8 +276,7 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
     for (Axis a : kAxes)
       if (!block[static_cast<int>(a)].empty()) out.unseen.push_back(a);
   }
-  int rank = 0;
-  while (rank < s.size() && s(rank) > kNull * s0) ++rank;
+  const int rank = shownRank(s);
   // Every direction the face shows: the covariance per unit noise variance is W W^T; N spans the
   // combinations it does not show.
   const Eigen::MatrixXd W = svd.matrixV().leftCols(rank) * s.head(rank).cwiseInverse().asDiagonal();

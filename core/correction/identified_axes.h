@@ -86,6 +86,15 @@ struct IdentifiedAxes {
 // [rangeMin, rangeMax]: the motion range; probeNoise: sigma, µm; basis: the identifiable space's
 // basis over the coefficients (IdentifiableSpace::basis), whose coefficients outside it (a straight
 // gash's X, Y, B) the face does not show; empty: judged from S alone.
+// Per axis, the standard deviation of its curve per µm of noise over every direction the face
+// shows, largest over [rangeMin, rangeMax]: the spread an error identified with the sensitivities S
+// (at that error) has, where identifiedAxes reads the face with the run's (measured_face_correction.cpp).
+// The arguments as identifiedAxes's; equal to its spreadPerNoise for the same S.
+std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>& coefficients, const Eigen::VectorXd& step,
+                                                  const Eigen::MatrixXd& S, const Eigen::MatrixXd& nuisance,
+                                                  double rangeMin, double rangeMax,
+                                                  const Eigen::MatrixXd& basis = Eigen::MatrixXd());
+
 IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& coefficients, const Eigen::VectorXd& step,
                               const Eigen::MatrixXd& S, const Eigen::MatrixXd& nuisance, const Eigen::VectorXd& data,
                               double rangeMin, double rangeMax, double probeNoise, const CorrectionOptions& options,

@@ -266,19 +266,30 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   c.axisChangeSize = axisChangeOver(c.axes, run, range);
   c.axisChangeOverFace = c.axisChangeSize;
   c.resolutionFloor = resolutionFloor(S.normal, o.resolution);
-  // The data the identified error explains, linearised at it: the misfit left plus what it makes.
-  // Joined with the pass history: what every face shows (machine_error.h).
+  // What the face reads about the machine (identified_axes.h), from the data the machine error made:
+  // the measured change at the axes run, with the run face's sensitivities, so that nothing but the
+  // data moves with the noise (docs/conventions.md). Joined with the pass history: what every face
+  // shows, linearised at the identified error (machine_error.h); a linear step's, or one linearised
+  // at the nominal axes: the misfit left plus what the identified error makes there.
   const bool joined = c.passesJoined > 0 && historyJacobian.rows() == historyLinearised.size();
+  const bool atRun = !joined && !linearisedAt && c.method == CorrectionMethod::Nonlinear;
+  const Eigen::MatrixXd runSensitivities = atRun ? sensitivityMatrix(runFace, c.coefficients).normal : Eigen::MatrixXd();
   const Eigen::VectorXd linearised =
       joined ? historyLinearised
+      : atRun ? Eigen::VectorXd(flat(Eigen::MatrixXd(measured - normalOf(runFace))))
       : sensitivities.cols() == errorCoefficients.size() && sensitivities.rows() == unexplained.size()
           ? Eigen::VectorXd(flat(unexplained) + sensitivities * errorCoefficients)
           : Eigen::VectorXd();
-  c.identified = identifiedAxes(c.coefficients, steps, joined ? historyJacobian : sensitivities, alongside, linearised, range.min, range.max,
+  c.identified = identifiedAxes(c.coefficients, steps, joined ? historyJacobian : atRun ? runSensitivities : sensitivities, alongside, linearised, range.min, range.max,
                                 o.probeNoise, o, basis);
-  // One quantity: the uncertainty is the change per µm of noise times sigma.
+  // One quantity: the uncertainty is the change per µm of noise times sigma. The identified error's
+  // spread is its identification's, at the identified error; the values read are the measured
+  // change's, at the run.
+  const std::array<double, kAxisCount> spread =
+      atRun ? axisSpreadPerNoise(c.coefficients, steps, sensitivities, alongside, range.min, range.max, basis)
+            : c.identified.spreadPerNoise;
   for (int i = 0; i < kAxisCount; ++i) {
-    c.changePerNoise[i] = c.identified.spreadPerNoise[i];
+    c.changePerNoise[i] = spread[static_cast<size_t>(i)];
     c.uncertainty[i] = c.changePerNoise[i] * o.probeNoise;
   }
   {

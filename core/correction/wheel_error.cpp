@@ -126,7 +126,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
   // Two blocks: the axes first, as machine_error.h takes them, then the wheel off the span of what
   // the axes take, so that W holds only the shape the axes cannot make. A wild direction of either
   // would chase the other's shapes, so neither takes one.
-  const ParameterBlock axes{a.space.step.asDiagonal() * a.space.basis, Wild::LeftOut};
+  const ParameterBlock axes{a.space.step.asDiagonal() * a.space.basis, Wild::LeftOut, Eigen::VectorXd()};
   const ParameterBlock wheel = ParameterBlock::free(K, Wild::LeftOut);
   const auto setupAt = [&](const std::vector<Eigen::VectorXd>& x) { return withWheelDeviation(setup, knots, x[1]); };
   const FaceModel model{

@@ -43,6 +43,9 @@ function corrected(c, degree = c.degree) {
   actual.Z[0] -= 0.01;
   actual.B[2] += helical ? 0.001 : 2e-7;
   actual.X[3] += helical ? 0.5 : 1e-7;
+  // A quartic Z error, so that the corrected axes carry a real fourth-degree term (a cubic program
+  // needs several pieces for it).
+  if (helical && degree >= 4) actual.Z[4] += 0.002;
   const measured = hobsharp.evaluate({ ...c, degree, axes: actual }).topography.normal;
   return { ...c, degree, measured, correction: { probeNoise: 1e-4 } };
 }

@@ -62,9 +62,10 @@ TEST(Validation, CampaignTargets) {
 
   // Held at the share measured with g++ -O2 less one scenario (the sanitizer build's clang rounds
   // differently, and a scenario at a threshold may fall either way); not yet met
-  // (docs/validation.md): 25/33 of the 95 %, and 27/33 with the rounded axes of its 90 %.
-  EXPECT_GE(classOf(ScenarioClass::Medium).targets[0].share(), 24.0 / 33 - 1e-9);
-  EXPECT_GE(classOf(ScenarioClass::Medium).targets[1].share(), 26.0 / 33 - 1e-9);
+  // (docs/validation.md): 26/33 of the 95 %, and 29/33 with the rounded axes of its 90 %
+  // (25/33 and 27/33 before a search over every coefficient decided its directions on the whole error).
+  EXPECT_GE(classOf(ScenarioClass::Medium).targets[0].share(), 25.0 / 33 - 1e-9);
+  EXPECT_GE(classOf(ScenarioClass::Medium).targets[1].share(), 28.0 / 33 - 1e-9);
   // Two passes at 150 µm, met: 33/34 here (16/34 before the second pass used the first pass's
   // face, 31/34 before a face above the noise was sought over every coefficient and the search over
   // the pass history got its second start); 93/99 on the whole run.
@@ -158,7 +159,9 @@ TEST(Validation, ASecondPassWhoseAxesAloneCannotBeSimulatedIsCorrected) {
 
 // Scenario 182 (150 µm rms): over the identifiable space the first pass's identification stalls
 // (54 µm rms left between the probe points); sought over every coefficient it converges
-// (test_pass_history.cpp). Neither pass is refused, and the second pass ends below 0.1 µm.
+// (test_pass_history.cpp): with its directions decided on the whole error it does not (4 wild
+// directions left out, 0.30 µm² left), and decided once more on the misfit left it does
+// (machine_error.cpp). Neither pass is refused, and the second pass ends below 0.1 µm.
 TEST(Validation, AStalledFirstPassIsSoughtOverEveryCoefficientNotRefused) {
   auto s = makeScenario(kSeed, 182);
   ASSERT_TRUE(s.ok());

@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "calibration.h"
 #include "campaign.h"
 
 using namespace hobsharp::validation;
@@ -22,6 +23,8 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 20261125;
   std::string out = "build/validation";
   int index = -1;
+  bool calibration = false;
+  int hobs = CalibrationOptions{}.hobs;
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -30,9 +33,12 @@ int main(int argc, char** argv) {
     else if (a == "--seed" && hasValue) seed = std::strtoull(argv[++i], nullptr, 10);
     else if (a == "--out" && hasValue) out = argv[++i];
     else if (a == "--index" && hasValue) index = std::atoi(argv[++i]);
+    else if (a == "--calibration") calibration = true;
+    else if (a == "--hobs" && hasValue) hobs = std::atoi(argv[++i]);
     else if (a == "--threads" && hasValue) threads = static_cast<unsigned>(std::max(1, std::atoi(argv[++i])));
     else {
-      std::cerr << "usage: validate [--scenarios N] [--seed S] [--out DIR] [--threads T] [--index I]\n";
+      std::cerr << "usage: validate [--scenarios N] [--seed S] [--out DIR] [--threads T] [--index I]\n"
+                   "       validate --calibration [--hobs H] [--seed S] [--out DIR] [--threads T]\n";
       return 2;
     }
   }
@@ -41,6 +47,17 @@ int main(int argc, char** argv) {
     return 2;
   }
   const auto start = std::chrono::steady_clock::now();
+  if (calibration) {
+    CalibrationOptions o;
+    o.seed = seed;
+    o.hobs = std::max(1, hobs);
+    const Calibration c = runCalibration(o, threads);
+    std::cout << calibrationText(c);
+    std::filesystem::create_directories(out);
+    std::ofstream(out + "/calibration.json") << toJson(c).dump(1) << "\n";
+    std::cout << "\nWritten: " << out << "/calibration.json\n";
+    return 0;
+  }
   if (index >= 0) {
     auto s = makeScenario(seed, index);
     if (!s) {

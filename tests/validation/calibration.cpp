@@ -1,0 +1,206 @@
+#include "calibration.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include "evaluation.h"
+#include "face_vectors.h"
+#include "ground_face.h"
+#include "scenario.h"
+#include "sharpening_job.h"
+#include "topography.h"
+
+namespace hobsharp::validation {
+namespace {
+
+const char* unitOf(Axis a) { return a == Axis::A || a == Axis::B ? "µrad" : "µm"; }
+
+// The scenario index of hob h: the noisy class (10 µm rms), index mod 6 = 4.
+int scenarioIndex(int h) { return kScenarioClasses * h + static_cast<int>(ScenarioClass::Noisy); }
+
+std::string axesText(const std::vector<Axis>& axes) {
+  std::string s;
+  for (Axis a : axes) s += (s.empty() ? "" : ", ") + std::string(axisName(a));
+  return s;
+}
+
+struct Sample {
+  std::string unit;
+  std::vector<double> values, given;
+};
+
+// The values one evaluation reads, each with its standard uncertainty (µm or µrad).
+void collect(const IdentifiedAxes& id, double sigma, std::map<std::string, Sample>& into) {
+  const auto add = [&](const std::string& what, const char* unit, double value, double perNoise) {
+    Sample& s = into[what];
+    s.unit = unit;
+    s.values.push_back(value);
+    s.given.push_back(perNoise * sigma);
+  };
+  for (Axis a : kAxes) {
+    const AxisIdentification& r = id.axes[static_cast<size_t>(a)];
+    if (r.reading == AxisReading::Alone) add(std::string(axisName(a)) + " alone", unitOf(a), r.value, r.perNoise);
+  }
+  for (const AxisCombination& c : id.combinations) {
+    if (c.axes.empty()) continue;
+    const std::string group = axesText(c.axes);
+    add(std::string(axisName(c.axes[0])) + "-equivalent of " + group, unitOf(c.axes[0]), c.value, c.perNoise);
+    // The other members' values alone, where the sentence gives them.
+    for (size_t m = 1; m < c.axes.size() && m < c.aloneListed.size(); ++m)
+      if (c.aloneListed[m])
+        add(std::string(axisName(c.axes[m])) + " alone of " + group, unitOf(c.axes[m]), c.aloneValue[m],
+            c.alonePerNoise[m]);
+  }
+}
+
+}  // namespace
+
+int Calibration::within() const {
+  return static_cast<int>(std::count_if(values.begin(), values.end(), [&](const CalibratedValue& v) {
+    return v.ratio() >= options.low && v.ratio() <= options.high;
+  }));
+}
+
+Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
+  const auto start = std::chrono::steady_clock::now();
+  Calibration out;
+  out.options = o;
+  std::mutex lock;
+  std::atomic<int> next{0};
+  const auto one = [&](int h) {
+    const int index = scenarioIndex(h);
+    auto s = makeScenario(o.seed, index);
+    auto job = s ? resolveJob(s->input) : Outcome<SharpeningJob>(s.error());
+    auto ground = job ? simulateGroundFace(job->setup, plusError(job->nominalAxes, s->error), job->grid,
+                                           Sensitivities::Skip)
+                      : Outcome<GroundFace>(job.error());
+    if (!ground) {
+      std::lock_guard<std::mutex> g(lock);
+      ++out.hobsFailed;
+      return;
+    }
+    const Eigen::MatrixXd face = topographyOf(*ground).normal;
+    std::mt19937_64 noise(o.seed * 0xD1B54A32D192ED03ull + static_cast<std::uint64_t>(index) + 11);
+    std::normal_distribution<double> gauss(0, 1);
+    std::map<std::string, Sample> samples;
+    int evaluations = 0, refused = 0;
+    for (int k = 0; k < o.measurements; ++k) {
+      CaseInput c = s->input;
+      c.axes = job->nominalAxes;
+      Eigen::MatrixXd measured = face;
+      for (int i = 0; i < measured.size(); ++i) measured.data()[i] += o.sigma * gauss(noise);
+      c.measured = measured;
+      c.correction.probeNoise = o.sigma;
+      ++evaluations;
+      auto j = resolveJob(c);
+      auto e = j ? evaluate(*j) : Outcome<Evaluation>(j.error());
+      if (!e || !e->correction) {
+        ++refused;
+        continue;
+      }
+      collect(e->correction->identified, o.sigma, samples);
+    }
+    std::vector<CalibratedValue> judged, rare;
+    int unstable = 0;
+    for (const auto& [what, sample] : samples) {
+      const int n = static_cast<int>(sample.values.size());
+      if (n < 3 || n < o.leastShareRead * o.measurements) {
+        ++unstable;
+        CalibratedValue u;
+        u.hob = index, u.what = what, u.unit = sample.unit, u.read = n;
+        rare.push_back(u);
+        continue;
+      }
+      CalibratedValue v;
+      v.hob = index;
+      v.what = what;
+      v.unit = sample.unit;
+      v.read = n;
+      double sum = 0, given2 = 0;
+      for (int i = 0; i < n; ++i) sum += sample.values[static_cast<size_t>(i)], given2 += sample.given[static_cast<size_t>(i)] * sample.given[static_cast<size_t>(i)];
+      v.mean = sum / n;
+      double ss = 0;
+      for (double x : sample.values) ss += (x - v.mean) * (x - v.mean);
+      v.spread = std::sqrt(ss / (n - 1));
+      v.given = std::sqrt(given2 / n);
+      judged.push_back(v);
+    }
+    std::lock_guard<std::mutex> g(lock);
+    ++out.hobsRun;
+    out.evaluations += evaluations;
+    out.refused += refused;
+    out.unstable += unstable;
+    out.values.insert(out.values.end(), judged.begin(), judged.end());
+    out.unstableValues.insert(out.unstableValues.end(), rare.begin(), rare.end());
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 0; t < std::max(1u, threads); ++t)
+    pool.emplace_back([&] {
+      for (int h = next++; h < o.hobs; h = next++) one(o.firstHob + h);
+    });
+  for (std::thread& t : pool) t.join();
+  std::sort(out.values.begin(), out.values.end(),
+            [](const CalibratedValue& a, const CalibratedValue& b) { return a.hob != b.hob ? a.hob < b.hob : a.what < b.what; });
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+nlohmann::json toJson(const Calibration& c) {
+  nlohmann::json j;
+  j["seed"] = c.options.seed;
+  j["hobs"] = c.options.hobs;
+  j["measurements"] = c.options.measurements;
+  j["sigma"] = c.options.sigma;
+  j["unit"] = "ratio: spread over the measurements / standard uncertainty given";
+  j["asked"] = {c.options.low, c.options.high};
+  j["hobsRun"] = c.hobsRun;
+  j["hobsFailed"] = c.hobsFailed;
+  j["evaluations"] = c.evaluations;
+  j["refused"] = c.refused;
+  j["unstable"] = c.unstable;
+  j["within"] = c.within();
+  j["judged"] = c.values.size();
+  j["seconds"] = c.seconds;
+  for (const CalibratedValue& v : c.unstableValues)
+    j["unstableValues"].push_back({{"hob", v.hob}, {"what", v.what}, {"read", v.read}});
+  for (const CalibratedValue& v : c.values)
+    j["values"].push_back({{"hob", v.hob}, {"what", v.what}, {"unit", v.unit}, {"read", v.read}, {"mean", v.mean},
+                           {"spread", v.spread}, {"given", v.given}, {"ratio", v.ratio()}});
+  return j;
+}
+
+std::string calibrationText(const Calibration& c) {
+  std::ostringstream s;
+  s.precision(3);
+  const int n = static_cast<int>(c.values.size());
+  s << "Calibration of the values read (seed " << c.options.seed << ", " << c.hobsRun << " random hobs of the noisy class, "
+    << c.options.measurements << " measurements each, probe noise " << c.options.sigma << " µm; " << c.evaluations
+    << " evaluations, " << c.refused << " refused; " << c.hobsFailed << " hobs not run)\n";
+  s << "  " << c.within() << " of " << n << " values read ("
+    << (n > 0 ? 100.0 * c.within() / n : 0.0) << " %) have a spread " << c.options.low << " to " << c.options.high
+    << " times the uncertainty given; " << c.unstable << " more were read in fewer than "
+    << static_cast<int>(std::ceil(c.options.leastShareRead * c.options.measurements)) << " of the measurements\n";
+  std::vector<double> r;
+  for (const CalibratedValue& v : c.values) r.push_back(v.ratio());
+  std::sort(r.begin(), r.end());
+  if (!r.empty()) {
+    const auto q = [&](double p) { return r[static_cast<size_t>(std::lround(p * (r.size() - 1)))]; };
+    s << "  ratio: lowest " << r.front() << ", 5th " << q(0.05) << ", median " << q(0.5) << ", 95th " << q(0.95)
+      << ", highest " << r.back() << "\n";
+  }
+  for (const CalibratedValue& v : c.values)
+    if (v.ratio() < c.options.low || v.ratio() > c.options.high)
+      s << "  outside: scenario " << v.hob << ", " << v.what << ": spread " << v.spread << " " << v.unit << ", given "
+        << v.given << " " << v.unit << " (ratio " << v.ratio() << ", read " << v.read << " times, mean " << v.mean
+        << " " << v.unit << ")\n";
+  return s.str();
+}
+
+}  // namespace hobsharp::validation

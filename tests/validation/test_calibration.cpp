@@ -1,0 +1,64 @@
+// The calibration of the values the page reads about the machine, on random hobs (issue 20, item
+// 5; docs/validation.md, "The uncertainty of the values read"): over 30 fresh probe-noise draws of
+// one random machine error, each value read (an axis alone, a combination's equivalent, a member's
+// value alone) spreads 0.7 to 1.4 times the standard uncertainty given with it.
+#include <algorithm>
+#include <cstdio>
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include "calibration.h"
+
+namespace hobsharp::validation {
+namespace {
+
+double highestRatio(const Calibration& c) {
+  double r = 0;
+  for (const CalibratedValue& v : c.values) r = std::max(r, v.ratio());
+  return r;
+}
+
+// The first 40 hobs of the default seed: at least 90 % of the values read are within 0.7 to 1.4
+// (42 of 45 here: two values of one group of scenario 196 at 0.674, and one at 1.40), and none is
+// outside 0.6 to 1.6. Thirty draws alone put a calibrated value's ratio outside 0.67 to 1.34 once
+// in a hundred (the chi distribution with 29 degrees of freedom), so the band is not asked of every
+// value; a value read from a wandering estimate was 7 to 60 times off (the test below).
+TEST(Calibration, ValuesReadSpreadAsTheirUncertaintySays) {
+  CalibrationOptions o;
+  o.hobs = 40;
+  const Calibration c = runCalibration(o, 2);
+  std::printf("%s", calibrationText(c).c_str());
+  EXPECT_EQ(c.hobsRun, 40);
+  EXPECT_EQ(c.refused, 0);
+  ASSERT_GE(c.values.size(), 35u);
+  EXPECT_GE(c.within(), 0.9 * static_cast<double>(c.values.size()));
+  EXPECT_LT(highestRatio(c), 1.6);
+  for (const CalibratedValue& v : c.values) EXPECT_GT(v.ratio(), 0.6) << "scenario " << v.hob << ", " << v.what;
+}
+
+// Two hobs whose values read spread tens of times their uncertainty before (docs/validation.md).
+// Seed 11's scenario 274: on one draw of 30 the identification decided a ninth direction at its
+// converged estimate and wandered 45 iterations along it, reading 22.35 where the others read 9.7
+// to 9.9 µm (ratio 42.8); the converged estimate is now kept (identification.h). Seed 1001's
+// scenario 1054: the values were read from the face linearised at the identified error, whose
+// weakly seen directions move with the noise (a seventh direction read 20.0 where the others
+// read -9.2 to -9.5 µm; ratio 62.8); they are now read from the measured change at the axes run.
+TEST(Calibration, ValuesReadDoNotJumpWithTheDirectionsTaken) {
+  for (auto [seed, hob] : {std::pair<std::uint64_t, int>{11, 45}, {1001, 175}}) {
+    CalibrationOptions o;
+    o.seed = seed;
+    o.firstHob = hob;
+    o.hobs = 1;
+    const Calibration c = runCalibration(o, 2);
+    std::printf("%s", calibrationText(c).c_str());
+    ASSERT_FALSE(c.values.empty()) << "seed " << seed;
+    for (const CalibratedValue& v : c.values) {
+      EXPECT_GE(v.ratio(), o.low) << v.what;
+      EXPECT_LE(v.ratio(), o.high) << v.what;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hobsharp::validation
