@@ -17,9 +17,10 @@
 //     of the group), with the proportion in which the others grind alike, and the value each other
 //     member would take alone where it grinds the face as well to within the noise.
 // The values read (alone, and each group's equivalent) come from one linear least-squares fit of
-// those axes' curves to what the machine error makes, linearised at the identified error, with the
-// other axes held at zero: a fit with no decision in it, so its covariance is the spread the probe
-// noise gives it (sigma² (J^T J)^-1), and the uncertainty is that per µm of noise times sigma.
+// those axes' curves to what the machine error makes (the caller's S and data: on one face, the
+// measured change at the axes run with the run face's sensitivities), with the other axes held at
+// zero: a fit with no decision in it, so its covariance is the spread the probe noise gives it
+// (sigma² (J^T J)^-1), and the uncertainty is that per µm of noise times sigma.
 #pragma once
 
 #include <array>
@@ -79,13 +80,6 @@ struct IdentifiedAxes {
   std::array<double, kAxisCount> spreadPerNoise{};
 };
 
-// coefficients: the free coefficients; step: each one's machine step (coefficientStep);
-// S: p x q normal sensitivities at the identified error (µm per coefficient unit); nuisance: p x k
-// columns identified alongside (the wheel's), taken out first (k may be 0); data: what the machine
-// error makes, linearised at the identified error (µm): the misfit left plus S times the error;
-// [rangeMin, rangeMax]: the motion range; probeNoise: sigma, µm; basis: the identifiable space's
-// basis over the coefficients (IdentifiableSpace::basis), whose coefficients outside it (a straight
-// gash's X, Y, B) the face does not show; empty: judged from S alone.
 // Per axis, the standard deviation of its curve per µm of noise over every direction the face
 // shows, largest over [rangeMin, rangeMax]: the spread an error identified with the sensitivities S
 // (at that error) has, where identifiedAxes reads the face with the run's (measured_face_correction.cpp).
@@ -95,6 +89,14 @@ std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>
                                                   double rangeMin, double rangeMax,
                                                   const Eigen::MatrixXd& basis = Eigen::MatrixXd());
 
+// coefficients: the free coefficients; step: each one's machine step (coefficientStep);
+// S: p x q normal sensitivities (µm per coefficient unit): the run face's, or at the identified
+// error; nuisance: p x k columns identified alongside (the wheel's), taken out first (k may be 0);
+// data: what the machine error makes (µm): the measured face less the run face's, or linearised at
+// the identified error (the misfit left plus S times the error); [rangeMin, rangeMax]: the motion
+// range; probeNoise: sigma, µm; basis: the identifiable space's basis over the coefficients
+// (IdentifiableSpace::basis), whose coefficients outside it (a straight gash's X, Y, B) the face
+// does not show; empty: judged from S alone.
 IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& coefficients, const Eigen::VectorXd& step,
                               const Eigen::MatrixXd& S, const Eigen::MatrixXd& nuisance, const Eigen::VectorXd& data,
                               double rangeMin, double rangeMax, double probeNoise, const CorrectionOptions& options,

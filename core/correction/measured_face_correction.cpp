@@ -270,10 +270,19 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   // the measured change at the axes run, with the run face's sensitivities, so that nothing but the
   // data moves with the noise (docs/conventions.md). Joined with the pass history: what every face
   // shows, linearised at the identified error (machine_error.h); a linear step's, or one linearised
-  // at the nominal axes: the misfit left plus what the identified error makes there.
+  // at the nominal axes: the misfit left plus what the identified error makes, at it. Where this
+  // face needed the directions it shows only at second order (freed), they are read as at the run,
+  // where they show nothing: the identifiable space's basis, not every coefficient (whether a face
+  // is freed turns on its noise; read one way on some measurements and the other way on the rest,
+  // a value spread twice its uncertainty on seed 20261125's scenario 550 of the calibration).
   const bool joined = c.passesJoined > 0 && historyJacobian.rows() == historyLinearised.size();
   const bool atRun = !joined && !linearisedAt && c.method == CorrectionMethod::Nonlinear;
   const Eigen::MatrixXd runSensitivities = atRun ? sensitivityMatrix(runFace, c.coefficients).normal : Eigen::MatrixXd();
+  Eigen::MatrixXd readingBasis = basis;
+  if (atRun && freed) {
+    const IdentifiableSpace space = identifiableSpace(setup.face, run.degree(), o, reach);
+    if (space.coefficients == c.coefficients) readingBasis = space.basis;
+  }
   const Eigen::VectorXd linearised =
       joined ? historyLinearised
       : atRun ? Eigen::VectorXd(flat(Eigen::MatrixXd(measured - normalOf(runFace))))
@@ -281,7 +290,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
           ? Eigen::VectorXd(flat(unexplained) + sensitivities * errorCoefficients)
           : Eigen::VectorXd();
   c.identified = identifiedAxes(c.coefficients, steps, joined ? historyJacobian : atRun ? runSensitivities : sensitivities, alongside, linearised, range.min, range.max,
-                                o.probeNoise, o, basis);
+                                o.probeNoise, o, atRun ? readingBasis : basis);
   // One quantity: the uncertainty is the change per µm of noise times sigma. The identified error's
   // spread is its identification's, at the identified error; the values read are the measured
   // change's, at the run.

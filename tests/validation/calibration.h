@@ -40,7 +40,7 @@ struct CalibratedValue {
 
 struct Calibration {
   CalibrationOptions options;
-  int hobsRun = 0;          // hobs whose measurements were all evaluated
+  int hobsRun = 0;          // hobs whose measurements were evaluated (refused ones counted in `refused`)
   int hobsFailed = 0;       // hobs not drawn or whose face could not be simulated
   int evaluations = 0, refused = 0;  // evaluations run; of them refused by the calculator
   int unstable = 0;         // values read in some measurements but fewer than leastShareRead

@@ -42,8 +42,9 @@ TEST(Calibration, ValuesReadSpreadAsTheirUncertaintySays) {
 // converged estimate and wandered 45 iterations along it, reading 22.35 where the others read 9.7
 // to 9.9 µm (ratio 42.8); the converged estimate is now kept (identification.h). Seed 1001's
 // scenario 1054: the values were read from the face linearised at the identified error, whose
-// weakly seen directions move with the noise (a seventh direction read 20.0 where the others
-// read -9.2 to -9.5 µm; ratio 62.8); they are now read from the measured change at the axes run.
+// weakly seen directions move with the noise (ratio 55; with the fall-back alone 62.8, a seventh
+// direction reading 20.0 where the others read -9.2 to -9.5 µm); they are now read from the
+// measured change at the axes run.
 TEST(Calibration, ValuesReadDoNotJumpWithTheDirectionsTaken) {
   for (auto [seed, hob] : {std::pair<std::uint64_t, int>{11, 45}, {1001, 175}}) {
     CalibrationOptions o;
