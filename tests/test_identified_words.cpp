@@ -7,6 +7,8 @@
 #include <string>
 
 #include "identification_cases.h"
+#include "identified_axes.h"
+#include "machine_error.h"
 #include "result_model.h"
 
 namespace hobsharp::test {
@@ -208,6 +210,76 @@ TEST(IdentifiedWords, AxisSpreadIsIdentifiedAxesSpread) {
   const IdentifiedAxes idWithout =
       identifiedAxes(cs, step, S, Eigen::MatrixXd(), Eigen::VectorXd::Random(40), -2, 3, 0.5, o, basis);
   for (int i = 0; i < kAxisCount; ++i) EXPECT_NEAR(without[i], idWithout.spreadPerNoise[i], 1e-12 * without[i]);
+}
+
+// The identified error's spread is over the directions sought: a direction outside the
+// identifiable space, which the face may show weakly away from the nominal axes (a helical gash's
+// X with A), adds nothing, and the sensitivities along it do not matter.
+TEST(IdentifiedWords, AxisSpreadIsOverTheDirectionsSought) {
+  std::vector<Coefficient> cs;
+  for (Axis a : kAxes)
+    for (int k = 0; k <= 2; ++k) cs.push_back(Coefficient{a, k});
+  const int q = static_cast<int>(cs.size());
+  std::srand(11);
+  const Eigen::MatrixXd S = Eigen::MatrixXd::Random(40, q) * 100;
+  const Eigen::VectorXd step = Eigen::VectorXd::Constant(q, 1e-4);
+  // The space: every direction but v, a mix of X's and A's constants.
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(q);
+  v(0) = 0.6, v(9) = -0.8;
+  const Eigen::MatrixXd basis = Eigen::JacobiSVD<Eigen::MatrixXd>(Eigen::MatrixXd::Identity(q, q) - v * v.transpose(),
+                                                                  Eigen::ComputeFullU).matrixU().leftCols(q - 1);
+  const std::array<double, kAxisCount> sought = axisSpreadPerNoise(cs, step, S, Eigen::MatrixXd(), -2, 3, basis);
+  // S along v shown weakly (1e-6 of its norm): nothing changes over the space.
+  const Eigen::MatrixXd weak = S * (basis * basis.transpose()) + 1e-6 * (S * v) * v.transpose();
+  const std::array<double, kAxisCount> weakly = axisSpreadPerNoise(cs, step, weak, Eigen::MatrixXd(), -2, 3, basis);
+  // Over every coefficient, v is sought too, and X and A spread more (a direction added).
+  const std::array<double, kAxisCount> every = axisSpreadPerNoise(cs, step, weak, Eigen::MatrixXd(), -2, 3);
+  for (int i = 0; i < kAxisCount; ++i) {
+    EXPECT_GT(sought[i], 0) << axisName(kAxes[i]);
+    EXPECT_NEAR(weakly[i], sought[i], 1e-9 * sought[i]) << axisName(kAxes[i]);
+  }
+  EXPECT_GT(every[static_cast<int>(Axis::X)], 100 * sought[static_cast<int>(Axis::X)]);
+  EXPECT_GT(every[static_cast<int>(Axis::A)], 100 * sought[static_cast<int>(Axis::A)]);
+}
+
+// The identification decomposes the face's sensitivities at the identified error when it decides
+// its directions there; the spread taken from that decomposition is the one the sensitivities give
+// (computed again, to rounding on the weakest directions), on a helical and a straight gash, and
+// it is the correction's changePerNoise.
+TEST(IdentifiedWords, AxisSpreadFromTheIdentificationsDecomposition) {
+  for (const CaseInput& in : {paperCase(), straightModule4Case()}) {
+    const SharpeningJob job = jobOf(in);
+    SCOPED_TRACE(job.setup.face.helical() ? "helical gash" : "straight gash");
+    CorrectionOptions o = job.correction;
+    o.probeNoise = 0.5;
+    const Eigen::MatrixXd measured =
+        topographyFor(job, withMachineError(job.nominalAxes, inSpanError(job, 100, 5))).normal +
+        probeNoise(job.grid.rows(), job.grid.cols(), o.probeNoise, 3);
+    const GroundFace face = groundFaceOf(job, job.nominalAxes);
+    auto est = identifyMachineError(job.setup, job.nominalAxes, face, measured, o);
+    ASSERT_TRUE(est.ok()) << est.error().message;
+    const MachineErrorEstimate& m = *est;
+    const int q = static_cast<int>(m.space.coefficients.size());
+    ASSERT_EQ(m.shownDirections.rows(), q) << "no decomposition at the identified error";
+    ASSERT_EQ(m.shownSingularValues.size(), m.shownDirections.cols());
+    // Orthonormal in machine steps.
+    EXPECT_LT((m.shownDirections.transpose() * m.shownDirections -
+               Eigen::MatrixXd::Identity(m.shownDirections.cols(), m.shownDirections.cols())).norm(), 1e-12);
+    const MotionRange range = motionRange(face);
+    const auto reused = axisSpreadPerNoise(m.space.coefficients, m.space.step, m.shownSingularValues, m.shownDirections,
+                                           range.min, range.max);
+    const auto again = axisSpreadPerNoise(m.space.coefficients, m.space.step, m.jacobian, m.nuisance, range.min,
+                                          range.max, m.space.basis);
+    auto c = correctMeasuredFace(job.setup, job.nominalAxes, job.nominalAxes, face, measured, o);
+    ASSERT_TRUE(c.ok()) << c.error().message;
+    // (A straight gash's X, Y and B are outside the space: 0 both ways.)
+    EXPECT_GT(reused[static_cast<int>(Axis::Z)], 0);
+    EXPECT_GT(reused[static_cast<int>(Axis::A)], 0);
+    for (int i = 0; i < kAxisCount; ++i) {
+      EXPECT_NEAR(reused[i], again[i], 1e-6 * again[i]) << axisName(kAxes[i]);
+      EXPECT_EQ(c->changePerNoise[i], reused[i]) << axisName(kAxes[i]);
+    }
+  }
 }
 
 // The fields reach the result: per axis its reading and value, and the sentences.

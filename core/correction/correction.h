@@ -67,7 +67,8 @@ struct Correction {
   std::array<double, kAxisCount> uncertainty{};
   // The precision demand: µm of face per µm or µrad of a constant axis error (largest over the
   // grid), and µm or µrad of axis change per µm of probe noise: the standard deviation of the
-  // axis's curve over every direction the face shows (not only those the correction takes), largest
+  // axis's curve over every direction the face shows (not only those the correction takes) among
+  // those sought (the identifiable space; every coefficient where the face needed them), largest
   // over the motion range.
   std::array<double, kAxisCount> facePerAxisError{};
   std::array<double, kAxisCount> changePerNoise{};

@@ -125,6 +125,7 @@ struct Round {
   std::vector<BlockDirections> blocks;
   Eigen::VectorXd theta;
   double cost = 0;  // its sum of squares, µm²
+  BlockDecomposition atSolution;  // the first block's, made at its solution
 };
 
 Eigen::MatrixXd columnsOf(const Eigen::MatrixXd& m, const std::vector<int>& kept) {
@@ -177,8 +178,11 @@ Outcome<Identification> identify(const FaceModel& model, const GroundFace& start
   Eigen::VectorXd keptTheta(0);
   std::vector<std::vector<bool>> previous;
   int evaluations = 0;
+  // The first block's decomposition at current(), while the estimate has not moved since it was made.
+  BlockDecomposition atCurrent;
   const bool anything = std::any_of(blocks.begin(), blocks.end(), [](const auto& b) { return b.directions.cols() > 0; });
   const auto reset = [&] {
+    atCurrent = BlockDecomposition{};
     solved.reset();
     J = jacobiansAt(start);
     for (auto& v : z) v.setZero();
@@ -201,6 +205,7 @@ Outcome<Identification> identify(const FaceModel& model, const GroundFace& start
     std::vector<BlockDirections> decided(static_cast<size_t>(B));
     std::vector<Eigen::MatrixXd> V(static_cast<size_t>(B));
     std::vector<std::vector<bool>> used;
+    BlockDecomposition here;
     for (int b = 0; b < B; ++b) {
       const ParameterBlock& block = blocks[static_cast<size_t>(b)];
       BlockDirections& out = decided[static_cast<size_t>(b)];
@@ -223,6 +228,7 @@ Outcome<Identification> identify(const FaceModel& model, const GroundFace& start
         out.decision = decideDirections(out.singularValues, svd.matrixU().transpose() * (Qa.transpose() * off),
                                         off.norm(), points, o, block.wild);
         V[static_cast<size_t>(b)] = columnsOf(svd.matrixV(), out.decision.kept);
+        if (b == 0) here = BlockDecomposition{out.singularValues, block.directions * svd.matrixV()};
         out.taken = block.directions * V[static_cast<size_t>(b)];
         if (b + 1 < B && !out.decision.kept.empty()) {
           const Eigen::MatrixXd Qb = Qa * columnsOf(svd.matrixU(), out.decision.kept);
@@ -233,6 +239,7 @@ Outcome<Identification> identify(const FaceModel& model, const GroundFace& start
       }
       used.push_back(out.decision.used);
     }
+    atCurrent = here;
     if (round > 0 && used == previous) break;
     previous = used;
     id.blocks = decided;
@@ -255,7 +262,8 @@ Outcome<Identification> identify(const FaceModel& model, const GroundFace& start
     // The round before, solved and converged: kept if this one does not converge (below).
     std::optional<Round> before;
     if (round > 0 && id.summary.status == SolveStatus::Converged)
-      before = Round{solved, J, z, id.summary, keptP, keptBlocks, keptTheta, (d - faceNormal(current())).squaredNorm()};
+      before = Round{solved, J, z, id.summary, keptP, keptBlocks, keptTheta, (d - faceNormal(current())).squaredNorm(),
+                     atCurrent};
     BlockResidual residual(model, P, d);
     const auto countFaces = [&] {
       evaluations += residual.evaluations;
@@ -283,6 +291,7 @@ Outcome<Identification> identify(const FaceModel& model, const GroundFace& start
     const GroundFace* f = residual.sensitiveFaceAt(theta);
     countFaces();
     const auto take = [&] {
+      atCurrent = BlockDecomposition{};
       if (residual.sensitiveAt(theta) && residual.borrowed) solved.reset();  // still the start face
       else if (residual.sensitiveAt(theta)) solved = std::move(residual.sensitive);
       else solved = std::move(residual.trial);
@@ -324,6 +333,7 @@ Outcome<Identification> identify(const FaceModel& model, const GroundFace& start
       id.summary = std::move(before->summary);
       P = before->P, id.blocks = before->blocks, theta = before->theta;
       keptP = std::move(before->P), keptBlocks = std::move(before->blocks), keptTheta = std::move(before->theta);
+      atCurrent = std::move(before->atSolution);
       id.summary.iterations = iterations, id.summary.unsolvableFaces = unsolvable;
       id.summary.reason += " The search along the " + std::to_string(k) + " directions decided again at this estimate " +
                            ended + "; this estimate is kept.";
@@ -349,6 +359,7 @@ Outcome<Identification> identify(const FaceModel& model, const GroundFace& start
   id.summary.finalCost = (d - id.explained).squaredNorm();
   judgeMisfit(id.summary, id.summary.finalCost, points, o.probeNoise);
   id.jacobian = J;
+  id.firstBlockAtSolution = std::move(atCurrent);
   const int k = BlockResidual::columns(P);
   if (k > 0) {
     // (J^T J)^-1 in the taken directions, which the decision kept well conditioned.

@@ -71,6 +71,13 @@ struct BlockDirections {
   Eigen::MatrixXd taken;  // n x k: the taken directions in the block's own units (x = taken * theta)
 };
 
+// A block's columns decomposed (the SVD of the triangular factor of jacobian * directions).
+struct BlockDecomposition {
+  Eigen::VectorXd singularValues;  // µm of face per unit of z, largest first
+  Eigen::MatrixXd V;               // n x m: the right singular vectors in the block's own units (directions * V)
+  bool empty() const { return singularValues.size() == 0; }
+};
+
 struct Identification {
   std::vector<Eigen::VectorXd> value;  // per block, its own units; zero where nothing was taken
   std::vector<BlockDirections> blocks;  // as decided in the last round that was solved
@@ -82,6 +89,11 @@ struct Identification {
   // Covariance of the taken coordinates theta (the blocks' in order) per unit probe variance
   // (sigma = 1 µm): (J^T J)^-1 at the solution, J = [jacobian_b * taken_b]. Empty if none taken.
   Eigen::MatrixXd thetaCovariancePerNoise;
+  // The first block's columns decomposed at the solution (its Jacobian there), where the directions
+  // were decided at the face the solution is (the decision made again at a solution that stands):
+  // the first block is decided off no other, so this is its information there, made once.
+  // Empty where the last decision was made at another face.
+  BlockDecomposition firstBlockAtSolution;
   LeastSquaresSummary summary;
 
   // Block b's covariance in its own units, per unit probe variance (the others free): n x n.

@@ -204,45 +204,57 @@ int shownRank(const Eigen::VectorXd& s) {
   return rank;
 }
 
+// Per axis, the standard deviation of its curve per µm of noise, largest over the samples, where
+// the coordinates in machine steps have the covariance W W^T per unit noise variance. At a sample
+// axis a's curve is g_a^T z (z the coefficients in machine steps, g_a their machine steps in µm or
+// µrad times the sample's powers p_a): its variance g_a^T W W^T g_a = p_a^T (Wc_a Wc_a^T) p_a,
+// Wc_a = diag(c_a) times W's rows at a, the matrix formed once; every sample at once (P_a's rows).
+std::array<double, kAxisCount> spreadOverRange(const Eigen::MatrixXd& W, const std::vector<Coefficient>& cs,
+                                               const Eigen::VectorXd& step, const MotionSamples& samples) {
+  std::array<double, kAxisCount> spread{};
+  if (W.cols() == 0) return spread;
+  Blocks block;
+  for (size_t j = 0; j < cs.size(); ++j) block[static_cast<int>(cs[j].axis)].push_back(static_cast<int>(j));
+  for (int i = 0; i < kAxisCount; ++i) {
+    const std::vector<int>& b = block[static_cast<size_t>(i)];
+    const int n = static_cast<int>(b.size());
+    if (n == 0) continue;
+    Eigen::MatrixXd Wc(n, W.cols()), P(kSamples, n);
+    for (int k = 0; k < n; ++k) {
+      const Coefficient& c = cs[static_cast<size_t>(b[static_cast<size_t>(k)])];
+      Wc.row(k) = W.row(b[static_cast<size_t>(k)]) * (step(b[static_cast<size_t>(k)]) * displayFactor(c.axis));
+      P.col(k) = samples.power.col(c.degree);
+    }
+    const Eigen::MatrixXd G = Wc.lazyProduct(Wc.transpose());
+    spread[static_cast<size_t>(i)] = std::sqrt(std::max(0.0, P.lazyProduct(G).cwiseProduct(P).rowwise().sum().maxCoeff()));
+  }
+  return spread;
+}
+
 }  // namespace
+
+std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>& cs, const Eigen::VectorXd& step,
+                                                  const Eigen::VectorXd& s, const Eigen::MatrixXd& V, double min,
+                                                  double max) {
+  const int q = static_cast<int>(cs.size());
+  if (q == 0 || V.rows() != q || s.size() != V.cols() || !(s.size() && s(0) > 0)) return {};
+  const int rank = shownRank(s);
+  return spreadOverRange(V.leftCols(rank) * s.head(rank).cwiseInverse().asDiagonal(), cs, step,
+                         motionSamples(cs, min, max));
+}
 
 std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>& cs, const Eigen::VectorXd& step,
                                                   const Eigen::MatrixXd& S, const Eigen::MatrixXd& nuisance,
                                                   double min, double max, const Eigen::MatrixXd& basis) {
-  std::array<double, kAxisCount> spread{};
   const int q = static_cast<int>(cs.size());
-  if (q == 0 || S.rows() == 0 || S.cols() != q) return spread;
+  if (q == 0 || S.rows() == 0 || S.cols() != q) return {};
   Eigen::MatrixXd A;
   Eigen::VectorXd y;
   factorFace(S, step, nuisance, Eigen::VectorXd::Zero(S.rows()), basis, A, y);
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
-  const Eigen::VectorXd& s = svd.singularValues();
-  if (!(s.size() && s(0) > 0)) return spread;
-  const int rank = shownRank(s);
-  const Eigen::MatrixXd W = svd.matrixV().leftCols(rank) * s.head(rank).cwiseInverse().asDiagonal();
-  // At each sample axis a's curve is g_a^T z (z the coefficients in machine steps, g_a their machine
-  // steps in µm or µrad times the sample's powers): its variance per unit noise g_a^T W W^T g_a, a
-  // quadratic form in the powers p_a whose matrix diag(c_a) W_a W_a^T diag(c_a) is formed once.
-  Blocks block;
-  for (int j = 0; j < q; ++j) block[static_cast<int>(cs[static_cast<size_t>(j)].axis)].push_back(j);
-  const MotionSamples samples = motionSamples(cs, min, max);
-  for (int i = 0; i < kAxisCount; ++i) {
-    const std::vector<int>& b = block[static_cast<size_t>(i)];
-    const int n = static_cast<int>(b.size());
-    if (n == 0 || rank == 0) continue;
-    Eigen::MatrixXd Wc(n, rank);
-    for (int k = 0; k < n; ++k) {
-      const int j = b[static_cast<size_t>(k)];
-      Wc.row(k) = W.row(j) * (step(j) * displayFactor(cs[static_cast<size_t>(j)].axis));
-    }
-    const Eigen::MatrixXd G = Wc * Wc.transpose();
-    Eigen::VectorXd power(n);
-    for (int sample = 0; sample < kSamples; ++sample) {
-      for (int k = 0; k < n; ++k) power(k) = samples.power(sample, cs[static_cast<size_t>(b[static_cast<size_t>(k)])].degree);
-      spread[static_cast<size_t>(i)] = std::max(spread[static_cast<size_t>(i)], std::sqrt(std::max(0.0, power.dot(G * power))));
-    }
-  }
-  return spread;
+  // Over the directions sought: the identifiable space's (every coefficient without a basis).
+  const Eigen::MatrixXd sought = basis.rows() == q ? basis : Eigen::MatrixXd::Identity(q, q);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A * sought, Eigen::ComputeFullV);
+  return axisSpreadPerNoise(cs, step, svd.singularValues(), sought * svd.matrixV(), min, max);
 }
 
 const char* readingName(AxisReading r) {
@@ -306,9 +318,12 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
 
   // Over the motion range: each axis's spread and multiple correlation, and each pair's correlation.
   std::array<bool, kAxisCount> leaks{};
-  std::array<double, kAxisCount> spread{}, correlation{};
+  std::array<double, kAxisCount> correlation{};
   Eigen::MatrixXd pair = Eigen::MatrixXd::Zero(kAxisCount, kAxisCount);
   const MotionSamples samples = motionSamples(cs, min, max);
+  std::array<double, kAxisCount> spread = spreadOverRange(W, cs, step, samples);
+  for (int i = 0; i < kAxisCount; ++i)
+    if (!seen[static_cast<size_t>(i)]) spread[static_cast<size_t>(i)] = 0;
   // The curves at a sample as functionals of the coefficients in machine steps, G (q x 5: column a
   // gives axis a's error there in µm or µrad), have one entry a row: axis a's column is c_a o p_a
   // over its own coefficients (c the machine steps in µm or µrad, p the sample's powers w^d). So
@@ -365,7 +380,6 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
       const double g = scale[i].cwiseProduct(power[i]).norm();  // |G's column i|
       if (!(g > 0)) continue;
       const double leak2 = kLeak * g * kLeak * g;
-      spread[i] = std::max(spread[i], std::sqrt(std::max(0.0, C(i, i))));
       if (form(unseenGram[i], power[i], power[i]) > leak2) leaks[i] = true;
       if (ownN[i].cols() > 0 && form(ownUnseenGram[i], power[i], power[i]) > leak2) leaks[i] = true;
       const double conditional = form(ownGram[i], power[i], power[i]);

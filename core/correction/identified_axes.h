@@ -81,13 +81,22 @@ struct IdentifiedAxes {
 };
 
 // Per axis, the standard deviation of its curve per µm of noise over every direction the face
-// shows, largest over [rangeMin, rangeMax]: the spread an error identified with the sensitivities S
-// (at that error) has, where identifiedAxes reads the face with the run's (measured_face_correction.cpp).
-// The arguments as identifiedAxes's; equal to its spreadPerNoise for the same S.
+// shows among those sought (the space `basis` spans; every coefficient without one), largest over
+// [rangeMin, rangeMax]: the spread an error identified with the sensitivities S (at that error) has,
+// where identifiedAxes reads the face with the run's (measured_face_correction.cpp). The arguments
+// as identifiedAxes's; equal to its spreadPerNoise for the same S where the basis is whole
+// coefficients (a straight gash's), or S shows nothing outside it.
 std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>& coefficients, const Eigen::VectorXd& step,
                                                   const Eigen::MatrixXd& S, const Eigen::MatrixXd& nuisance,
                                                   double rangeMin, double rangeMax,
                                                   const Eigen::MatrixXd& basis = Eigen::MatrixXd());
+
+// The same from a decomposition made already: the singular values s (largest first) and right
+// singular vectors V (q x m, orthonormal in machine steps) of S times the machine steps over the
+// directions sought (MachineErrorEstimate::shownDirections).
+std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>& coefficients, const Eigen::VectorXd& step,
+                                                  const Eigen::VectorXd& s, const Eigen::MatrixXd& V,
+                                                  double rangeMin, double rangeMax);
 
 // coefficients: the free coefficients; step: each one's machine step (coefficientStep);
 // S: p x q normal sensitivities (µm per coefficient unit): the run face's, or at the identified

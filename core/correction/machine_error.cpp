@@ -49,6 +49,11 @@ void keep(MachineErrorEstimate& m, Identification&& id, const Eigen::VectorXd& e
   m.unexplained = measured - m.explained;
   m.jacobian = id.jacobian[0].middleRows(at, n);
   m.covariancePerNoise = id.covariancePerNoise(0);
+  const bool oneFace = at == 0 && id.face.size() == n;
+  m.shownSingularValues = oneFace ? id.firstBlockAtSolution.singularValues : Eigen::VectorXd();
+  m.shownDirections = oneFace && !id.firstBlockAtSolution.empty()
+                          ? Eigen::MatrixXd(m.space.step.cwiseInverse().asDiagonal() * id.firstBlockAtSolution.V)
+                          : Eigen::MatrixXd();
   const BlockDirections& decided = id.blocks[0];
   m.singularValues = decided.singularValues;
   m.used = decided.decision.used;

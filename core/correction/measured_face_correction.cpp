@@ -134,6 +134,9 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   // the free coefficients' machine steps, what was identified alongside, and the identified error.
   Eigen::MatrixXd sensitivities, alongside, basis;
   Eigen::VectorXd steps, errorCoefficients;
+  // The identification's decomposition of the sensitivities at E (machine_error.h): empty if none.
+  Eigen::VectorXd shownSingularValues;
+  Eigen::MatrixXd shownDirections;
   if (o.method == CorrectionMethod::Linear && linearisedAt)
     return refuse("axes", "the face these axes grind without the machine's error cannot be simulated, and the linear "
                           "step needs it: use correction.method \"nonlinear\".", ErrorCode::Unsolvable);
@@ -220,6 +223,8 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     alongside = est.nuisance;
     steps = est.space.step;
     basis = est.space.basis;
+    shownSingularValues = est.shownSingularValues;
+    shownDirections = est.shownDirections;
     errorCoefficients = est.coefficientError;
   }
   const SharpeningSetup& grinding = dressed ? *dressed : setup;  // the wheel the predicted faces are ground with
@@ -292,11 +297,15 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   c.identified = identifiedAxes(c.coefficients, steps, joined ? historyJacobian : atRun ? runSensitivities : sensitivities, alongside, linearised, range.min, range.max,
                                 o.probeNoise, o, atRun ? readingBasis : basis);
   // One quantity: the uncertainty is the change per µm of noise times sigma. The identified error's
-  // spread is its identification's, at the identified error; the values read are the measured
-  // change's, at the run.
+  // spread is its identification's, at the identified error (from the decomposition the
+  // identification made there, where it made one and nothing was identified alongside); the values
+  // read are the measured change's, at the run.
+  const bool decomposed = alongside.cols() == 0 && shownDirections.rows() == static_cast<int>(c.coefficients.size());
   const std::array<double, kAxisCount> spread =
-      atRun ? axisSpreadPerNoise(c.coefficients, steps, sensitivities, alongside, range.min, range.max, basis)
-            : c.identified.spreadPerNoise;
+      !atRun ? c.identified.spreadPerNoise
+      : decomposed
+          ? axisSpreadPerNoise(c.coefficients, steps, shownSingularValues, shownDirections, range.min, range.max)
+          : axisSpreadPerNoise(c.coefficients, steps, sensitivities, alongside, range.min, range.max, basis);
   for (int i = 0; i < kAxisCount; ++i) {
     c.changePerNoise[i] = spread[static_cast<size_t>(i)];
     c.uncertainty[i] = c.changePerNoise[i] * o.probeNoise;
