@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "face_vectors.h"
 #include "identification_cases.h"
 #include "identified_axes.h"
 #include "machine_error.h"
@@ -260,24 +261,69 @@ TEST(IdentifiedWords, AxisSpreadFromTheIdentificationsDecomposition) {
     ASSERT_TRUE(est.ok()) << est.error().message;
     const MachineErrorEstimate& m = *est;
     const int q = static_cast<int>(m.space.coefficients.size());
-    ASSERT_EQ(m.shownDirections.rows(), q) << "no decomposition at the identified error";
-    ASSERT_EQ(m.shownSingularValues.size(), m.shownDirections.cols());
+    ASSERT_EQ(m.atSolution.directions.rows(), q) << "no decomposition at the identified error";
+    ASSERT_EQ(m.atSolution.singularValues.size(), m.atSolution.directions.cols());
     // Orthonormal in machine steps.
-    EXPECT_LT((m.shownDirections.transpose() * m.shownDirections -
-               Eigen::MatrixXd::Identity(m.shownDirections.cols(), m.shownDirections.cols())).norm(), 1e-12);
+    EXPECT_LT((m.atSolution.directions.transpose() * m.atSolution.directions -
+               Eigen::MatrixXd::Identity(m.atSolution.directions.cols(), m.atSolution.directions.cols())).norm(), 1e-12);
     const MotionRange range = motionRange(face);
-    const auto reused = axisSpreadPerNoise(m.space.coefficients, m.space.step, m.shownSingularValues, m.shownDirections,
-                                           range.min, range.max);
+    const auto reused = axisSpreadPerNoise(m.space.coefficients, m.space.step, m.atSolution, range.min, range.max);
     const auto again = axisSpreadPerNoise(m.space.coefficients, m.space.step, m.jacobian, m.nuisance, range.min,
                                           range.max, m.space.basis);
     auto c = correctMeasuredFace(job.setup, job.nominalAxes, job.nominalAxes, face, measured, o);
     ASSERT_TRUE(c.ok()) << c.error().message;
+    std::printf("[ figures  ] %s: change per um of noise X %.4g um, Y %.4g um, Z %.4g um, A %.4g urad, B %.4g urad\n",
+                job.setup.face.helical() ? "helical" : "straight", reused[0], reused[1], reused[2], reused[3], reused[4]);
     // (A straight gash's X, Y and B are outside the space: 0 both ways.)
     EXPECT_GT(reused[static_cast<int>(Axis::Z)], 0);
     EXPECT_GT(reused[static_cast<int>(Axis::A)], 0);
     for (int i = 0; i < kAxisCount; ++i) {
       EXPECT_NEAR(reused[i], again[i], 1e-6 * again[i]) << axisName(kAxes[i]);
       EXPECT_EQ(c->changePerNoise[i], reused[i]) << axisName(kAxes[i]);
+    }
+  }
+}
+
+// What is read at the run rests on the decomposition the identification made there (its first
+// decision, MachineErrorEstimate::atRun) instead of a second one of the same sensitivities: the
+// same readings, values, uncertainties and sentences as with the sensitivities decomposed again.
+TEST(IdentifiedWords, ReadingAtTheRunFromTheIdentificationsDecomposition) {
+  for (const CaseInput& in : {paperCase(), straightModule4Case(), leftHandRakeCase()}) {
+    const SharpeningJob job = jobOf(in);
+    for (unsigned seed : {3u, 4u}) {
+      SCOPED_TRACE(std::string(job.setup.face.helical() ? "helical gash" : "straight gash") + ", seed " +
+                   std::to_string(seed));
+      CorrectionOptions o = job.correction;
+      o.probeNoise = 0.5;
+      const Eigen::MatrixXd measured =
+          topographyFor(job, withMachineError(job.nominalAxes, inSpanError(job, 100, seed))).normal +
+          probeNoise(job.grid.rows(), job.grid.cols(), o.probeNoise, seed);
+      const GroundFace face = groundFaceOf(job, job.nominalAxes);
+      auto est = identifyMachineError(job.setup, job.nominalAxes, face, measured, o);
+      ASSERT_TRUE(est.ok()) << est.error().message;
+      const MachineErrorEstimate& m = *est;
+      ASSERT_EQ(m.atRun.directions.rows(), static_cast<int>(m.space.coefficients.size()));
+      const MotionRange range = motionRange(face);
+      const Eigen::MatrixXd S = sensitivityMatrix(face, m.space.coefficients).normal;
+      const Eigen::VectorXd data = flat(measured) - faceNormal(face);
+      const IdentifiedAxes again = identifiedAxes(m.space.coefficients, m.space.step, S, Eigen::MatrixXd(), data,
+                                                  range.min, range.max, o.probeNoise, o, m.space.basis);
+      const IdentifiedAxes made = identifiedAxes(m.space.coefficients, m.space.step, S, Eigen::MatrixXd(), data,
+                                                 range.min, range.max, o.probeNoise, o, m.space.basis, &m.atRun);
+      EXPECT_EQ(made.sentences, again.sentences);
+      EXPECT_EQ(made.unseen, again.unseen);
+      for (int i = 0; i < kAxisCount; ++i) {
+        SCOPED_TRACE(axisName(kAxes[i]));
+        EXPECT_EQ(made.axes[i].reading, again.axes[i].reading);
+        EXPECT_NEAR(made.axes[i].value, again.axes[i].value, 1e-9 * (1 + std::abs(again.axes[i].value)));
+        EXPECT_NEAR(made.axes[i].perNoise, again.axes[i].perNoise, 1e-9 * (1 + again.axes[i].perNoise));
+      }
+      ASSERT_EQ(made.combinations.size(), again.combinations.size());
+      for (size_t k = 0; k < made.combinations.size(); ++k) {
+        EXPECT_EQ(made.combinations[k].axes, again.combinations[k].axes);
+        EXPECT_NEAR(made.combinations[k].value, again.combinations[k].value, 1e-9 * (1 + std::abs(again.combinations[k].value)));
+        EXPECT_NEAR(made.combinations[k].perNoise, again.combinations[k].perNoise, 1e-9 * (1 + again.combinations[k].perNoise));
+      }
     }
   }
 }

@@ -239,6 +239,7 @@ Outcome<Identification> identify(const FaceModel& model, const GroundFace& start
       }
       used.push_back(out.decision.used);
     }
+    if (round == 0) id.firstBlockAtStart = here;
     atCurrent = here;
     if (round > 0 && used == previous) break;
     previous = used;

@@ -89,11 +89,12 @@ struct Identification {
   // Covariance of the taken coordinates theta (the blocks' in order) per unit probe variance
   // (sigma = 1 µm): (J^T J)^-1 at the solution, J = [jacobian_b * taken_b]. Empty if none taken.
   Eigen::MatrixXd thetaCovariancePerNoise;
-  // The first block's columns decomposed at the solution (its Jacobian there), where the directions
-  // were decided at the face the solution is (the decision made again at a solution that stands):
-  // the first block is decided off no other, so this is its information there, made once.
-  // Empty where the last decision was made at another face.
-  BlockDecomposition firstBlockAtSolution;
+  // The first block's columns decomposed (the first block is decided off no other, so this is the
+  // face's information over its directions, made once where the directions are decided): at the
+  // start face (the first decision's; empty if the block has no directions), and at the solution,
+  // where the directions were decided again at the face the solution is (a decision that stood);
+  // empty where the last decision was made at another face.
+  BlockDecomposition firstBlockAtStart, firstBlockAtSolution;
   LeastSquaresSummary summary;
 
   // Block b's covariance in its own units, per unit probe variance (the others free): n x n.

@@ -234,9 +234,10 @@ std::array<double, kAxisCount> spreadOverRange(const Eigen::MatrixXd& W, const s
 }  // namespace
 
 std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>& cs, const Eigen::VectorXd& step,
-                                                  const Eigen::VectorXd& s, const Eigen::MatrixXd& V, double min,
-                                                  double max) {
+                                                  const StepDecomposition& made, double min, double max) {
   const int q = static_cast<int>(cs.size());
+  const Eigen::VectorXd& s = made.singularValues;
+  const Eigen::MatrixXd& V = made.directions;
   if (q == 0 || V.rows() != q || s.size() != V.cols() || !(s.size() && s(0) > 0)) return {};
   const int rank = shownRank(s);
   return spreadOverRange(V.leftCols(rank) * s.head(rank).cwiseInverse().asDiagonal(), cs, step,
@@ -254,7 +255,7 @@ std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>
   // Over the directions sought: the identifiable space's (every coefficient without a basis).
   const Eigen::MatrixXd sought = basis.rows() == q ? basis : Eigen::MatrixXd::Identity(q, q);
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A * sought, Eigen::ComputeFullV);
-  return axisSpreadPerNoise(cs, step, svd.singularValues(), sought * svd.matrixV(), min, max);
+  return axisSpreadPerNoise(cs, step, StepDecomposition{svd.singularValues(), sought * svd.matrixV()}, min, max);
 }
 
 const char* readingName(AxisReading r) {
@@ -269,7 +270,8 @@ const char* readingName(AxisReading r) {
 
 IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::VectorXd& step, const Eigen::MatrixXd& S,
                               const Eigen::MatrixXd& nuisance, const Eigen::VectorXd& data, double min, double max,
-                              double sigma, const CorrectionOptions& o, const Eigen::MatrixXd& basis) {
+                              double sigma, const CorrectionOptions& o, const Eigen::MatrixXd& basis,
+                              const StepDecomposition* made) {
   IdentifiedAxes out;
   const int q = static_cast<int>(cs.size());
   Blocks block;
@@ -281,18 +283,37 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
   Eigen::MatrixXd A;
   Eigen::VectorXd y;
   factorFace(S, step, nuisance, data, basis, A, y);
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
-  const Eigen::VectorXd& s = svd.singularValues();
+  // A's decomposition: made already over the directions sought, or here (A's columns outside the
+  // space are 0, so the same shown directions to rounding).
+  const bool given = made && made->directions.rows() == q && made->singularValues.size() == made->directions.cols() &&
+                     nuisance.cols() == 0;
+  Eigen::VectorXd s;
+  Eigen::MatrixXd directions;  // q x q: the shown directions first, then the rest
+  if (given) {
+    s = made->singularValues;
+  } else {
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
+    s = svd.singularValues();
+    directions = svd.matrixV();
+  }
   const double s0 = s.size() ? s(0) : 0.0;
   if (!(s0 > 0)) {
     for (Axis a : kAxes)
       if (!block[static_cast<int>(a)].empty()) out.unseen.push_back(a);
   }
   const int rank = shownRank(s);
+  if (given && rank == 0) directions = Eigen::MatrixXd::Identity(q, q);
+  if (given && rank > 0) {
+    // The shown directions, then an orthonormal basis of what they leave (the directions outside
+    // the space and those it shows below kNull).
+    const Eigen::HouseholderQR<Eigen::MatrixXd> qr(made->directions.leftCols(rank));
+    directions = qr.householderQ();
+    directions.leftCols(rank) = made->directions.leftCols(rank);
+  }
   // Every direction the face shows: the covariance per unit noise variance is W W^T; N spans the
   // combinations it does not show.
-  const Eigen::MatrixXd W = svd.matrixV().leftCols(rank) * s.head(rank).cwiseInverse().asDiagonal();
-  const Eigen::MatrixXd N = svd.matrixV().rightCols(q - rank);
+  const Eigen::MatrixXd W = directions.leftCols(rank) * s.head(rank).cwiseInverse().asDiagonal();
+  const Eigen::MatrixXd N = directions.rightCols(q - rank);
 
   // Each axis alone: the information its own coefficients give (the others known). Its SVD is
   // also the least-squares fit of its columns alone (below: a group's member fitted alone when no

@@ -80,6 +80,15 @@ struct IdentifiedAxes {
   std::array<double, kAxisCount> spreadPerNoise{};
 };
 
+// The face's sensitivities times the machine steps, decomposed over the directions sought (made
+// already, by the identification): the singular values, largest first (µm of face per machine
+// step), and the right singular vectors, q x m, orthonormal in machine steps.
+struct StepDecomposition {
+  Eigen::VectorXd singularValues;
+  Eigen::MatrixXd directions;
+  bool empty() const { return directions.cols() == 0; }
+};
+
 // Per axis, the standard deviation of its curve per µm of noise over every direction the face
 // shows among those sought (the space `basis` spans; every coefficient without one), largest over
 // [rangeMin, rangeMax]: the spread an error identified with the sensitivities S (at that error) has,
@@ -91,12 +100,9 @@ std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>
                                                   double rangeMin, double rangeMax,
                                                   const Eigen::MatrixXd& basis = Eigen::MatrixXd());
 
-// The same from a decomposition made already: the singular values s (largest first) and right
-// singular vectors V (q x m, orthonormal in machine steps) of S times the machine steps over the
-// directions sought (MachineErrorEstimate::shownDirections).
+// The same from a decomposition made already (MachineErrorEstimate::atSolution).
 std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>& coefficients, const Eigen::VectorXd& step,
-                                                  const Eigen::VectorXd& s, const Eigen::MatrixXd& V,
-                                                  double rangeMin, double rangeMax);
+                                                  const StepDecomposition& made, double rangeMin, double rangeMax);
 
 // coefficients: the free coefficients; step: each one's machine step (coefficientStep);
 // S: p x q normal sensitivities (µm per coefficient unit): the run face's, or at the identified
@@ -105,10 +111,11 @@ std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>
 // the identified error (the misfit left plus S times the error); [rangeMin, rangeMax]: the motion
 // range; probeNoise: sigma, µm; basis: the identifiable space's basis over the coefficients
 // (IdentifiableSpace::basis), whose coefficients outside it (a straight gash's X, Y, B) the face
-// does not show; empty: judged from S alone.
+// does not show; empty: judged from S alone. made: S's decomposition over basis made already (no
+// nuisance; MachineErrorEstimate::atRun), or null: S is decomposed here.
 IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& coefficients, const Eigen::VectorXd& step,
                               const Eigen::MatrixXd& S, const Eigen::MatrixXd& nuisance, const Eigen::VectorXd& data,
                               double rangeMin, double rangeMax, double probeNoise, const CorrectionOptions& options,
-                              const Eigen::MatrixXd& basis = Eigen::MatrixXd());
+                              const Eigen::MatrixXd& basis = Eigen::MatrixXd(), const StepDecomposition* made = nullptr);
 
 }  // namespace hobsharp

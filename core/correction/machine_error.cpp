@@ -35,6 +35,13 @@ GroundFace slice(const GroundFace& all, int from, int n) {
   return f;
 }
 
+// A block's decomposition (identification.h) in machine steps: V in the block's own units, over
+// the coefficients, divided by their steps.
+StepDecomposition inSteps(const BlockDecomposition& d, const Eigen::VectorXd& step) {
+  if (d.empty() || d.V.rows() != step.size()) return {};
+  return {d.singularValues, step.cwiseInverse().asDiagonal() * d.V};
+}
+
 // m's estimate from an identification whose last n points, from `at`, are the face measured now
 // (all of them with one face): E = e0 + the identified value, the face, what it explains and the
 // Jacobian there, the covariance, the directions decided and the summary.
@@ -50,10 +57,8 @@ void keep(MachineErrorEstimate& m, Identification&& id, const Eigen::VectorXd& e
   m.jacobian = id.jacobian[0].middleRows(at, n);
   m.covariancePerNoise = id.covariancePerNoise(0);
   const bool oneFace = at == 0 && id.face.size() == n;
-  m.shownSingularValues = oneFace ? id.firstBlockAtSolution.singularValues : Eigen::VectorXd();
-  m.shownDirections = oneFace && !id.firstBlockAtSolution.empty()
-                          ? Eigen::MatrixXd(m.space.step.cwiseInverse().asDiagonal() * id.firstBlockAtSolution.V)
-                          : Eigen::MatrixXd();
+  m.atSolution = oneFace ? inSteps(id.firstBlockAtSolution, m.space.step) : StepDecomposition{};
+  m.atRun = StepDecomposition{};  // identifyMachineError sets it where E was found from the run face
   const BlockDirections& decided = id.blocks[0];
   m.singularValues = decided.singularValues;
   m.used = decided.decision.used;
@@ -297,7 +302,9 @@ Outcome<MachineErrorEstimate> identifyMachineError(const SharpeningSetup& setup,
   auto found = identify(model, runFace, flat(measured), {axes}, o, {"the axes", "no identified axis direction"});
   if (!found) return found.error();
   m.error = run;
+  const StepDecomposition atRun = inSteps(found->firstBlockAtStart, m.space.step);
   keep(m, std::move(found).value(), Eigen::VectorXd::Zero(q), measured, 0);
+  m.atRun = atRun;
   // Not explained to the noise, with directions left out that the geometry hides at first order
   // (X, Y and B on a straight gash): away from E = 0 they move the face at second order, and the
   // face may need them (issue 20: no direction left out while the misfit is above the noise). Kept

@@ -15,6 +15,7 @@
 #include "axis_polynomials.h"
 #include "correction_options.h"
 #include "ground_face.h"
+#include "identified_axes.h"
 #include "least_squares_options.h"
 #include "outcome.h"
 #include "earlier_passes.h"
@@ -34,13 +35,12 @@ struct MachineErrorEstimate {
   // and the columns of what was identified alongside (the wheel's directions taken), p x k: what
   // the face tells of each axis is judged from them (identified_axes.h).
   Eigen::MatrixXd jacobian, nuisance;
-  // The face's information at E over the directions sought, decomposed once by the identification
-  // where it decided them at E (identification.h, firstBlockAtSolution): the singular values of
-  // jacobian times the machine steps over those directions (µm of face per machine step, largest
-  // first) and the right singular vectors, q x m, orthonormal in machine steps. Empty where the
-  // identification made none at E, and where E is sought over several faces.
-  Eigen::VectorXd shownSingularValues;
-  Eigen::MatrixXd shownDirections;
+  // The face's information over the directions sought, decomposed once by the identification
+  // (identified_axes.h, StepDecomposition): at E, where it decided its directions there
+  // (identification.h, firstBlockAtSolution), and at the run face (E = 0, where it started:
+  // firstBlockAtStart) where E was found from there and not sought over every coefficient. Empty
+  // where none was made, and where E is sought over several faces.
+  StepDecomposition atSolution, atRun;
   // With the wheel alongside (wheel_error.h): q x m, the axis changes (coefficient units) that make,
   // to first order, the face of each wheel shape the wheel left to the axes. The face cannot tell
   // such a shape from its axis change; the bound samples them (face_prediction.h).

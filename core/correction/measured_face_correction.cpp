@@ -134,9 +134,8 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   // the free coefficients' machine steps, what was identified alongside, and the identified error.
   Eigen::MatrixXd sensitivities, alongside, basis;
   Eigen::VectorXd steps, errorCoefficients;
-  // The identification's decomposition of the sensitivities at E (machine_error.h): empty if none.
-  Eigen::VectorXd shownSingularValues;
-  Eigen::MatrixXd shownDirections;
+  // The identification's decompositions of the sensitivities at E and at the run (machine_error.h).
+  StepDecomposition atSolution, atRunMade;
   if (o.method == CorrectionMethod::Linear && linearisedAt)
     return refuse("axes", "the face these axes grind without the machine's error cannot be simulated, and the linear "
                           "step needs it: use correction.method \"nonlinear\".", ErrorCode::Unsolvable);
@@ -223,8 +222,8 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     alongside = est.nuisance;
     steps = est.space.step;
     basis = est.space.basis;
-    shownSingularValues = est.shownSingularValues;
-    shownDirections = est.shownDirections;
+    atSolution = est.atSolution;
+    atRunMade = est.atRun;
     errorCoefficients = est.coefficientError;
   }
   const SharpeningSetup& grinding = dressed ? *dressed : setup;  // the wheel the predicted faces are ground with
@@ -295,16 +294,17 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
           ? Eigen::VectorXd(flat(unexplained) + sensitivities * errorCoefficients)
           : Eigen::VectorXd();
   c.identified = identifiedAxes(c.coefficients, steps, joined ? historyJacobian : atRun ? runSensitivities : sensitivities, alongside, linearised, range.min, range.max,
-                                o.probeNoise, o, atRun ? readingBasis : basis);
+                                o.probeNoise, o, atRun ? readingBasis : basis,
+                                atRun && !freed && !atRunMade.empty() ? &atRunMade : nullptr);
   // One quantity: the uncertainty is the change per µm of noise times sigma. The identified error's
   // spread is its identification's, at the identified error (from the decomposition the
   // identification made there, where it made one and nothing was identified alongside); the values
   // read are the measured change's, at the run.
-  const bool decomposed = alongside.cols() == 0 && shownDirections.rows() == static_cast<int>(c.coefficients.size());
+  const bool decomposed = alongside.cols() == 0 && atSolution.directions.rows() == static_cast<int>(c.coefficients.size());
   const std::array<double, kAxisCount> spread =
       !atRun ? c.identified.spreadPerNoise
       : decomposed
-          ? axisSpreadPerNoise(c.coefficients, steps, shownSingularValues, shownDirections, range.min, range.max)
+          ? axisSpreadPerNoise(c.coefficients, steps, atSolution, range.min, range.max)
           : axisSpreadPerNoise(c.coefficients, steps, sensitivities, alongside, range.min, range.max, basis);
   for (int i = 0; i < kAxisCount; ++i) {
     c.changePerNoise[i] = spread[static_cast<size_t>(i)];
