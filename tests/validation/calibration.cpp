@@ -12,6 +12,9 @@
 
 #include "evaluation.h"
 #include "face_vectors.h"
+#include "sensitivity_matrix.h"
+#include "machine_resolution.h"
+#include "number_text.h"
 #include "ground_face.h"
 #include "scenario.h"
 #include "sharpening_job.h"
@@ -62,6 +65,16 @@ void collect(const IdentifiedAxes& id, double sigma, std::map<std::string, Sampl
 
 }  // namespace
 
+int Calibration::withTruth() const {
+  return static_cast<int>(std::count_if(values.begin(), values.end(), [](const CalibratedValue& v) { return v.hasTruth; }));
+}
+
+int Calibration::nearTruth() const {
+  return static_cast<int>(std::count_if(values.begin(), values.end(), [&](const CalibratedValue& v) {
+    return v.hasTruth && v.miss() <= options.truthWithin;
+  }));
+}
+
 int Calibration::within() const {
   return static_cast<int>(std::count_if(values.begin(), values.end(), [&](const CalibratedValue& v) {
     return v.ratio() >= options.low && v.ratio() <= options.high;
@@ -77,11 +90,19 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
   const auto one = [&](int h) {
     const int index = scenarioIndex(h);
     auto s = makeScenario(o.seed, index);
+    AxisPolynomials error;
+    if (s) {
+      error = s->error;
+      for (Axis a : kAxes)
+        for (size_t k = 0; k < error[a].a.size(); ++k) error[a].a[k] *= k > 0 && o.offsetsOnly ? 0.0 : o.errorScale;
+    }
     auto job = s ? resolveJob(s->input) : Outcome<SharpeningJob>(s.error());
-    auto ground = job ? simulateGroundFace(job->setup, plusError(job->nominalAxes, s->error), job->grid,
+    auto ground = job ? simulateGroundFace(job->setup, plusError(job->nominalAxes, error), job->grid,
                                            Sensitivities::Skip)
                       : Outcome<GroundFace>(job.error());
-    if (!ground) {
+    auto nominal = ground ? simulateGroundFace(job->setup, job->nominalAxes, job->grid, Sensitivities::Compute)
+                          : Outcome<GroundFace>(ground.error());
+    if (!ground || !nominal) {
       std::lock_guard<std::mutex> g(lock);
       ++out.hobsFailed;
       return;
@@ -89,7 +110,25 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
     const Eigen::MatrixXd face = topographyOf(*ground).normal;
     std::mt19937_64 noise(o.seed * 0xD1B54A32D192ED03ull + static_cast<std::uint64_t>(index) + 11);
     std::normal_distribution<double> gauss(0, 1);
-    std::map<std::string, Sample> samples;
+    std::map<std::string, Sample> samples, truths;
+    {
+      // The true error's face to first order: the nominal face plus its sensitivities times the
+      // error's coefficients; read without noise (the probe noise declared as in the measurements).
+      std::vector<Coefficient> cs;
+      std::vector<double> e;
+      for (Axis a : kAxes)
+        for (size_t k = 0; k < error[a].a.size(); ++k) cs.push_back(Coefficient{a, static_cast<int>(k)}), e.push_back(error[a].a[k]);
+      const Eigen::MatrixXd S = sensitivityMatrix(*nominal, cs).normal;
+      CaseInput c = s->input;
+      c.axes = job->nominalAxes;
+      c.measured = topographyOf(*nominal).normal +
+                   gridOf(S * Eigen::Map<const Eigen::VectorXd>(e.data(), static_cast<Eigen::Index>(e.size())),
+                          static_cast<int>(face.rows()), static_cast<int>(face.cols()));
+      c.correction.probeNoise = o.sigma;
+      auto j = resolveJob(c);
+      auto t = j ? evaluate(*j) : Outcome<Evaluation>(j.error());
+      if (t && t->correction) collect(t->correction->identified, o.sigma, truths);
+    }
     int evaluations = 0, refused = 0;
     for (int k = 0; k < o.measurements; ++k) {
       CaseInput c = s->input;
@@ -130,6 +169,9 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
       for (double x : sample.values) ss += (x - v.mean) * (x - v.mean);
       v.spread = std::sqrt(ss / (n - 1));
       v.given = std::sqrt(given2 / n);
+      const auto t = truths.find(what);
+      v.hasTruth = t != truths.end();
+      v.truth = v.hasTruth ? t->second.values.front() : 0.0;
       judged.push_back(v);
     }
     std::lock_guard<std::mutex> g(lock);
@@ -167,12 +209,21 @@ nlohmann::json toJson(const Calibration& c) {
   j["unstable"] = c.unstable;
   j["within"] = c.within();
   j["judged"] = c.values.size();
+  j["errorScale"] = c.options.errorScale;
+  j["truthWithin"] = c.options.truthWithin;
+  j["withTruth"] = c.withTruth();
+  j["nearTruth"] = c.nearTruth();
   j["seconds"] = c.seconds;
   for (const CalibratedValue& v : c.unstableValues)
     j["unstableValues"].push_back({{"hob", v.hob}, {"what", v.what}, {"read", v.read}});
   for (const CalibratedValue& v : c.values)
     j["values"].push_back({{"hob", v.hob}, {"what", v.what}, {"unit", v.unit}, {"read", v.read}, {"mean", v.mean},
                            {"spread", v.spread}, {"given", v.given}, {"ratio", v.ratio()}});
+  for (size_t i = 0; i < c.values.size(); ++i)
+    if (c.values[i].hasTruth) {
+      j["values"][i]["truth"] = c.values[i].truth;
+      j["values"][i]["miss"] = c.values[i].miss();
+    }
   return j;
 }
 
@@ -181,12 +232,15 @@ std::string calibrationText(const Calibration& c) {
   s.precision(3);
   const int n = static_cast<int>(c.values.size());
   s << "Calibration of the values read (seed " << c.options.seed << ", " << c.hobsRun << " random hobs of the noisy class, "
+    << (c.options.errorScale != 1 ? "error times " + numberText(c.options.errorScale, 3) + ", " : std::string())
     << c.options.measurements << " measurements each, probe noise " << c.options.sigma << " µm; " << c.evaluations
     << " evaluations, " << c.refused << " refused; " << c.hobsFailed << " hobs not run)\n";
   s << "  " << c.within() << " of " << n << " values read ("
     << (n > 0 ? 100.0 * c.within() / n : 0.0) << " %) have a spread " << c.options.low << " to " << c.options.high
     << " times the uncertainty given; " << c.unstable << " more were read in fewer than "
     << static_cast<int>(std::ceil(c.options.leastShareRead * c.options.measurements)) << " of the measurements\n";
+  s << "  " << c.nearTruth() << " of " << c.withTruth() << " values read from the true error's first-order face too lie, on average "
+    << "over the measurements, within " << c.options.truthWithin << " uncertainties of that\n";
   std::vector<double> r;
   for (const CalibratedValue& v : c.values) r.push_back(v.ratio());
   std::sort(r.begin(), r.end());
@@ -200,6 +254,11 @@ std::string calibrationText(const Calibration& c) {
       s << "  outside: scenario " << v.hob << ", " << v.what << ": spread " << v.spread << " " << v.unit << ", given "
         << v.given << " " << v.unit << " (ratio " << v.ratio() << ", read " << v.read << " times, mean " << v.mean
         << " " << v.unit << ")\n";
+  for (const CalibratedValue& v : c.values)
+    if (v.hasTruth && v.miss() > c.options.truthWithin)
+      s << "  far from the truth: scenario " << v.hob << ", " << v.what << ": mean " << v.mean << " " << v.unit
+        << ", true " << v.truth << " " << v.unit << ", given " << v.given << " " << v.unit << " (" << v.miss()
+        << " uncertainties)\n";
   return s.str();
 }
 

@@ -6,6 +6,7 @@
 // calibrated uncertainty gives a ratio near 1; the target is 0.7 to 1.4.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -24,6 +25,16 @@ struct CalibrationOptions {
   // reading of an axis can change with the noise: alone in some measurements, together in others).
   double leastShareRead = 2.0 / 3.0;
   double low = 0.7, high = 1.4;  // the ratio asked: spread / uncertainty given
+  // The machine error drawn, times this (1: the noisy class's 10 µm rms; 3: about 30 µm rms).
+  double errorScale = 1;
+  // Only the error's constant terms (an offset on each axis, as a machine that is set off has):
+  // axes are then read alone more often, and those values are judged against the true error.
+  bool offsetsOnly = false;
+  // Each value is judged against the true error too: the same value read from the face the true
+  // error makes to first order (the nominal face plus its sensitivities times the error), without
+  // noise, the value the reading stands for. Its mean over the measurements should lie within this
+  // many of its standard uncertainties of that (beyond it: a value wrong by more than it says).
+  double truthWithin = 3;
 };
 
 // One value the page reads on one hob, over the measurements that read it.
@@ -35,7 +46,12 @@ struct CalibratedValue {
   double mean = 0;         // mean of the values read
   double spread = 0;       // their standard deviation (n - 1)
   double given = 0;        // root mean square of the standard uncertainties given with them
+  // The value read from the true error's first-order face, noise-free (where it is read there).
+  bool hasTruth = false;
+  double truth = 0;
   double ratio() const { return given > 0 ? spread / given : 0.0; }
+  // How far the mean read lies from the truth, in uncertainties given (0 without a truth).
+  double miss() const { return hasTruth && given > 0 ? std::abs(mean - truth) / given : 0.0; }
 };
 
 struct Calibration {
@@ -48,6 +64,8 @@ struct Calibration {
   std::vector<CalibratedValue> values;  // the values judged
   double seconds = 0;
   int within() const;       // values whose ratio lies in [low, high]
+  int withTruth() const;    // values also read from the true error's first-order face
+  int nearTruth() const;    // of them, those within truthWithin uncertainties of it
 };
 
 Calibration runCalibration(const CalibrationOptions& options, unsigned threads);

@@ -25,6 +25,8 @@ int main(int argc, char** argv) {
   int index = -1;
   bool calibration = false;
   int hobs = CalibrationOptions{}.hobs;
+  double errorScale = 1;
+  bool offsetsOnly = false;
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -35,10 +37,12 @@ int main(int argc, char** argv) {
     else if (a == "--index" && hasValue) index = std::atoi(argv[++i]);
     else if (a == "--calibration") calibration = true;
     else if (a == "--hobs" && hasValue) hobs = std::atoi(argv[++i]);
+    else if (a == "--error-scale" && hasValue) errorScale = std::atof(argv[++i]);
+    else if (a == "--offsets-only") offsetsOnly = true;
     else if (a == "--threads" && hasValue) threads = static_cast<unsigned>(std::max(1, std::atoi(argv[++i])));
     else {
       std::cerr << "usage: validate [--scenarios N] [--seed S] [--out DIR] [--threads T] [--index I]\n"
-                   "       validate --calibration [--hobs H] [--seed S] [--out DIR] [--threads T]\n";
+                   "       validate --calibration [--hobs H] [--error-scale K] [--offsets-only] [--seed S] [--out DIR] [--threads T]\n";
       return 2;
     }
   }
@@ -51,6 +55,8 @@ int main(int argc, char** argv) {
     CalibrationOptions o;
     o.seed = seed;
     o.hobs = std::max(1, hobs);
+    if (errorScale > 0) o.errorScale = errorScale;
+    o.offsetsOnly = offsetsOnly;
     const Calibration c = runCalibration(o, threads);
     std::cout << calibrationText(c);
     std::filesystem::create_directories(out);
