@@ -10,6 +10,8 @@
 #include "identification_cases.h"
 #include "identified_axes.h"
 #include "machine_error.h"
+#include "sensitivity_matrix.h"
+#include "structural_null_space.h"
 #include "result_model.h"
 
 namespace hobsharp::test {
@@ -326,6 +328,41 @@ TEST(IdentifiedWords, ReadingAtTheRunFromTheIdentificationsDecomposition) {
       }
     }
   }
+}
+
+// The second-order part is read by the same linear reading as the data: given the data itself, each
+// value's second-order figure is twice the value (kSecondOrderMargin); given nothing, none.
+TEST(IdentifiedWords, SecondOrderIsTheSameReadingOfTheSecondOrderPart) {
+  const SharpeningJob job = jobOf(paperCase());
+  CorrectionOptions o = job.correction;
+  o.probeNoise = 0.5;
+  const Eigen::MatrixXd measured =
+      topographyFor(job, withMachineError(job.nominalAxes, inSpanError(job, 100, 5))).normal +
+      probeNoise(job.grid.rows(), job.grid.cols(), o.probeNoise, 3);
+  const GroundFace face = groundFaceOf(job, job.nominalAxes);
+  const IdentifiableSpace space = identifiableSpace(job.setup.face, job.nominalAxes.degree(), o, 1);
+  const MotionRange range = motionRange(face);
+  const Eigen::MatrixXd S = sensitivityMatrix(face, space.coefficients).normal;
+  const Eigen::VectorXd data = flat(measured) - faceNormal(face);
+  const IdentifiedAxes plain = identifiedAxes(space.coefficients, space.step, S, Eigen::MatrixXd(), data, range.min,
+                                              range.max, o.probeNoise, o, space.basis);
+  const IdentifiedAxes same = identifiedAxes(space.coefficients, space.step, S, Eigen::MatrixXd(), data, range.min,
+                                             range.max, o.probeNoise, o, space.basis, nullptr, &data);
+  ASSERT_FALSE(plain.combinations.empty());
+  for (size_t k = 0; k < plain.combinations.size(); ++k) {
+    EXPECT_EQ(plain.combinations[k].secondOrder, 0.0);
+    EXPECT_NEAR(same.combinations[k].value, plain.combinations[k].value, 1e-9 * (1 + std::abs(plain.combinations[k].value)));
+    EXPECT_NEAR(same.combinations[k].secondOrder, 2 * std::abs(same.combinations[k].value),
+                1e-9 * (1 + std::abs(same.combinations[k].value)));
+    for (size_t m = 0; m < same.combinations[k].aloneValue.size(); ++m)
+      EXPECT_NEAR(same.combinations[k].aloneSecondOrder[m], 2 * std::abs(same.combinations[k].aloneValue[m]),
+                  1e-9 * (1 + std::abs(same.combinations[k].aloneValue[m])));
+  }
+  // Where it is larger than the uncertainty, the sentence says it.
+  bool said = false;
+  for (const std::string& t : same.sentences) said = said || t.find("second order may move it up to") != std::string::npos;
+  EXPECT_TRUE(said);
+  for (const std::string& t : plain.sentences) EXPECT_EQ(t.find("second order"), std::string::npos) << t;
 }
 
 // The fields reach the result: per axis its reading and value, and the sentences.

@@ -43,6 +43,9 @@ struct AxisIdentification {
   // Alone: the axis's error read on its own, its mean over the motion range, µm (X, Y, Z) or µrad
   // (A, B), and that value's standard uncertainty per µm of probe noise. 0 otherwise.
   double value = 0, perNoise = 0;
+  // Alone: how far the error's second-order face may move the value (µm or µrad; 0 unless read
+  // with a second-order part, identifiedAxes).
+  double secondOrder = 0;
   // Over every direction the face shows: the standard deviation of the axis's curve per µm of
   // noise (largest over the range; of the part the face can see) and its multiple correlation with
   // the other axes' curves (largest over the range; 1 when part of it is a combination the face
@@ -59,12 +62,13 @@ struct AxisCombination {
   // The first axis's error that alone grinds what the face shows of the group, its mean over the
   // range, and that value's standard uncertainty per µm of noise.
   double value = 0, perNoise = 0;
+  double secondOrder = 0;  // how far the error's second-order face may move the value (as AxisIdentification's)
   // Per member, in the order of `axes`: the error of that axis alone that grinds what the face
   // shows of the group (its mean over the range) with its standard uncertainty per µm of noise, and
   // whether it grinds it as well as the first to within the noise (its misfit at most
   // significance² sigma² above): the sentence names those, what the face shows were the error on
   // that axis.
-  std::vector<double> aloneValue, alonePerNoise;
+  std::vector<double> aloneValue, alonePerNoise, aloneSecondOrder;
   std::vector<bool> aloneListed;
   std::string sentence;
 };
@@ -112,10 +116,14 @@ std::array<double, kAxisCount> axisSpreadPerNoise(const std::vector<Coefficient>
 // range; probeNoise: sigma, µm; basis: the identifiable space's basis over the coefficients
 // (IdentifiableSpace::basis), whose coefficients outside it (a straight gash's X, Y, B) the face
 // does not show; empty: judged from S alone. made: S's decomposition over basis made already (no
-// nuisance; MachineErrorEstimate::atRun), or null: S is decomposed here.
+// nuisance; MachineErrorEstimate::atRun), or null: S is decomposed here. secondOrder: the part of
+// `data` the identified error's face holds beyond its first order (µm per point: the face at E less
+// the run face less S E), or null: each value read also reads it, and twice that is how far the
+// error's second order may move the value (the values' secondOrder fields).
 IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& coefficients, const Eigen::VectorXd& step,
                               const Eigen::MatrixXd& S, const Eigen::MatrixXd& nuisance, const Eigen::VectorXd& data,
                               double rangeMin, double rangeMax, double probeNoise, const CorrectionOptions& options,
-                              const Eigen::MatrixXd& basis = Eigen::MatrixXd(), const StepDecomposition* made = nullptr);
+                              const Eigen::MatrixXd& basis = Eigen::MatrixXd(), const StepDecomposition* made = nullptr,
+                              const Eigen::VectorXd* secondOrder = nullptr);
 
 }  // namespace hobsharp

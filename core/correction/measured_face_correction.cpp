@@ -293,9 +293,16 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
       : sensitivities.cols() == errorCoefficients.size() && sensitivities.rows() == unexplained.size()
           ? Eigen::VectorXd(flat(unexplained) + sensitivities * errorCoefficients)
           : Eigen::VectorXd();
+  // Read at the run, the data hold the error's second-order face too, which the linear reading takes
+  // into the values: what the identified error's face holds beyond its first order (the face at E
+  // less the run face less S E) is read alongside, so each value says how far it may be moved.
+  Eigen::VectorXd secondOrder;
+  if (atRun && runSensitivities.cols() == errorCoefficients.size() && unexplained.size() == measured.size())
+    secondOrder = linearised - flat(unexplained) - runSensitivities * errorCoefficients;
   c.identified = identifiedAxes(c.coefficients, steps, joined ? historyJacobian : atRun ? runSensitivities : sensitivities, alongside, linearised, range.min, range.max,
                                 o.probeNoise, o, atRun ? readingBasis : basis,
-                                atRun && !freed && !atRunMade.empty() ? &atRunMade : nullptr);
+                                atRun && !freed && !atRunMade.empty() ? &atRunMade : nullptr,
+                                secondOrder.size() == linearised.size() ? &secondOrder : nullptr);
   // One quantity: the uncertainty is the change per µm of noise times sigma. The identified error's
   // spread is its identification's, at the identified error (from the decomposition the
   // identification made there, where it made one and nothing was identified alongside); the values

@@ -628,7 +628,11 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
         "correction.identifiedAloneUncertainty.X", "correction.identifiedAloneUncertainty.Y",
         "correction.identifiedAloneUncertainty.Z", "correction.identifiedAloneUncertainty.A",
         "correction.identifiedAloneUncertainty.B"};
-    std::array<double, kAxisCount> alone{}, aloneUncertainty{};
+    static const char* const kAloneSecondOrder[] = {
+        "correction.identifiedAloneSecondOrder.X", "correction.identifiedAloneSecondOrder.Y",
+        "correction.identifiedAloneSecondOrder.Z", "correction.identifiedAloneSecondOrder.A",
+        "correction.identifiedAloneSecondOrder.B"};
+    std::array<double, kAxisCount> alone{}, aloneUncertainty{}, aloneSecondOrder{};
     for (Axis a : kAxes) {
       const int i = static_cast<int>(a);
       const AxisIdentification& x = c.identified.axes[i];
@@ -636,11 +640,14 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
              readingName(x.reading));
       alone[i] = x.value;
       aloneUncertainty[i] = x.perNoise * probeNoise;
+      aloneSecondOrder[i] = x.secondOrder;
     }
     perAxis(kAlone, "µm", "µrad", "the axis's error read on its own, its mean over the motion range the face measured spans (a grid's: motion.min to motion.max; measured points may span less than the axes run); 0 unless correction.identifiedAxes gives \"alone\"",
             alone);
     perAxis(kAloneUncertainty, "µm", "µrad", "standard uncertainty of correction.identifiedAlone from the probe noise; 0 unless \"alone\"",
             aloneUncertainty);
+    perAxis(kAloneSecondOrder, "µm", "µrad", "how far the error's second-order face may move correction.identifiedAlone beyond its uncertainty (twice what the identified error's own second-order face moves it; read from the face measured at the axes run, else 0); 0 unless \"alone\"",
+            aloneSecondOrder);
     v.texts({"correction.identifiedCombinations", "", "sentences: the axes the face does not tell apart, in what proportion they grind alike and what it shows of them (µm, µrad), then the axes it does not show", kWithMeasured},
             c.identified.sentences);
     // With measuredPoints off the grid the grid views are the re-simulated faces (docs/measured-points.md).

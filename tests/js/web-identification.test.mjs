@@ -21,11 +21,14 @@ test('per axis: the error read on its own only where the face tells it apart, un
     identifiedAxes: { X: 'together', Y: 'together', Z: 'alone', A: 'unseen', B: 'alone' },
     identifiedAlone: { X: 0, Y: 0, Z: -3.01, A: 0, B: NaN },
     identifiedAloneUncertainty: { X: 0, Y: 0, Z: 0.06, A: 0, B: 4 },
+    identifiedAloneSecondOrder: { X: 0, Y: 0, Z: 0.4, A: 0, B: NaN },
     identifiedError: { X: 1.5, Y: -2, Z: -3.2, A: 12, B: 3 },
     axisChange: { X: -1.5, Y: 2, Z: 3.2, A: -12, B: -3 },
   };
   const rows = errorRows(c, AXES, unitOf);
-  assert.deepEqual(rows[2], { axis: 'Z', reading: 'alone', error: -3.01, errorUnit: 'µm', uncertainty: 0.06, change: 3.2, changeUnit: 'µm', changeOverFace: null });
+  assert.deepEqual(rows[2], { axis: 'Z', reading: 'alone', error: -3.01, errorUnit: 'µm', uncertainty: 0.06, secondOrder: 0.4, change: 3.2, changeUnit: 'µm', changeOverFace: null });
+  assert.equal(rows[0].secondOrder, null, 'no second-order figure where no value is read on its own');
+  assert.equal(rows[4].secondOrder, null, 'NaN never reaches the table');
   assert.equal(rows[0].error, null, 'X is not read on its own: its share of a combination is not shown as its error');
   assert.equal(rows[0].uncertainty, null);
   assert.equal(rows[0].change, -1.5, 'the change proposed is shown for every axis');

@@ -36,30 +36,33 @@ std::string axesText(const std::vector<Axis>& axes) {
 
 struct Sample {
   std::string unit;
-  std::vector<double> values, given;
+  std::vector<double> values, given, secondOrder;
 };
 
 // The values one evaluation reads, each with its standard uncertainty (µm or µrad).
 void collect(const IdentifiedAxes& id, double sigma, std::map<std::string, Sample>& into) {
-  const auto add = [&](const std::string& what, const char* unit, double value, double perNoise) {
+  const auto add = [&](const std::string& what, const char* unit, double value, double perNoise, double secondOrder) {
     Sample& s = into[what];
     s.unit = unit;
     s.values.push_back(value);
     s.given.push_back(perNoise * sigma);
+    s.secondOrder.push_back(secondOrder);
   };
   for (Axis a : kAxes) {
     const AxisIdentification& r = id.axes[static_cast<size_t>(a)];
-    if (r.reading == AxisReading::Alone) add(std::string(axisName(a)) + " alone", unitOf(a), r.value, r.perNoise);
+    if (r.reading == AxisReading::Alone)
+      add(std::string(axisName(a)) + " alone", unitOf(a), r.value, r.perNoise, r.secondOrder);
   }
   for (const AxisCombination& c : id.combinations) {
     if (c.axes.empty()) continue;
     const std::string group = axesText(c.axes);
-    add(std::string(axisName(c.axes[0])) + "-equivalent of " + group, unitOf(c.axes[0]), c.value, c.perNoise);
+    add(std::string(axisName(c.axes[0])) + "-equivalent of " + group, unitOf(c.axes[0]), c.value, c.perNoise,
+        c.secondOrder);
     // The other members' values alone, where the sentence gives them.
     for (size_t m = 1; m < c.axes.size() && m < c.aloneListed.size(); ++m)
       if (c.aloneListed[m])
         add(std::string(axisName(c.axes[m])) + " alone of " + group, unitOf(c.axes[m]), c.aloneValue[m],
-            c.alonePerNoise[m]);
+            c.alonePerNoise[m], m < c.aloneSecondOrder.size() ? c.aloneSecondOrder[m] : 0.0);
   }
 }
 
@@ -73,6 +76,23 @@ int Calibration::nearTruth() const {
   return static_cast<int>(std::count_if(values.begin(), values.end(), [&](const CalibratedValue& v) {
     return v.hasTruth && v.miss() <= options.truthWithin;
   }));
+}
+
+int Calibration::nearTruthStated() const {
+  return static_cast<int>(std::count_if(values.begin(), values.end(),
+                                        [&](const CalibratedValue& v) { return v.withinStated(options.truthWithin); }));
+}
+
+int Calibration::draws() const {
+  int n = 0;
+  for (const CalibratedValue& v : values) n += v.hasTruth ? v.read : 0;
+  return n;
+}
+
+int Calibration::drawsNearTruth() const {
+  int n = 0;
+  for (const CalibratedValue& v : values) n += v.hasTruth ? v.drawsNearTruth : 0;
+  return n;
 }
 
 int Calibration::within() const {
@@ -172,6 +192,13 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
       const auto t = truths.find(what);
       v.hasTruth = t != truths.end();
       v.truth = v.hasTruth ? t->second.values.front() : 0.0;
+      for (int i = 0; i < n; ++i) {
+        const double so = sample.secondOrder[static_cast<size_t>(i)];
+        v.secondOrder += so / n;
+        if (v.hasTruth && std::abs(sample.values[static_cast<size_t>(i)] - v.truth) <=
+                              o.truthWithin * sample.given[static_cast<size_t>(i)] + so)
+          ++v.drawsNearTruth;
+      }
       judged.push_back(v);
     }
     std::lock_guard<std::mutex> g(lock);
@@ -213,6 +240,9 @@ nlohmann::json toJson(const Calibration& c) {
   j["truthWithin"] = c.options.truthWithin;
   j["withTruth"] = c.withTruth();
   j["nearTruth"] = c.nearTruth();
+  j["nearTruthStated"] = c.nearTruthStated();
+  j["draws"] = c.draws();
+  j["drawsNearTruth"] = c.drawsNearTruth();
   j["seconds"] = c.seconds;
   for (const CalibratedValue& v : c.unstableValues)
     j["unstableValues"].push_back({{"hob", v.hob}, {"what", v.what}, {"read", v.read}});
@@ -223,6 +253,8 @@ nlohmann::json toJson(const Calibration& c) {
     if (c.values[i].hasTruth) {
       j["values"][i]["truth"] = c.values[i].truth;
       j["values"][i]["miss"] = c.values[i].miss();
+      j["values"][i]["secondOrder"] = c.values[i].secondOrder;
+      j["values"][i]["drawsNearTruth"] = c.values[i].drawsNearTruth;
     }
   return j;
 }
@@ -240,7 +272,10 @@ std::string calibrationText(const Calibration& c) {
     << " times the uncertainty given; " << c.unstable << " more were read in fewer than "
     << static_cast<int>(std::ceil(c.options.leastShareRead * c.options.measurements)) << " of the measurements\n";
   s << "  " << c.nearTruth() << " of " << c.withTruth() << " values read from the true error's first-order face too lie, on average "
-    << "over the measurements, within " << c.options.truthWithin << " uncertainties of that\n";
+    << "over the measurements, within " << c.options.truthWithin << " uncertainties of that; "
+    << c.nearTruthStated() << " within " << c.options.truthWithin
+    << " uncertainties plus the second-order figure stated with them (of their measurements, "
+    << c.drawsNearTruth() << " of " << c.draws() << ")\n";
   std::vector<double> r;
   for (const CalibratedValue& v : c.values) r.push_back(v.ratio());
   std::sort(r.begin(), r.end());
@@ -258,7 +293,8 @@ std::string calibrationText(const Calibration& c) {
     if (v.hasTruth && v.miss() > c.options.truthWithin)
       s << "  far from the truth: scenario " << v.hob << ", " << v.what << ": mean " << v.mean << " " << v.unit
         << ", true " << v.truth << " " << v.unit << ", given " << v.given << " " << v.unit << " (" << v.miss()
-        << " uncertainties)\n";
+        << " uncertainties), second order up to " << v.secondOrder << " " << v.unit
+        << (v.withinStated(c.options.truthWithin) ? "" : ": BEYOND IT") << "\n";
   return s.str();
 }
 

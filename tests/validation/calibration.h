@@ -49,9 +49,16 @@ struct CalibratedValue {
   // The value read from the true error's first-order face, noise-free (where it is read there).
   bool hasTruth = false;
   double truth = 0;
+  // The mean of how far the error's second order may move the value, as each measurement said
+  // (identified_axes.h, secondOrder); and of the measurements, how many read it within 3
+  // uncertainties plus that of the truth.
+  double secondOrder = 0;
+  int drawsNearTruth = 0;
   double ratio() const { return given > 0 ? spread / given : 0.0; }
   // How far the mean read lies from the truth, in uncertainties given (0 without a truth).
   double miss() const { return hasTruth && given > 0 ? std::abs(mean - truth) / given : 0.0; }
+  // The mean within truthWithin uncertainties plus the second-order figure of the truth.
+  bool withinStated(double within) const { return hasTruth && std::abs(mean - truth) <= within * given + secondOrder; }
 };
 
 struct Calibration {
@@ -66,6 +73,8 @@ struct Calibration {
   int within() const;       // values whose ratio lies in [low, high]
   int withTruth() const;    // values also read from the true error's first-order face
   int nearTruth() const;    // of them, those within truthWithin uncertainties of it
+  int nearTruthStated() const;  // ... within truthWithin uncertainties plus the second-order figure
+  int draws() const, drawsNearTruth() const;  // the same per measurement, over the values with a truth
 };
 
 Calibration runCalibration(const CalibrationOptions& options, unsigned threads);

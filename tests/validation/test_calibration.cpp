@@ -35,22 +35,30 @@ TEST(Calibration, ValuesReadSpreadAsTheirUncertaintySays) {
   EXPECT_GE(c.within(), 0.9 * static_cast<double>(c.values.size()));
   EXPECT_LT(highestRatio(c), 1.6);
   for (const CalibratedValue& v : c.values) EXPECT_GT(v.ratio(), 0.6) << "scenario " << v.hob << ", " << v.what;
+  // Against the true error's first-order reading: within 3 uncertainties plus the second-order
+  // figure stated with the value (42 of 45 within 3 uncertainties alone here; all with it).
+  ASSERT_GE(c.withTruth(), 0.8 * static_cast<double>(c.values.size()));
+  EXPECT_GE(c.nearTruthStated(), 0.95 * c.withTruth());
+  EXPECT_GE(c.drawsNearTruth(), 0.95 * c.draws());
 }
 
 // The values read stand for the true error's first-order reading (the same value read, noise-free,
 // from the nominal face plus its sensitivities times the error). Where that first order is the
 // face (a 2 µm rms error: the default error times 0.2), every mean over the 30 draws lies within
 // 3 uncertainties of it: the truth is computed right and the reading carries the error. (At
-// 10 µm rms 9 to 11 % do not, at 30 µm 39 %: the uncertainty holds the noise only, still open,
-// docs/validation.md "Against the true error".)
+// 10 µm rms 9 to 11 % do not, at 30 µm 39 %: the uncertainty holds the probe noise only, and
+// each value states beside it how far the error's second order may move it, docs/validation.md
+// "Against the true error".)
 TEST(Calibration, ValuesReadFromASmallErrorLieAtTheTruth) {
   CalibrationOptions o;
   o.hobs = 20;
   o.errorScale = 0.2;
   const Calibration c = runCalibration(o, 2);
   std::printf("%s", calibrationText(c).c_str());
+  // (A value read in the measurements may not be read from the truth's face: which member a group
+  // is read as, and whether a member's value is listed, turn on the noise.)
   ASSERT_GE(c.values.size(), 10u);
-  EXPECT_GE(c.withTruth(), 0.9 * static_cast<double>(c.values.size()));
+  EXPECT_GE(c.withTruth(), 0.8 * static_cast<double>(c.values.size()));
   EXPECT_EQ(c.nearTruth(), c.withTruth());
   for (const CalibratedValue& v : c.values) {
     if (v.hasTruth) {

@@ -29,8 +29,9 @@ function overFace(c, axis) {
   return Math.abs(whole) - Math.abs(change) > 1e-3 * Math.abs(whole) ? whole : null;
 }
 
-// Rows {axis, reading, error, errorUnit, uncertainty, change, changeUnit, changeOverFace} for the axes the result
-// names. error and uncertainty are the value read on its own (correction.identifiedAlone): null
+// Rows {axis, reading, error, errorUnit, uncertainty, secondOrder, change, changeUnit, changeOverFace} for the axes
+// the result names. error, uncertainty and secondOrder (how far the error's second order may move it,
+// correction.identifiedAloneSecondOrder) are the value read on its own (correction.identifiedAlone): null
 // unless the face tells that axis from the others. A result without identifiedAxes (an older one)
 // has no value read on its own.
 export function errorRows(c, axes, unitOf) {
@@ -43,6 +44,7 @@ export function errorRows(c, axes, unitOf) {
       error: alone ? pick(c.identifiedAlone, axis) : null,
       errorUnit: unitOf(`correction.identifiedAlone.${axis}`),
       uncertainty: alone ? pick(c.identifiedAloneUncertainty, axis) : null,
+      secondOrder: alone ? pick(c.identifiedAloneSecondOrder, axis) : null,
       change: pick(c.axisChange, axis),
       changeUnit: unitOf(`correction.axisChange.${axis}`),
       changeOverFace: overFace(c, axis),
