@@ -300,7 +300,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   if (atRun && runSensitivities.cols() == errorCoefficients.size() && unexplained.size() == measured.size())
     secondOrder = linearised - flat(unexplained) - runSensitivities * errorCoefficients;
   c.identified = identifiedAxes(c.coefficients, steps, joined ? historyJacobian : atRun ? runSensitivities : sensitivities, alongside, linearised, range.min, range.max,
-                                o.probeNoise, o, atRun ? readingBasis : basis,
+                                o.probeNoise, o, readingBasis,
                                 atRun && !freed && !atRunMade.empty() ? &atRunMade : nullptr,
                                 secondOrder.size() == linearised.size() ? &secondOrder : nullptr);
   // One quantity: the uncertainty is the change per µm of noise times sigma. The identified error's
