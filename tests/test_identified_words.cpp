@@ -38,6 +38,32 @@ bool names(const std::string& sentence, Axis a) {
          sentence.find(n + ":") != std::string::npos;
 }
 
+// Three coefficients an axis, the sensitivities of 40 random points (µm per unit), each
+// coefficient's machine step 1e-4: a face with nothing of the hob in it.
+struct RandomSensitivities {
+  std::vector<Coefficient> cs;
+  Eigen::MatrixXd S;
+  Eigen::VectorXd step;
+};
+RandomSensitivities randomSensitivities(unsigned seed) {
+  RandomSensitivities r;
+  for (Axis a : kAxes)
+    for (int k = 0; k <= 2; ++k) r.cs.push_back(Coefficient{a, k});
+  const int q = static_cast<int>(r.cs.size());
+  std::srand(seed);
+  r.S = Eigen::MatrixXd::Random(40, q) * 100;
+  r.step = Eigen::VectorXd::Constant(q, 1e-4);
+  return r;
+}
+
+// The face the job's hob is ground with a random error in the identifiable space (sum of squares
+// 100 µm², seed errorSeed), measured with the options' probe noise (seed noiseSeed).
+Eigen::MatrixXd measuredWithError(const SharpeningJob& job, const CorrectionOptions& o, unsigned errorSeed,
+                                  unsigned noiseSeed) {
+  return topographyFor(job, withMachineError(job.nominalAxes, inSpanError(job, 100, errorSeed))).normal +
+         probeNoise(job.grid.rows(), job.grid.cols(), o.probeNoise, noiseSeed);
+}
+
 // (a) An injected Y a0 of +8 µm alone: the words name Y with what it is confounded with, Y is not
 // read on its own, and no axis is read on its own with a value that was never injected.
 void yAloneIsNamed(const char* hob, const SharpeningJob& job, double sigma) {
@@ -191,13 +217,8 @@ TEST(IdentifiedWords, CombinationValueIsCalibratedOverThirtySeeds) {
 // the values read at the axes run (measured_face_correction.cpp): the two are one formula,
 // axisSpreadPerNoise equals identifiedAxes' spreadPerNoise for the same sensitivities.
 TEST(IdentifiedWords, AxisSpreadIsIdentifiedAxesSpread) {
-  std::vector<Coefficient> cs;
-  for (Axis a : kAxes)
-    for (int k = 0; k <= 2; ++k) cs.push_back(Coefficient{a, k});
+  const auto [cs, S, step] = randomSensitivities(7);
   const int q = static_cast<int>(cs.size());
-  std::srand(7);
-  const Eigen::MatrixXd S = Eigen::MatrixXd::Random(40, q) * 100;
-  const Eigen::VectorXd step = Eigen::VectorXd::Constant(q, 1e-4);
   const CorrectionOptions o;
   const IdentifiedAxes id = identifiedAxes(cs, step, S, Eigen::MatrixXd(), Eigen::VectorXd::Random(40), -2, 3, 0.5, o);
   const std::array<double, kAxisCount> spread = axisSpreadPerNoise(cs, step, S, Eigen::MatrixXd(), -2, 3);
@@ -219,13 +240,8 @@ TEST(IdentifiedWords, AxisSpreadIsIdentifiedAxesSpread) {
 // identifiable space, which the face may show weakly away from the nominal axes (a helical gash's
 // X with A), adds nothing, and the sensitivities along it do not matter.
 TEST(IdentifiedWords, AxisSpreadIsOverTheDirectionsSought) {
-  std::vector<Coefficient> cs;
-  for (Axis a : kAxes)
-    for (int k = 0; k <= 2; ++k) cs.push_back(Coefficient{a, k});
+  const auto [cs, S, step] = randomSensitivities(11);
   const int q = static_cast<int>(cs.size());
-  std::srand(11);
-  const Eigen::MatrixXd S = Eigen::MatrixXd::Random(40, q) * 100;
-  const Eigen::VectorXd step = Eigen::VectorXd::Constant(q, 1e-4);
   // The space: every direction but v, a mix of X's and A's constants.
   Eigen::VectorXd v = Eigen::VectorXd::Zero(q);
   v(0) = 0.6, v(9) = -0.8;
@@ -255,9 +271,7 @@ TEST(IdentifiedWords, AxisSpreadFromTheIdentificationsDecomposition) {
     SCOPED_TRACE(job.setup.face.helical() ? "helical gash" : "straight gash");
     CorrectionOptions o = job.correction;
     o.probeNoise = 0.5;
-    const Eigen::MatrixXd measured =
-        topographyFor(job, withMachineError(job.nominalAxes, inSpanError(job, 100, 5))).normal +
-        probeNoise(job.grid.rows(), job.grid.cols(), o.probeNoise, 3);
+    const Eigen::MatrixXd measured = measuredWithError(job, o, 5, 3);
     const GroundFace face = groundFaceOf(job, job.nominalAxes);
     auto est = identifyMachineError(job.setup, job.nominalAxes, face, measured, o);
     ASSERT_TRUE(est.ok()) << est.error().message;
@@ -297,9 +311,7 @@ TEST(IdentifiedWords, ReadingAtTheRunFromTheIdentificationsDecomposition) {
                    std::to_string(seed));
       CorrectionOptions o = job.correction;
       o.probeNoise = 0.5;
-      const Eigen::MatrixXd measured =
-          topographyFor(job, withMachineError(job.nominalAxes, inSpanError(job, 100, seed))).normal +
-          probeNoise(job.grid.rows(), job.grid.cols(), o.probeNoise, seed);
+      const Eigen::MatrixXd measured = measuredWithError(job, o, seed, seed);
       const GroundFace face = groundFaceOf(job, job.nominalAxes);
       auto est = identifyMachineError(job.setup, job.nominalAxes, face, measured, o);
       ASSERT_TRUE(est.ok()) << est.error().message;
@@ -336,9 +348,7 @@ TEST(IdentifiedWords, SecondOrderIsTheSameReadingOfTheSecondOrderPart) {
   const SharpeningJob job = jobOf(paperCase());
   CorrectionOptions o = job.correction;
   o.probeNoise = 0.5;
-  const Eigen::MatrixXd measured =
-      topographyFor(job, withMachineError(job.nominalAxes, inSpanError(job, 100, 5))).normal +
-      probeNoise(job.grid.rows(), job.grid.cols(), o.probeNoise, 3);
+  const Eigen::MatrixXd measured = measuredWithError(job, o, 5, 3);
   const GroundFace face = groundFaceOf(job, job.nominalAxes);
   const IdentifiableSpace space = identifiableSpace(job.setup.face, job.nominalAxes.degree(), o, 1);
   const MotionRange range = motionRange(face);
