@@ -268,6 +268,19 @@ TEST(Identification, FewerPointsThanDirections) {
   EXPECT_LE(e->correction->singularValues.size(), 9);
   EXPECT_TRUE(std::isfinite(e->correction->after.sse));
   EXPECT_LT(e->correction->after.sse, e->correction->before.sse);
+  // The precision demand of what the face shows (Z and A on a straight gash): a figure, never the 0
+  // that would read as perfectly precise (the decomposition of 9 points has fewer singular values
+  // than directions); the same with the paper's helical hob on 4 x 4 points (16 against 20).
+  EXPECT_GT(e->correction->changePerNoise[static_cast<int>(Axis::Z)], 0);
+  EXPECT_GT(e->correction->changePerNoise[static_cast<int>(Axis::A)], 0);
+  CaseInput helical = paperCase();
+  helical.grid.radial = 4;
+  helical.grid.axial = 4;
+  const SharpeningJob job = jobOf(helical);
+  helical.measured = topographyFor(job, withMachineError(job.nominalAxes, inSpanError(job, 100, 5))).normal;
+  auto h = evaluate(jobOf(helical));
+  ASSERT_TRUE(h.ok()) << h.error().message;
+  for (Axis a : kAxes) EXPECT_GT(h->correction->changePerNoise[static_cast<int>(a)], 0) << axisName(a);
 }
 
 // The coefficients as the NC program carries them (docs/conventions.md §Machine resolution): 10

@@ -375,6 +375,40 @@ TEST(IdentifiedWords, SecondOrderIsTheSameReadingOfTheSecondOrderPart) {
   for (const std::string& t : plain.sentences) EXPECT_EQ(t.find("second order"), std::string::npos) << t;
 }
 
+// The second-order part the correction reads is what the identified error's face holds beyond its
+// first order: the face at E less the run face less S E, at the run face's points in their order.
+TEST(IdentifiedWords, SecondOrderPartIsTheIdentifiedFaceBeyondItsFirstOrder) {
+  const SharpeningJob job = jobOf(paperCase());
+  CorrectionOptions o = job.correction;
+  o.probeNoise = 0.5;
+  const Eigen::MatrixXd measured = measuredWithError(job, o, 5, 3);
+  const GroundFace face = groundFaceOf(job, job.nominalAxes);
+  auto est = identifyMachineError(job.setup, job.nominalAxes, face, measured, o);
+  ASSERT_TRUE(est.ok()) << est.error().message;
+  const MachineErrorEstimate& m = *est;
+  ASSERT_FALSE(m.structuralFreed());
+  const MotionRange range = motionRange(face);
+  const Eigen::MatrixXd S = sensitivityMatrix(face, m.space.coefficients).normal;
+  const Eigen::VectorXd data = flat(measured) - faceNormal(face);
+  const Eigen::VectorXd second = flat(m.explained) - faceNormal(face) - S * m.coefficientError;
+  const IdentifiedAxes expected = identifiedAxes(m.space.coefficients, m.space.step, S, Eigen::MatrixXd(), data, range.min,
+                                                 range.max, o.probeNoise, o, m.space.basis, &m.atRun, &second);
+  auto c = correctMeasuredFace(job.setup, job.nominalAxes, job.nominalAxes, face, measured, o);
+  ASSERT_TRUE(c.ok()) << c.error().message;
+  const IdentifiedAxes& got = c->identified;
+  ASSERT_EQ(got.combinations.size(), expected.combinations.size());
+  bool some = false;
+  for (size_t k = 0; k < got.combinations.size(); ++k) {
+    some = some || got.combinations[k].secondOrder > 0;
+    EXPECT_NEAR(got.combinations[k].secondOrder, expected.combinations[k].secondOrder,
+                1e-9 * (1 + expected.combinations[k].secondOrder));
+    EXPECT_LT(got.combinations[k].secondOrder, std::abs(got.combinations[k].value)) << "a shift, not the value";
+  }
+  EXPECT_TRUE(some);
+  for (int i = 0; i < kAxisCount; ++i)
+    EXPECT_NEAR(got.axes[i].secondOrder, expected.axes[i].secondOrder, 1e-9 * (1 + expected.axes[i].secondOrder));
+}
+
 // The fields reach the result: per axis its reading and value, and the sentences.
 TEST(IdentifiedWords, ResultFieldsHoldTheWords) {
   std::vector<std::string> paths;

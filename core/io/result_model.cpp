@@ -610,11 +610,11 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
             c.axisChangeSize);
     perAxis(kChangeOverFace, "µm", "µrad", "the change proposed for the axis over the motion range the program runs (the grid's: motion.min to motion.max), signed: correction.axisChange where the face was measured on the grid, and where the grid's figure is not larger by more than half the axis's resolution step; at measured points that span less, the change the program makes beyond them, where no probe saw the face",
             c.axisChangeOverFace);
-    perAxis(kUncertainty, "µm", "µrad", "standard uncertainty of the identified error and the change from the probe noise, over every direction the face shows, largest over the motion range the face measured spans (a grid's: motion.min to motion.max; measured points may span less than the axes run): correction.precision.changePerNoise times correction.probeNoise",
+    perAxis(kUncertainty, "µm", "µrad", "standard uncertainty of the identified error and the change from the probe noise, over every direction the face shows among those sought (the identifiable space; every coefficient where the face was sought over every coefficient), largest over the motion range the face measured spans (a grid's: motion.min to motion.max; measured points may span less than the axes run): correction.precision.changePerNoise times correction.probeNoise",
             c.uncertainty);
     perAxis(kFacePerError, "µm per µm", "µm per µrad", "precision demand: face deviation per unit of a constant error of the axis, largest over the grid",
             c.facePerAxisError, "face per unit of axis error, largest over the grid");
-    perAxis(kChangePerNoise, "µm per µm", "µrad per µm", "precision demand: standard uncertainty of the axis change per µm of probe noise, over every direction the face shows",
+    perAxis(kChangePerNoise, "µm per µm", "µrad per µm", "precision demand: standard uncertainty of the axis change per µm of probe noise, over every direction the face shows among those sought (the identifiable space; every coefficient where the face was sought over every coefficient)",
             c.changePerNoise, "axis change per µm of probe noise, over every direction the face shows");
     // What the face identifies of each axis (identified_axes.h): alone, together or unseen; the
     // value read alone; the combinations in words.
