@@ -89,7 +89,8 @@ inline AxisPolynomials inSpanError(const SharpeningJob& job, double sse, unsigne
   std::mt19937 gen(seed);
   std::normal_distribution<double> normal(0, 1);
   Eigen::VectorXd theta = Eigen::VectorXd::Zero(s.basis.cols());
-  for (int i = 0; i < theta.size(); ++i)
+  // (A grid with fewer points than directions has fewer singular values than directions.)
+  for (int i = 0; i < svd.singularValues().size(); ++i)
     if (svd.singularValues()(i) > 1e-6 * svd.singularValues()(0)) theta += normal(gen) * svd.matrixV().col(i);
   const Eigen::VectorXd a = s.step.asDiagonal() * (s.basis * theta);
   AxisPolynomials e = times(job.nominalAxes, 0.0);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "face_vectors.h"
@@ -62,6 +63,27 @@ Eigen::MatrixXd measuredWithError(const SharpeningJob& job, const CorrectionOpti
                                   unsigned noiseSeed) {
   return topographyFor(job, withMachineError(job.nominalAxes, inSpanError(job, 100, errorSeed))).normal +
          probeNoise(job.grid.rows(), job.grid.cols(), o.probeNoise, noiseSeed);
+}
+
+// A face of the job's hob measured with an in-span error and 0.5 µm of probe noise, at the nominal
+// axes, and the machine error identified from it (empty, with a failure, if it is refused).
+struct IdentifiedFace {
+  CorrectionOptions o;
+  Eigen::MatrixXd measured;
+  GroundFace face;
+  MachineErrorEstimate m;
+};
+std::optional<IdentifiedFace> identifiedFace(const SharpeningJob& job, unsigned errorSeed, unsigned noiseSeed) {
+  IdentifiedFace f;
+  f.o = job.correction;
+  f.o.probeNoise = 0.5;
+  f.measured = measuredWithError(job, f.o, errorSeed, noiseSeed);
+  f.face = groundFaceOf(job, job.nominalAxes);
+  auto est = identifyMachineError(job.setup, job.nominalAxes, f.face, f.measured, f.o);
+  EXPECT_TRUE(est.ok()) << (est.ok() ? "" : est.error().message);
+  if (!est.ok()) return std::nullopt;
+  f.m = std::move(est).value();
+  return f;
 }
 
 // (a) An injected Y a0 of +8 µm alone: the words name Y with what it is confounded with, Y is not
@@ -269,13 +291,9 @@ TEST(IdentifiedWords, AxisSpreadFromTheIdentificationsDecomposition) {
   for (const CaseInput& in : {paperCase(), straightModule4Case()}) {
     const SharpeningJob job = jobOf(in);
     SCOPED_TRACE(job.setup.face.helical() ? "helical gash" : "straight gash");
-    CorrectionOptions o = job.correction;
-    o.probeNoise = 0.5;
-    const Eigen::MatrixXd measured = measuredWithError(job, o, 5, 3);
-    const GroundFace face = groundFaceOf(job, job.nominalAxes);
-    auto est = identifyMachineError(job.setup, job.nominalAxes, face, measured, o);
-    ASSERT_TRUE(est.ok()) << est.error().message;
-    const MachineErrorEstimate& m = *est;
+    const auto f = identifiedFace(job, 5, 3);
+    ASSERT_TRUE(f);
+    const auto& [o, measured, face, m] = *f;
     const int q = static_cast<int>(m.space.coefficients.size());
     ASSERT_EQ(m.atSolution.directions.rows(), q) << "no decomposition at the identified error";
     ASSERT_EQ(m.atSolution.singularValues.size(), m.atSolution.directions.cols());
@@ -309,13 +327,9 @@ TEST(IdentifiedWords, ReadingAtTheRunFromTheIdentificationsDecomposition) {
     for (unsigned seed : {3u, 4u}) {
       SCOPED_TRACE(std::string(job.setup.face.helical() ? "helical gash" : "straight gash") + ", seed " +
                    std::to_string(seed));
-      CorrectionOptions o = job.correction;
-      o.probeNoise = 0.5;
-      const Eigen::MatrixXd measured = measuredWithError(job, o, seed, seed);
-      const GroundFace face = groundFaceOf(job, job.nominalAxes);
-      auto est = identifyMachineError(job.setup, job.nominalAxes, face, measured, o);
-      ASSERT_TRUE(est.ok()) << est.error().message;
-      const MachineErrorEstimate& m = *est;
+      const auto f = identifiedFace(job, seed, seed);
+      ASSERT_TRUE(f);
+      const auto& [o, measured, face, m] = *f;
       ASSERT_EQ(m.atRun.directions.rows(), static_cast<int>(m.space.coefficients.size()));
       const MotionRange range = motionRange(face);
       const Eigen::MatrixXd S = sensitivityMatrix(face, m.space.coefficients).normal;
@@ -379,13 +393,9 @@ TEST(IdentifiedWords, SecondOrderIsTheSameReadingOfTheSecondOrderPart) {
 // first order: the face at E less the run face less S E, at the run face's points in their order.
 TEST(IdentifiedWords, SecondOrderPartIsTheIdentifiedFaceBeyondItsFirstOrder) {
   const SharpeningJob job = jobOf(paperCase());
-  CorrectionOptions o = job.correction;
-  o.probeNoise = 0.5;
-  const Eigen::MatrixXd measured = measuredWithError(job, o, 5, 3);
-  const GroundFace face = groundFaceOf(job, job.nominalAxes);
-  auto est = identifyMachineError(job.setup, job.nominalAxes, face, measured, o);
-  ASSERT_TRUE(est.ok()) << est.error().message;
-  const MachineErrorEstimate& m = *est;
+  const auto f = identifiedFace(job, 5, 3);
+  ASSERT_TRUE(f);
+  const auto& [o, measured, face, m] = *f;
   ASSERT_FALSE(m.structuralFreed());
   const MotionRange range = motionRange(face);
   const Eigen::MatrixXd S = sensitivityMatrix(face, m.space.coefficients).normal;
