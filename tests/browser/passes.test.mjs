@@ -64,7 +64,7 @@ async function identification(page) {
     assert.match(r[r.length - 1], new RegExp(`^−?[\\d.e+-]+ ${unit}$`), r.join(' | '));
   }
   const demand = await page.$$eval('#precision-demand tr', (rows) => rows.map((r) => [...r.children].map((c) => c.textContent.trim())));
-  assert.deepEqual(demand[0], ['axis', 'face per unit of axis error, largest over the grid', 'axis change per µm of probe noise, over every direction the face shows']);
+  assert.deepEqual(demand[0], ['axis', 'face per unit of axis error, largest over the grid', 'axis change per µm of probe noise were every direction the face shows taken']);
   assert.match(demand[1].join(' | '), /^X \| [\d.e+-]+ µm per µm \| [\d.e+-]+ µm per µm$/);
   assert.match(demand[5].join(' | '), /^B \| [\d.e+-]+ µm per µrad \| [\d.e+-]+ µrad per µm$/);
   assert.equal(await page.locator('[data-rounded-axis]').count(), 5);

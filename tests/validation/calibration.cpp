@@ -1,6 +1,7 @@
 #include "calibration.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -33,6 +34,10 @@ std::string axesText(const std::vector<Axis>& axes) {
   for (Axis a : axes) s += (s.empty() ? "" : ", ") + std::string(axisName(a));
   return s;
 }
+
+// Where an axis curve is sampled for its spread over the measurements: this many points over the
+// motion range, ends included.
+constexpr int kCurveSamples = 7;
 
 struct Sample {
   std::string unit;
@@ -95,6 +100,22 @@ int Calibration::drawsNearTruth() const {
   return n;
 }
 
+int Calibration::axisSpreadsWithin() const {
+  return static_cast<int>(std::count_if(axisSpreads.begin(), axisSpreads.end(), [&](const AxisSpread& a) {
+    return a.ratio() >= options.low && a.ratio() <= options.high;
+  }));
+}
+
+int Calibration::axisSpreadsBelow(double share) const {
+  return static_cast<int>(
+      std::count_if(axisSpreads.begin(), axisSpreads.end(), [&](const AxisSpread& a) { return a.ratio() < share; }));
+}
+
+int Calibration::axisSpreadsUnderstated(double factor) const {
+  return static_cast<int>(
+      std::count_if(axisSpreads.begin(), axisSpreads.end(), [&](const AxisSpread& a) { return a.ratio() > factor; }));
+}
+
 int Calibration::within() const {
   return static_cast<int>(std::count_if(values.begin(), values.end(), [&](const CalibratedValue& v) {
     return v.ratio() >= options.low && v.ratio() <= options.high;
@@ -150,6 +171,10 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
       if (t && t->correction) collect(t->correction->identified, o.sigma, truths);
     }
     int evaluations = 0, refused = 0;
+    // Per measurement, each axis's identified error at the curve's samples and correction.uncertainty.
+    const MotionRange range = motionRange(*ground);
+    std::vector<std::array<double, kAxisCount * kCurveSamples>> curves;
+    std::vector<std::array<double, kAxisCount>> uncertainties;
     for (int k = 0; k < o.measurements; ++k) {
       CaseInput c = s->input;
       c.axes = job->nominalAxes;
@@ -165,6 +190,30 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
         continue;
       }
       collect(e->correction->identified, o.sigma, samples);
+      std::array<double, kAxisCount * kCurveSamples> curve{};
+      for (Axis a : kAxes)
+        for (int t = 0; t < kCurveSamples; ++t)
+          curve[static_cast<size_t>(static_cast<int>(a) * kCurveSamples + t)] =
+              e->correction->identifiedError[a].at(range.min + (range.max - range.min) * t / (kCurveSamples - 1)).value *
+              displayFactor(a);
+      curves.push_back(curve);
+      uncertainties.push_back(e->correction->uncertainty);
+    }
+    std::vector<AxisSpread> spreads;
+    const double m = static_cast<double>(curves.size());
+    for (int i = 0; i < kAxisCount && curves.size() >= 3; ++i) {
+      AxisSpread a;
+      a.hob = index, a.axis = axisName(kAxes[i]), a.unit = unitOf(kAxes[i]);
+      for (int t = 0; t < kCurveSamples; ++t) {
+        const size_t k = static_cast<size_t>(i * kCurveSamples + t);
+        double mean = 0, ss = 0;
+        for (const auto& c : curves) mean += c[k] / m;
+        for (const auto& c : curves) ss += (c[k] - mean) * (c[k] - mean);
+        a.spread = std::max(a.spread, std::sqrt(ss / (m - 1)));
+      }
+      for (const auto& u : uncertainties) a.given += u[static_cast<size_t>(i)] * u[static_cast<size_t>(i)] / m;
+      a.given = std::sqrt(a.given);
+      if (a.spread > 0) spreads.push_back(a);  // an axis the identification never moves is not judged
     }
     std::vector<CalibratedValue> judged, rare;
     int unstable = 0;
@@ -208,6 +257,7 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
     out.unstable += unstable;
     out.values.insert(out.values.end(), judged.begin(), judged.end());
     out.unstableValues.insert(out.unstableValues.end(), rare.begin(), rare.end());
+    out.axisSpreads.insert(out.axisSpreads.end(), spreads.begin(), spreads.end());
   };
   std::vector<std::thread> pool;
   for (unsigned t = 0; t < std::max(1u, threads); ++t)
@@ -215,6 +265,8 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
       for (int h = next++; h < o.hobs; h = next++) one(o.firstHob + h);
     });
   for (std::thread& t : pool) t.join();
+  std::sort(out.axisSpreads.begin(), out.axisSpreads.end(),
+            [](const AxisSpread& a, const AxisSpread& b) { return a.hob != b.hob ? a.hob < b.hob : a.axis < b.axis; });
   std::sort(out.values.begin(), out.values.end(),
             [](const CalibratedValue& a, const CalibratedValue& b) { return a.hob != b.hob ? a.hob < b.hob : a.what < b.what; });
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -256,6 +308,12 @@ nlohmann::json toJson(const Calibration& c) {
       j["values"][i]["secondOrder"] = c.values[i].secondOrder;
       j["values"][i]["drawsNearTruth"] = c.values[i].drawsNearTruth;
     }
+  for (const AxisSpread& a : c.axisSpreads)
+    j["axisSpreads"].push_back({{"hob", a.hob}, {"axis", a.axis}, {"unit", a.unit}, {"spread", a.spread},
+                                {"given", a.given}, {"ratio", a.ratio()}});
+  j["axisSpreadsWithin"] = c.axisSpreadsWithin();
+  j["axisSpreadsBelowHalf"] = c.axisSpreadsBelow(0.5);
+  j["axisSpreadsUnderstated"] = c.axisSpreadsUnderstated(2);
   return j;
 }
 
@@ -283,6 +341,21 @@ std::string calibrationText(const Calibration& c) {
     const auto q = [&](double p) { return r[static_cast<size_t>(std::lround(p * (r.size() - 1)))]; };
     s << "  ratio: lowest " << r.front() << ", 5th " << q(0.05) << ", median " << q(0.5) << ", 95th " << q(0.95)
       << ", highest " << r.back() << "\n";
+  }
+  if (!c.axisSpreads.empty()) {
+    std::vector<double> a;
+    for (const AxisSpread& x : c.axisSpreads) a.push_back(x.ratio());
+    std::sort(a.begin(), a.end());
+    const auto q = [&](double p) { return a[static_cast<size_t>(std::lround(p * (a.size() - 1)))]; };
+    s << "  correction.uncertainty against the identified error's spread over the measurements, " << a.size()
+      << " axes moved: " << c.axisSpreadsWithin() << " within " << c.options.low << " to " << c.options.high << ", "
+      << c.axisSpreadsBelow(0.1) << " more than 10 times the spread, " << c.axisSpreadsUnderstated(2)
+      << " less than half of it; ratio (spread / given) lowest " << a.front() << ", median " << q(0.5) << ", highest "
+      << a.back() << "\n";
+    for (const AxisSpread& x : c.axisSpreads)
+      if (x.ratio() > 2)
+        s << "  uncertainty below the spread: scenario " << x.hob << ", " << x.axis << ": spread " << x.spread << " "
+          << x.unit << ", given " << x.given << " " << x.unit << " (ratio " << x.ratio() << ")\n";
   }
   for (const CalibratedValue& v : c.values)
     if (v.ratio() < c.options.low || v.ratio() > c.options.high)

@@ -61,6 +61,21 @@ struct CalibratedValue {
   bool withinStated(double within) const { return hasTruth && std::abs(mean - truth) <= within * given + secondOrder; }
 };
 
+// One axis of the identified error (correction.identifiedError) on one hob, over the measurements:
+// its curve's standard deviation, largest over the motion range the face spans, against the root
+// mean square of the per-axis figure the result gives beside it (correction.uncertainty, the
+// precision demand times the probe noise; docs/conventions.md). The figure is the spread over every
+// direction the face shows, as if each were taken; the identification takes only those the data
+// hold above the noise, so this says how far the figure is from what the proposal does.
+struct AxisSpread {
+  int hob = 0;
+  std::string axis;  // X, Y, Z, A, B
+  std::string unit;  // µm or µrad
+  double spread = 0;  // largest over the range of the curve's standard deviation (n - 1)
+  double given = 0;   // root mean square of correction.uncertainty over the measurements
+  double ratio() const { return given > 0 ? spread / given : 0.0; }
+};
+
 struct Calibration {
   CalibrationOptions options;
   int hobsRun = 0;          // hobs whose measurements were evaluated (refused ones counted in `refused`)
@@ -69,12 +84,16 @@ struct Calibration {
   int unstable = 0;         // values read in some measurements but fewer than leastShareRead
   std::vector<CalibratedValue> unstableValues;  // those values (read: how many times)
   std::vector<CalibratedValue> values;  // the values judged
+  std::vector<AxisSpread> axisSpreads;  // per hob, each axis whose identified error moves with the noise
   double seconds = 0;
   int within() const;       // values whose ratio lies in [low, high]
   int withTruth() const;    // values also read from the true error's first-order face
   int nearTruth() const;    // of them, those within truthWithin uncertainties of it
   int nearTruthStated() const;  // ... within truthWithin uncertainties plus the second-order figure
   int draws() const, drawsNearTruth() const;  // the same per measurement, over the values with a truth
+  int axisSpreadsWithin() const;               // axis spreads whose ratio lies in [low, high]
+  int axisSpreadsBelow(double share) const;    // ... whose spread is below share times the figure given
+  int axisSpreadsUnderstated(double factor) const;  // ... whose spread exceeds factor times the figure given
 };
 
 Calibration runCalibration(const CalibrationOptions& options, unsigned threads);
