@@ -171,8 +171,9 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
       if (t && t->correction) collect(t->correction->identified, o.sigma, truths);
     }
     int evaluations = 0, refused = 0;
-    // Per measurement, each axis's identified error at the curve's samples and correction.uncertainty.
-    const MotionRange range = motionRange(*ground);
+    // Per measurement, each axis's identified error at the curve's samples and correction.uncertainty,
+    // over the run face's motion range, as the correction's own figures.
+    const MotionRange range = motionRange(*nominal);
     std::vector<std::array<double, kAxisCount * kCurveSamples>> curves;
     std::vector<std::array<double, kAxisCount>> uncertainties;
     for (int k = 0; k < o.measurements; ++k) {

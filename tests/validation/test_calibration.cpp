@@ -66,7 +66,7 @@ TEST(Calibration, ValuesReadSpreadAsTheirUncertaintySays) {
 // correction.uncertainty, per axis, is the precision demand times sigma, over every direction the
 // face shows were each taken (docs/conventions.md, "What it is not"): not the spread of the
 // proposal, and mostly far above it. It falls below half the identified error's spread over the
-// draws for at most 3 % of the axes moved (2 of 140 here: scenario 214's Z and A, 3.6 times; 13 of
+// draws for at most 3 % of the axes moved (2 of 140 here: scenario 214's Z and A, 3.0 times; 7 of
 // 2,996 on the three seeds of the docs).
 TEST(Calibration, PerAxisFigureIsRarelyBelowTheProposalsSpread) {
   const Calibration& c = firstForty();
