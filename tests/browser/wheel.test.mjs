@@ -38,7 +38,9 @@ test('a dressed wheel from a CSV file grinds the face, and Fig. 4 shows its offs
   await page.locator('#wheel-section').screenshot({ path: path.join(shots, 'wheel-dressed.png') });
 
   // A file the page cannot read: named by line and column; the wheel in use stays.
+  // (The file is read asynchronously: wait for the page to say so, not for a fixed time.)
   await page.setInputFiles('#wheel-file', csvFile('bad.csv', 'R (mm),offset\n30,1\n40,2\n'));
+  await page.waitForFunction(() => !document.querySelector('#wheel-error').hidden);
   assert.match(await page.textContent('#wheel-error'), /Line 1, column 2: "offset" has no unit; write offset \(µm\)\. The wheel in use is unchanged\./);
   assert.match(await page.textContent('#wheel-source'), /offset at 3 points/);
   assert.equal(await rmsShown(page), dressedRms);
