@@ -7,7 +7,7 @@
 #                         a developer's quicker loop: the same, without the sanitizer build, the
 #                         tests under ASan + UBSan and the fuzzing (docs/testing.md)
 #   ./hobsharp.sh bench   build and run the benchmarks
-#   ./hobsharp.sh validate [--scenarios N] [--seed S] [--docs] [--index I]
+#   ./hobsharp.sh validate [--scenarios N] [--seed S] [--docs] [--index I [--cases DIR]]
 #                         the validation campaign on random hobs (docs/validation.md); --docs
 #                         writes its table, JSON and plot into docs/validation/
 #   ./hobsharp.sh validate --calibration [--hobs H] [--seed S] [--error-scale K] [--offsets-only] [--docs]

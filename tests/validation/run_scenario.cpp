@@ -89,7 +89,7 @@ double rmsOfDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 
 }  // namespace
 
-ScenarioOutcome runScenario(const Scenario& s) {
+ScenarioOutcome runScenario(const Scenario& s, std::vector<CaseInput>* cases) {
   const auto start = std::chrono::steady_clock::now();
   ScenarioOutcome out;
   out.scenario = s;
@@ -157,6 +157,7 @@ ScenarioOutcome runScenario(const Scenario& s) {
     c.correction.probeNoise = s.spec.sigma > 0 ? s.spec.sigma : kNoiseFreeDeclared;
     if (s.spec.wheel) c.correction.wheel = true;
     if (recorded) c.wheelProfileOffset = recorded;
+    if (cases) cases->push_back(c);
     auto job = resolveJob(c);
     auto e = job ? evaluate(*job) : Outcome<Evaluation>(job.error());
     if (!e || !e->correction) {

@@ -62,6 +62,7 @@ struct ScenarioOutcome {
   double seconds = 0;        // wall time of the scenario
 };
 
-ScenarioOutcome runScenario(const Scenario& scenario);
+// cases: where given, each pass's case as the calculator evaluated it is appended (case_file.h).
+ScenarioOutcome runScenario(const Scenario& scenario, std::vector<CaseInput>* cases = nullptr);
 
 }  // namespace hobsharp::validation

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "calibration.h"
+#include "case_file.h"
 #include "campaign.h"
 
 using namespace hobsharp::validation;
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
   std::string out = "build/validation";
   int index = -1;
   bool calibration = false;
+  std::string cases;  // --cases DIR: with --index, each pass's case file written there
   int hobs = CalibrationOptions{}.hobs;
   double errorScale = 1;
   bool offsetsOnly = false;
@@ -36,12 +38,13 @@ int main(int argc, char** argv) {
     else if (a == "--out" && hasValue) out = argv[++i];
     else if (a == "--index" && hasValue) index = std::atoi(argv[++i]);
     else if (a == "--calibration") calibration = true;
+    else if (a == "--cases" && hasValue) cases = argv[++i];
     else if (a == "--hobs" && hasValue) hobs = std::atoi(argv[++i]);
     else if (a == "--error-scale" && hasValue) errorScale = std::atof(argv[++i]);
     else if (a == "--offsets-only") offsetsOnly = true;
     else if (a == "--threads" && hasValue) threads = static_cast<unsigned>(std::max(1, std::atoi(argv[++i])));
     else {
-      std::cerr << "usage: validate [--scenarios N] [--seed S] [--out DIR] [--threads T] [--index I]\n"
+      std::cerr << "usage: validate [--scenarios N] [--seed S] [--out DIR] [--threads T] [--index I [--cases DIR]]\n"
                    "       validate --calibration [--hobs H] [--error-scale K] [--offsets-only] [--seed S] [--out DIR] [--threads T]\n";
       return 2;
     }
@@ -70,7 +73,17 @@ int main(int argc, char** argv) {
       std::cerr << "validate: scenario " << index << " of seed " << seed << ": " << s.error().message << "\n";
       return 1;
     }
-    std::vector<ScenarioOutcome> one{runScenario(*s)};
+    std::vector<hobsharp::CaseInput> passCases;
+    std::vector<ScenarioOutcome> one{runScenario(*s, cases.empty() ? nullptr : &passCases)};
+    if (!cases.empty()) {
+      std::filesystem::create_directories(cases);
+      for (size_t k = 0; k < passCases.size(); ++k) {
+        const std::string file = cases + "/seed-" + std::to_string(seed) + "-scenario-" + std::to_string(index) +
+                                 "-pass-" + std::to_string(k + 1) + ".json";
+        std::ofstream(file) << caseFile(passCases[k]).dump(1) << "\n";
+        std::cerr << "Written: " << file << "\n";
+      }
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << toJson(summarise(seed, std::move(one), seconds))["outcomes"][0].dump(1) << "\n";
     return 0;
