@@ -10,6 +10,8 @@
 #include <random>
 #include <sstream>
 #include <thread>
+#include <tuple>
+#include <utility>
 
 #include "evaluation.h"
 #include "face_vectors.h"
@@ -38,6 +40,27 @@ std::string axesText(const std::vector<Axis>& axes) {
 // Where an axis curve is sampled for its spread over the measurements: this many points over the
 // motion range, ends included.
 constexpr int kCurveSamples = 7;
+
+// The mean of xs and their standard deviation (n - 1); xs has at least 2 values.
+std::pair<double, double> meanAndSpread(const std::vector<double>& xs) {
+  const double n = static_cast<double>(xs.size());
+  double mean = 0, ss = 0;
+  for (double x : xs) mean += x / n;
+  for (double x : xs) ss += (x - mean) * (x - mean);
+  return {mean, std::sqrt(ss / (n - 1))};
+}
+
+// The root mean square of xs.
+double rms(const std::vector<double>& xs) {
+  double s = 0;
+  for (double x : xs) s += x * x;
+  return xs.empty() ? 0.0 : std::sqrt(s / static_cast<double>(xs.size()));
+}
+
+// The value at share p of values sorted ascending (nearest rank).
+double quantile(const std::vector<double>& sorted, double p) {
+  return sorted[static_cast<size_t>(std::lround(p * static_cast<double>(sorted.size() - 1)))];
+}
 
 struct Sample {
   std::string unit;
@@ -106,14 +129,14 @@ int Calibration::axisSpreadsWithin() const {
   }));
 }
 
-int Calibration::axisSpreadsBelow(double share) const {
-  return static_cast<int>(
-      std::count_if(axisSpreads.begin(), axisSpreads.end(), [&](const AxisSpread& a) { return a.ratio() < share; }));
+int Calibration::figureOver(double factor) const {
+  return static_cast<int>(std::count_if(axisSpreads.begin(), axisSpreads.end(),
+                                        [&](const AxisSpread& a) { return a.ratio() * factor < 1; }));
 }
 
-int Calibration::axisSpreadsUnderstated(double factor) const {
-  return static_cast<int>(
-      std::count_if(axisSpreads.begin(), axisSpreads.end(), [&](const AxisSpread& a) { return a.ratio() > factor; }));
+int Calibration::figureUnder(double share) const {
+  return static_cast<int>(std::count_if(axisSpreads.begin(), axisSpreads.end(),
+                                        [&](const AxisSpread& a) { return a.ratio() * share > 1; }));
 }
 
 int Calibration::within() const {
@@ -174,8 +197,8 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
     // Per measurement, each axis's identified error at the curve's samples and correction.uncertainty,
     // over the run face's motion range, as the correction's own figures.
     const MotionRange range = motionRange(*nominal);
-    std::vector<std::array<double, kAxisCount * kCurveSamples>> curves;
-    std::vector<std::array<double, kAxisCount>> uncertainties;
+    std::array<std::array<std::vector<double>, kCurveSamples>, kAxisCount> curves;
+    std::array<std::vector<double>, kAxisCount> uncertainties;
     for (int k = 0; k < o.measurements; ++k) {
       CaseInput c = s->input;
       c.axes = job->nominalAxes;
@@ -191,29 +214,23 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
         continue;
       }
       collect(e->correction->identified, o.sigma, samples);
-      std::array<double, kAxisCount * kCurveSamples> curve{};
-      for (Axis a : kAxes)
+      for (Axis a : kAxes) {
+        const size_t i = static_cast<size_t>(a);
         for (int t = 0; t < kCurveSamples; ++t)
-          curve[static_cast<size_t>(static_cast<int>(a) * kCurveSamples + t)] =
+          curves[i][static_cast<size_t>(t)].push_back(
               e->correction->identifiedError[a].at(range.min + (range.max - range.min) * t / (kCurveSamples - 1)).value *
-              displayFactor(a);
-      curves.push_back(curve);
-      uncertainties.push_back(e->correction->uncertainty);
+              displayFactor(a));
+        uncertainties[i].push_back(e->correction->uncertainty[i]);
+      }
     }
     std::vector<AxisSpread> spreads;
-    const double m = static_cast<double>(curves.size());
-    for (int i = 0; i < kAxisCount && curves.size() >= 3; ++i) {
+    for (Axis axis : kAxes) {
+      const size_t i = static_cast<size_t>(axis);
+      if (uncertainties[i].size() < 3) break;
       AxisSpread a;
-      a.hob = index, a.axis = axisName(kAxes[i]), a.unit = unitOf(kAxes[i]);
-      for (int t = 0; t < kCurveSamples; ++t) {
-        const size_t k = static_cast<size_t>(i * kCurveSamples + t);
-        double mean = 0, ss = 0;
-        for (const auto& c : curves) mean += c[k] / m;
-        for (const auto& c : curves) ss += (c[k] - mean) * (c[k] - mean);
-        a.spread = std::max(a.spread, std::sqrt(ss / (m - 1)));
-      }
-      for (const auto& u : uncertainties) a.given += u[static_cast<size_t>(i)] * u[static_cast<size_t>(i)] / m;
-      a.given = std::sqrt(a.given);
+      a.hob = index, a.axis = axisName(axis), a.unit = unitOf(axis);
+      for (const std::vector<double>& atSample : curves[i]) a.spread = std::max(a.spread, meanAndSpread(atSample).second);
+      a.given = rms(uncertainties[i]);
       if (a.spread > 0) spreads.push_back(a);  // an axis the identification never moves is not judged
     }
     std::vector<CalibratedValue> judged, rare;
@@ -232,13 +249,8 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
       v.what = what;
       v.unit = sample.unit;
       v.read = n;
-      double sum = 0, given2 = 0;
-      for (int i = 0; i < n; ++i) sum += sample.values[static_cast<size_t>(i)], given2 += sample.given[static_cast<size_t>(i)] * sample.given[static_cast<size_t>(i)];
-      v.mean = sum / n;
-      double ss = 0;
-      for (double x : sample.values) ss += (x - v.mean) * (x - v.mean);
-      v.spread = std::sqrt(ss / (n - 1));
-      v.given = std::sqrt(given2 / n);
+      std::tie(v.mean, v.spread) = meanAndSpread(sample.values);
+      v.given = rms(sample.given);
       const auto t = truths.find(what);
       v.hasTruth = t != truths.end();
       v.truth = v.hasTruth ? t->second.values.front() : 0.0;
@@ -313,8 +325,8 @@ nlohmann::json toJson(const Calibration& c) {
     j["axisSpreads"].push_back({{"hob", a.hob}, {"axis", a.axis}, {"unit", a.unit}, {"spread", a.spread},
                                 {"given", a.given}, {"ratio", a.ratio()}});
   j["axisSpreadsWithin"] = c.axisSpreadsWithin();
-  j["axisSpreadsBelowHalf"] = c.axisSpreadsBelow(0.5);
-  j["axisSpreadsUnderstated"] = c.axisSpreadsUnderstated(2);
+  j["axisFigureTenTimesOrMore"] = c.figureOver(10);
+  j["axisFigureBelowHalf"] = c.figureUnder(0.5);
   return j;
 }
 
@@ -339,20 +351,18 @@ std::string calibrationText(const Calibration& c) {
   for (const CalibratedValue& v : c.values) r.push_back(v.ratio());
   std::sort(r.begin(), r.end());
   if (!r.empty()) {
-    const auto q = [&](double p) { return r[static_cast<size_t>(std::lround(p * (r.size() - 1)))]; };
-    s << "  ratio: lowest " << r.front() << ", 5th " << q(0.05) << ", median " << q(0.5) << ", 95th " << q(0.95)
-      << ", highest " << r.back() << "\n";
+    s << "  ratio: lowest " << r.front() << ", 5th " << quantile(r, 0.05) << ", median " << quantile(r, 0.5) << ", 95th "
+      << quantile(r, 0.95) << ", highest " << r.back() << "\n";
   }
   if (!c.axisSpreads.empty()) {
     std::vector<double> a;
     for (const AxisSpread& x : c.axisSpreads) a.push_back(x.ratio());
     std::sort(a.begin(), a.end());
-    const auto q = [&](double p) { return a[static_cast<size_t>(std::lround(p * (a.size() - 1)))]; };
     s << "  correction.uncertainty against the identified error's spread over the measurements, " << a.size()
       << " axes moved: " << c.axisSpreadsWithin() << " within " << c.options.low << " to " << c.options.high << ", "
-      << c.axisSpreadsBelow(0.1) << " more than 10 times the spread, " << c.axisSpreadsUnderstated(2)
-      << " less than half of it; ratio (spread / given) lowest " << a.front() << ", median " << q(0.5) << ", highest "
-      << a.back() << "\n";
+      << c.figureOver(10) << " more than 10 times the spread, " << c.figureUnder(0.5)
+      << " less than half of it; ratio (spread / given) lowest " << a.front() << ", median " << quantile(a, 0.5)
+      << ", highest " << a.back() << "\n";
     for (const AxisSpread& x : c.axisSpreads)
       if (x.ratio() > 2)
         s << "  uncertainty below the spread: scenario " << x.hob << ", " << x.axis << ": spread " << x.spread << " "

@@ -91,9 +91,9 @@ struct Calibration {
   int nearTruth() const;    // of them, those within truthWithin uncertainties of it
   int nearTruthStated() const;  // ... within truthWithin uncertainties plus the second-order figure
   int draws() const, drawsNearTruth() const;  // the same per measurement, over the values with a truth
-  int axisSpreadsWithin() const;               // axis spreads whose ratio lies in [low, high]
-  int axisSpreadsBelow(double share) const;    // ... whose spread is below share times the figure given
-  int axisSpreadsUnderstated(double factor) const;  // ... whose spread exceeds factor times the figure given
+  int axisSpreadsWithin() const;            // axis spreads whose ratio lies in [low, high]
+  int figureOver(double factor) const;      // ... whose figure given is more than factor times the spread
+  int figureUnder(double share) const;      // ... whose figure given is less than share of the spread
 };
 
 Calibration runCalibration(const CalibrationOptions& options, unsigned threads);
