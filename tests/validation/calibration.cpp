@@ -131,12 +131,12 @@ int Calibration::axisSpreadsWithin() const {
 
 int Calibration::figureOver(double factor) const {
   return static_cast<int>(std::count_if(axisSpreads.begin(), axisSpreads.end(),
-                                        [&](const AxisSpread& a) { return a.ratio() * factor < 1; }));
+                                        [&](const AxisSpread& a) { return a.figureOver(factor); }));
 }
 
 int Calibration::figureUnder(double share) const {
   return static_cast<int>(std::count_if(axisSpreads.begin(), axisSpreads.end(),
-                                        [&](const AxisSpread& a) { return a.ratio() * share > 1; }));
+                                        [&](const AxisSpread& a) { return a.figureUnder(share); }));
 }
 
 int Calibration::within() const {
@@ -364,7 +364,7 @@ std::string calibrationText(const Calibration& c) {
       << " less than half of it; ratio (spread / given) lowest " << a.front() << ", median " << quantile(a, 0.5)
       << ", highest " << a.back() << "\n";
     for (const AxisSpread& x : c.axisSpreads)
-      if (x.ratio() > 2)
+      if (x.figureUnder(0.5))
         s << "  uncertainty below the spread: scenario " << x.hob << ", " << x.axis << ": spread " << x.spread << " "
           << x.unit << ", given " << x.given << " " << x.unit << " (ratio " << x.ratio() << ")\n";
   }

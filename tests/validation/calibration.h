@@ -74,6 +74,8 @@ struct AxisSpread {
   double spread = 0;  // largest over the range of the curve's standard deviation (n - 1)
   double given = 0;   // root mean square of correction.uncertainty over the measurements
   double ratio() const { return given > 0 ? spread / given : 0.0; }
+  bool figureOver(double factor) const { return ratio() * factor < 1; }  // given above factor times the spread
+  bool figureUnder(double share) const { return ratio() * share > 1; }   // given below share of the spread
 };
 
 struct Calibration {
