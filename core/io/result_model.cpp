@@ -647,7 +647,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
     perAxis(kAloneUncertainty, "µm", "µrad", "standard uncertainty of correction.identifiedAlone from the probe noise; 0 unless \"alone\"",
             aloneUncertainty);
     perAxis(kAloneSecondOrder, "µm", "µrad", "how far the error's second-order face may move correction.identifiedAlone beyond its uncertainty (twice what the identified error's own second-order face moves it; read from the face measured at the axes run, else 0); 0 unless \"alone\"",
-            aloneSecondOrder);
+            aloneSecondOrder, "the error's second order may move it up to");
     v.texts({"correction.identifiedCombinations", "", "sentences: the axes the face does not tell apart, in what proportion they grind alike and what it shows of them (µm, µrad), then the axes it does not show", kWithMeasured},
             c.identified.sentences);
     // With measuredPoints off the grid the grid views are the re-simulated faces (docs/measured-points.md).

@@ -54,3 +54,32 @@ test('+8 µm on Y: the words name Y with the axes it grinds alike; no axis gets 
   await page.locator('#identification').screenshot({ path: path.join(shots, 'machine-words.png') });
   assert.deepEqual(page.problems, []);
 });
+
+// A value read on its own with its second-order clause: Z 100 µm off, the other axes locked, a probe
+// of 0.01 µm. Z reads -100 ± 0.0016 µm, and its second order may move it up to 0.0052 µm, more than
+// its uncertainty (tests/js/correction.test.mjs: the words are the module's label). At 390 px too.
+test('Z 100 µm off with the other axes locked: Z read on its own, with how far its second order may move it', async () => {
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
+  await page.fill('[data-offset="Z 0"]', '-0.1');
+  await page.dispatchEvent('[data-offset="Z 0"]', 'change');
+  await afterResult(page, () => page.click('#generate-error'));
+  for (const a of ['X', 'Y', 'A', 'B']) await afterResult(page, () => page.check(`[data-lock-axis="${a}"]`));
+  await setNoise(page, '0.01');
+  const z = page.locator('#identified-error tr[data-axis="Z"]');
+  assert.equal(await z.getAttribute('data-reading'), 'alone');
+  assert.match(await z.locator('[data-col="error"]').textContent(), /^[−-](99\.99\d*|100(\.0*)?) µm$/);
+  const clause = (await z.locator('[data-col="second-order"]').textContent()).trim();
+  const m = clause.match(/^; the error's second order may move it up to ([\d.]+) µm$/);
+  assert.ok(m, clause);
+  const u = Number((await z.locator('[data-col="uncertainty"]').textContent()).match(/^± ([\d.e-]+) µm/)[1]);
+  assert.ok(Number(m[1]) > u, `${m[1]} µm beyond ± ${u} µm`);
+  for (const a of ['X', 'Y', 'A', 'B']) {
+    assert.equal(await page.getAttribute(`#identified-error tr[data-axis="${a}"]`, 'data-reading'), 'locked', a);
+  }
+  await page.locator('#identified-error').screenshot({ path: path.join(shots, 'second-order-clause.png') });
+  await page.setViewportSize({ width: 390, height: 844 });
+  await page.locator('#identified-error').screenshot({ path: path.join(shots, 'second-order-clause-390.png') });
+  const box = await page.locator('#identified-error').boundingBox();
+  assert.ok(box.width <= 390, `the table fits the phone's width: ${box.width} px`);
+  assert.deepEqual(page.problems, []);
+});

@@ -38,6 +38,15 @@ const perAxis = (o, what) => {
   for (const k of AXES) assert.ok(Number.isFinite(o[k]), `${what}.${k} = ${o[k]}`);
 };
 
+test('the module words the second-order clause of a value read on its own (the page prints its label)', () => {
+  const fields = Object.fromEntries(hobsharp.resultFields().map((f) => [f.path, f]));
+  for (const a of AXES) {
+    const f = fields[`correction.identifiedAloneSecondOrder.${a}`];
+    assert.equal(f.label, "the error's second order may move it up to", a);
+    assert.equal(f.unit, a === 'A' || a === 'B' ? 'µrad' : 'µm', a);
+  }
+});
+
 test('the module describes the rounded axes\' figures and the floor, and rounds as the program carries', () => {
   const fields = Object.fromEntries(hobsharp.resultFields().map((f) => [f.path, f]));
   for (const path of ['correction.rmsRounded', 'correction.resolutionFloor']) {

@@ -25,8 +25,11 @@ test('per axis: the error read on its own only where the face tells it apart, un
     identifiedError: { X: 1.5, Y: -2, Z: -3.2, A: 12, B: 3 },
     axisChange: { X: -1.5, Y: 2, Z: 3.2, A: -12, B: -3 },
   };
-  const rows = errorRows(c, AXES, unitOf);
-  assert.deepEqual(rows[2], { axis: 'Z', reading: 'alone', error: -3.01, errorUnit: 'µm', uncertainty: 0.06, secondOrder: 0.4, change: 3.2, changeUnit: 'µm', changeOverFace: null });
+  // The labels as the module gives them (a stand-in: the page reads its own list).
+  const labelOf = (path) => (path.startsWith('correction.identifiedAloneSecondOrder.') ? 'second order up to' : '');
+  const rows = errorRows(c, AXES, unitOf, labelOf);
+  assert.deepEqual(rows[2], { axis: 'Z', reading: 'alone', error: -3.01, errorUnit: 'µm', uncertainty: 0.06, secondOrder: 0.4,
+    secondOrderLabel: 'second order up to', change: 3.2, changeUnit: 'µm', changeOverFace: null });
   assert.equal(rows[0].secondOrder, null, 'no second-order figure where no value is read on its own');
   assert.equal(rows[4].secondOrder, null, 'NaN never reaches the table');
   assert.equal(rows[0].error, null, 'X is not read on its own: its share of a combination is not shown as its error');

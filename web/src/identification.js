@@ -29,12 +29,13 @@ function overFace(c, axis) {
   return Math.abs(whole) - Math.abs(change) > 1e-3 * Math.abs(whole) ? whole : null;
 }
 
-// Rows {axis, reading, error, errorUnit, uncertainty, secondOrder, change, changeUnit, changeOverFace} for the axes
-// the result names. error, uncertainty and secondOrder (how far the error's second order may move it,
-// correction.identifiedAloneSecondOrder) are the value read on its own (correction.identifiedAlone): null
-// unless the face tells that axis from the others. A result without identifiedAxes (an older one)
-// has no value read on its own.
-export function errorRows(c, axes, unitOf) {
+// Rows {axis, reading, error, errorUnit, uncertainty, secondOrder, secondOrderLabel, change, changeUnit,
+// changeOverFace} for the axes the result names. error, uncertainty and secondOrder (how far the
+// error's second order may move it, correction.identifiedAloneSecondOrder, in the module's words:
+// secondOrderLabel, labelOf(path), result-fields.js) are the value read on its own
+// (correction.identifiedAlone): null unless the face tells that axis from the others. A result
+// without identifiedAxes (an older one) has no value read on its own.
+export function errorRows(c, axes, unitOf, labelOf = fieldLabel) {
   if (!isObject(c.identifiedAxes) && !isObject(c.axisChange)) return [];
   return axes.map((axis) => {
     const reading = isObject(c.identifiedAxes) && typeof c.identifiedAxes[axis] === 'string' ? c.identifiedAxes[axis] : null;
@@ -45,6 +46,7 @@ export function errorRows(c, axes, unitOf) {
       errorUnit: unitOf(`correction.identifiedAlone.${axis}`),
       uncertainty: alone ? pick(c.identifiedAloneUncertainty, axis) : null,
       secondOrder: alone ? pick(c.identifiedAloneSecondOrder, axis) : null,
+      secondOrderLabel: labelOf(`correction.identifiedAloneSecondOrder.${axis}`),
       change: pick(c.axisChange, axis),
       changeUnit: unitOf(`correction.axisChange.${axis}`),
       changeOverFace: overFace(c, axis),

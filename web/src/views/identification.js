@@ -23,7 +23,7 @@ function renderErrors(c) {
       ? `<td class="num" data-col="error">${withUnit(r.error, r.errorUnit)}</td>
     <td class="num" data-col="uncertainty">${r.uncertainty === null ? '—' : `± ${fmt(r.uncertainty, 3)} ${escapeHtml(r.errorUnit)}${
       r.secondOrder !== null && r.secondOrder > r.uncertainty
-        ? `<span class="beyond" data-col="second-order">; the error's second order may move it up to ${fmt(r.secondOrder, 2)} ${escapeHtml(r.errorUnit)}</span>` : ''}`}</td>`
+        ? `<span class="beyond" data-col="second-order">; ${escapeHtml(r.secondOrderLabel)} ${fmt(r.secondOrder, 2)} ${escapeHtml(r.errorUnit)}</span>` : ''}`}</td>`
       : `<td colspan="2" class="reading" data-col="reading">${escapeHtml(READING_WORDS[r.reading] || 'not read on its own')}</td>`;
     return `<tr data-axis="${r.axis}" data-reading="${escapeHtml(r.reading || '')}"><th>${r.axis}</th>${read}
     <td class="num" data-col="change">${withUnit(r.change, r.changeUnit)}${r.changeOverFace === null ? ''
