@@ -188,7 +188,7 @@ FullLinearisation lineariseFully(const PointEquations& q, const EnvelopeGuess& v
 }
 
 // Where the wheel at the fixed motion phi = v.phi crosses the normal line of g: Eqs. 5-6 alone,
-// solved for (t, u, w) from v; nothing when Newton's method does not settle.
+// solved for (t, u, w) from v by Newton's method; nothing when it does not settle.
 std::optional<double> crossingAt(const PointEquations& q, EnvelopeGuess v) {
   for (int it = 0; it < 30; ++it) {
     const Linearisation L = linearise(q, v);
@@ -202,18 +202,48 @@ std::optional<double> crossingAt(const PointEquations& q, EnvelopeGuess v) {
   return std::nullopt;
 }
 
+// The same crossing a motion step `dphi` from an envelope point v, with the Jacobian of Eqs. 5, 6,
+// 11 there (`envelopeJacobian`, d / d(t, phi, u, w)): from the first-order prediction of the
+// crossing, (t, u, w) moved by -J_tuw^-1 J_phi dphi, by chord steps with J_tuw (the residual alone,
+// no new Jacobian; the same root, ended by the same 1e-13 as a Newton step). Where they do not
+// contract by half a step (a Jacobian that does not hold so far), Newton's method from the moved
+// point, as crossingAt.
+std::optional<double> crossingNear(const PointEquations& q, const EnvelopeGuess& v, double dphi,
+                                   const Eigen::Matrix4d& envelopeJacobian) {
+  EnvelopeGuess moved = v;
+  moved.phi += dphi;
+  Eigen::Matrix3d J;
+  const Eigen::Matrix4d& E = envelopeJacobian;
+  J << E(0, 0), E(0, 2), E(0, 3), E(1, 0), E(1, 2), E(1, 3), E(2, 0), E(2, 2), E(2, 3);
+  const Eigen::PartialPivLU<Eigen::Matrix3d> lu(J);
+  const Eigen::Vector3d predicted = lu.solve(E.block<3, 1>(0, 1) * dphi);
+  if (E.allFinite() && predicted.allFinite()) {
+    EnvelopeGuess c = moved;
+    c.t -= predicted(0), c.u -= predicted(1), c.w -= predicted(2);
+    double last = 0;
+    for (int it = 0; it < 12; ++it) {
+      const Eigen::Vector3d step = lu.solve(residualAt(q, c).head<3>());
+      const double size = step.cwiseAbs().maxCoeff();
+      if (!step.allFinite() || (it > 0 && !(size < 0.5 * last))) break;
+      c.t -= step(0), c.u -= step(1), c.w -= step(2);
+      if (size < 1e-13) return c.t;
+      last = size;
+    }
+  }
+  return crossingAt(q, moved);
+}
+
 // The second-order condition of the envelope for a dressed wheel. Along the motion the wheel's
 // crossing t(phi) of the normal line touches the face from one side: for the conjugate wheel the
 // envelope point is the crossing's maximum (Tab. 1: t'' about -69 mm/rad^2 at every point), and
 // the face is ground where that holds. An offset that curves so sharply that a crossing a small
 // motion step away lies beyond the envelope point has taken the wheel past the envelope's edge
 // (the two sheets of the envelope meet there): the point found is no longer what the wheel grinds.
-bool pastEnvelopeEdge(const PointEquations& q, const EnvelopeGuess& v, double motionStep) {
+bool pastEnvelopeEdge(const PointEquations& q, const EnvelopeGuess& v, double motionStep,
+                      const Eigen::Matrix4d& envelopeJacobian) {
   constexpr double kBeyond = 1e-9;  // mm: beyond the solver's noise
   for (double step : {-motionStep, motionStep}) {
-    EnvelopeGuess moved = v;
-    moved.phi += step;
-    const std::optional<double> t = crossingAt(q, moved);
+    const std::optional<double> t = crossingNear(q, v, step, envelopeJacobian);
     if (t && *t > v.t + kBeyond) return true;
   }
   return false;
@@ -334,7 +364,8 @@ Outcome<EnvelopePoint> solve(const SharpeningSetup& setup, const SetupRotations&
     e.iterations = it;
     e.jacobians = jacobians;
     e.jacobianInverse = inverse;
-    if (setup.wheel.hasOffset() && pastEnvelopeEdge(q, v, o.edgeStep(helical)))
+    // The Jacobian the last step was taken with: at an iterate within a step of the solution.
+    if (setup.wheel.hasOffset() && pastEnvelopeEdge(q, v, o.edgeStep(helical), inverse.inverse()))
       return wildWheel(setup, point);
     if (sensitivities == Sensitivities::Skip) return e;
     if (!addSensitivities(q, e)) return fail();

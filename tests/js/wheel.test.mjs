@@ -139,6 +139,16 @@ for (const [name, change, field, message] of refusals) {
   });
 }
 
+// The edge check's margin (envelope.cpp, pastEnvelopeEdge: the crossings a motion step either side of
+// each envelope point): offsets alternating +-a µm over 9 radii grind the face up to a = 53.5 µm and
+// are refused from 54 µm on (measured 2026-12-02; the crossings by chord steps decide as Newton's
+// method did, on these 21 amplitudes from 50 to 60 µm the same output).
+test('the edge of the envelope: +-53 µm grinds, +-55 µm curves past the edge', () => {
+  const alternating = (a) => withOffset(Array.from({ length: 9 }, (_, k) => (k % 2 ? a : -a)));
+  assert.ok(Number.isFinite(hobsharp.evaluate(alternating(53)).topography.rms));
+  assert.throws(() => hobsharp.evaluate(alternating(55)), (e) => e.field === 'wheel.profileOffset' && /curves too sharply/.test(e.message));
+});
+
 test('an offset too sharp to grind blames the wheel, not the grid or the measurement', () => {
   const c = withOffset(Array.from({ length: 9 }, (_, k) => (k % 2 ? 9000 : -9000)));
   assert.throws(() => hobsharp.evaluate(c), (e) => e instanceof HobSharpError && e.code === 'Unsolvable' && e.field === 'wheel.profileOffset' &&
