@@ -188,14 +188,19 @@ FullLinearisation lineariseFully(const PointEquations& q, const EnvelopeGuess& v
   return L;
 }
 
+// Eqs. 5-6's rows of a Jacobian d / d(t, phi, u, w), in the crossing's unknowns (t, u, w).
+Eigen::Matrix3d crossingBlock(const Eigen::Matrix4d& J) {
+  Eigen::Matrix3d B;
+  B << J(0, 0), J(0, 2), J(0, 3), J(1, 0), J(1, 2), J(1, 3), J(2, 0), J(2, 2), J(2, 3);
+  return B;
+}
+
 // Where the wheel at the fixed motion phi = v.phi crosses the normal line of g: Eqs. 5-6 alone,
 // solved for (t, u, w) from v by Newton's method; nothing when it does not settle.
 std::optional<double> crossingAt(const PointEquations& q, EnvelopeGuess v) {
   for (int it = 0; it < 30; ++it) {
     const Linearisation L = linearise(q, v);
-    Eigen::Matrix3d J;
-    J << L.J(0, 0), L.J(0, 2), L.J(0, 3), L.J(1, 0), L.J(1, 2), L.J(1, 3), L.J(2, 0), L.J(2, 2), L.J(2, 3);
-    const Eigen::Vector3d step = J.partialPivLu().solve(L.F.head<3>());
+    const Eigen::Vector3d step = crossingBlock(L.J).partialPivLu().solve(L.F.head<3>());
     if (!step.allFinite()) return std::nullopt;
     v.t -= step(0), v.u -= step(1), v.w -= step(2);
     if (step.cwiseAbs().maxCoeff() < 1e-13) return v.t;
@@ -213,10 +218,8 @@ std::optional<double> crossingNear(const PointEquations& q, const EnvelopeGuess&
                                    const Eigen::Matrix4d& envelopeJacobian) {
   EnvelopeGuess moved = v;
   moved.phi += dphi;
-  Eigen::Matrix3d J;
   const Eigen::Matrix4d& E = envelopeJacobian;
-  J << E(0, 0), E(0, 2), E(0, 3), E(1, 0), E(1, 2), E(1, 3), E(2, 0), E(2, 2), E(2, 3);
-  const Eigen::PartialPivLU<Eigen::Matrix3d> lu(J);
+  const Eigen::PartialPivLU<Eigen::Matrix3d> lu(crossingBlock(E));
   const Eigen::Vector3d predicted = lu.solve(E.block<3, 1>(0, 1) * dphi);
   if (E.allFinite() && predicted.allFinite()) {
     EnvelopeGuess c = moved;
