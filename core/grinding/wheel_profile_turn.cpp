@@ -52,4 +52,10 @@ std::string wheelEdgeText(const WheelEdge& e) {
          "wheel moves the edge past the tip.";
 }
 
+std::string wheelEdgeVerdictText(const WheelEdge& e) {
+  return "The top " + numberText(e.outerRadius - e.turnRadius, 2) + " mm of the face, above r = " + mmText(e.turnRadius) +
+         ", lies past the edge of the wheel's envelope: these figures do not hold there, and the machine may leave "
+         "part of that band unground.";
+}
+
 }  // namespace hobsharp

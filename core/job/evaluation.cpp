@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "wheel_profile_turn.h"
+
 namespace hobsharp {
 
 InspectedFace inspectedFace(const Evaluation& e) {
@@ -102,6 +104,16 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
       const double halfStep = 0.5 * job.correction.resolution.inAxisUnit(a) * displayFactor(a);
       p.axisChangeOverFace[i] = std::abs(overGrid[i]) > std::abs(p.axisChangeSize[i]) + halfStep ? overGrid[i] : p.axisChangeSize[i];
     }
+  }
+  // A change proposed on a face that reaches past the edge of the wheel's envelope: the verdict
+  // names the band (wheel_profile_turn.h).
+  if (e.correction && !e.correction->keepsRun() && s.wheelEdge) {
+    double top = job.grid.r.empty() ? 0.0 : job.grid.r.back();
+    if (measured.atPoints()) {
+      top = 0;
+      for (const ProbePoint& q : measured.probes) top = std::max(top, q.r);
+    }
+    if (top > s.wheelEdge->turnRadius) e.correction->verdict += " " + wheelEdgeVerdictText(*s.wheelEdge);
   }
   inspectEvaluation(e);
   gearEvaluation(e);

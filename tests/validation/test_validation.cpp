@@ -212,6 +212,45 @@ TEST(Validation, OnlyThePassFaceUngroundIsSaidToStayUnground) {
   EXPECT_EQ(p.verdict.find("part of it would stay unground"), std::string::npos) << p.verdict;
 }
 
+// A proposal judged on a grid that reaches past the edge of the wheel's envelope names the band in
+// its verdict (wheel_profile_turn.h). Seed 7003's scenario 259 (30 µm class, helical gash; the
+// conjugate profile turns back 0.27 mm below the tip): the true machine grinds the proposal
+// everywhere but in that band (at the tip's probe row), and the verdict said "Correctable" with no word of it
+// (docs/validation.md, "Three more seeds"). The same case on a grid that stops below the turn
+// (the measured numbers unchanged) carries no such sentence: the band is off the face judged.
+TEST(Validation, AVerdictOnAFacePastTheWheelEdgeNamesTheBand) {
+  auto s = makeScenario(7003, 259);
+  ASSERT_TRUE(s.ok());
+  std::vector<CaseInput> cases;
+  const ScenarioOutcome o = runScenario(*s, &cases);
+  ASSERT_GE(o.passes.size(), 1u);
+  ASSERT_GE(cases.size(), 1u);
+  const PassOutcome& p = o.passes[0];
+  EXPECT_TRUE(p.unground) << "the true machine leaves part of the band unground";
+  // At the tip's probe row, in the band.
+  EXPECT_NE(p.message.find("cannot be solved at the grid point r = 22.9534 mm"), std::string::npos) << p.message;
+  const std::string band =
+      "The top 0.27 mm of the face, above r = 22.6842 mm, lies past the edge of the wheel's envelope: these figures "
+      "do not hold there, and the machine may leave part of that band unground.";
+  EXPECT_EQ(p.verdict.rfind("Correctable: ", 0), 0u) << p.verdict;
+  EXPECT_NE(p.verdict.find(band), std::string::npos) << p.verdict;
+
+  auto job = resolveJob(cases[0]);
+  ASSERT_TRUE(job.ok()) << job.error().message;
+  ASSERT_TRUE(job->setup.wheelEdge.has_value());
+  const double turn = job->setup.wheelEdge->turnRadius;
+  ASSERT_GT(job->grid.r.back(), turn);
+  CaseInput below = cases[0];
+  below.grid.rMax = turn - 0.01;
+  auto lower = resolveJob(below);
+  ASSERT_TRUE(lower.ok()) << lower.error().message;
+  auto e = evaluate(*lower);
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  ASSERT_TRUE(e->correction.has_value());
+  EXPECT_FALSE(e->correction->keepsRun()) << e->correction->verdict;
+  EXPECT_EQ(e->correction->verdict.find("past the edge"), std::string::npos) << e->correction->verdict;
+}
+
 // A wheel-class scenario of the committed seed, run (no outcome if it is not one).
 ScenarioOutcome runWheelScenario(int index) {
   auto s = makeScenario(kSeed, index);
