@@ -54,8 +54,8 @@ std::string wheelEdgeText(const WheelEdge& e) {
 
 std::string wheelEdgeVerdictText(const WheelEdge& e) {
   return "The top " + numberText(e.outerRadius - e.turnRadius, 2) + " mm of the face, above r = " + mmText(e.turnRadius) +
-         ", lies past the edge of the wheel's envelope: these figures do not hold there, and the machine may leave "
-         "part of that band unground.";
+         ", lies past the edge of the wheel's envelope: the figures given for the face do not hold in that band, and "
+         "the machine may leave part of it unground.";
 }
 
 }  // namespace hobsharp

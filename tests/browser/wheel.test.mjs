@@ -169,3 +169,22 @@ test('a face past the edge of the wheel\'s envelope is said in the answer, and g
   assert.ok(await page.isHidden('#wheel-edge'));
   await page.context().close();
 });
+
+// A correction proposed on such a face names the band in its verdict (wheel_profile_turn.h): seed
+// 7003's scenario 259 of the campaign (tests/data/wheel-edge-pass.json, a 30 µm rms machine error
+// measured; the profile turns back 0.27 mm below the tip), which the true machine grinds but in
+// that band. The verdict says so after its bound, and the answer's warning stands beside it.
+test('a correction on a face past the edge of the wheel\'s envelope names the band in its verdict', async () => {
+  const page = await openPage(base, desk);
+  await plotted(page);
+  const pass = readFileSync(path.join(root, 'tests', 'data', 'wheel-edge-pass.json'));
+  await afterResult(page, () => page.setInputFiles('#load-case', { name: 'wheel-edge-pass.json', mimeType: 'application/json', buffer: pass }));
+  const verdict = await page.textContent('#verdict');
+  assert.match(verdict, /^Correctable: the axes can cancel the measured deviation; the face measured 30 µm rms will be left at most [\d.]+ µm rms/);
+  assert.match(verdict, /The top 0\.27 mm of the face, above r = 22\.6842 mm, lies past the edge of the wheel's envelope: the figures given for the face do not hold in that band, and the machine may leave part of it unground\./);
+  assert.ok(await page.isVisible('#wheel-edge'));
+  assert.match(await page.textContent('#wheel-edge'), /^The wheel cannot grind the top 0\.27 mm of the face as designed/);
+  await page.locator('#verdict').screenshot({ path: path.join(shots, 'wheel-edge-verdict.png') });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

@@ -230,8 +230,8 @@ TEST(Validation, AVerdictOnAFacePastTheWheelEdgeNamesTheBand) {
   // At the tip's probe row, in the band.
   EXPECT_NE(p.message.find("cannot be solved at the grid point r = 22.9534 mm"), std::string::npos) << p.message;
   const std::string band =
-      "The top 0.27 mm of the face, above r = 22.6842 mm, lies past the edge of the wheel's envelope: these figures "
-      "do not hold there, and the machine may leave part of that band unground.";
+      "The top 0.27 mm of the face, above r = 22.6842 mm, lies past the edge of the wheel's envelope: the figures "
+      "given for the face do not hold in that band, and the machine may leave part of it unground.";
   EXPECT_EQ(p.verdict.rfind("Correctable: ", 0), 0u) << p.verdict;
   EXPECT_NE(p.verdict.find(band), std::string::npos) << p.verdict;
 
