@@ -217,7 +217,8 @@ TEST(Validation, OnlyThePassFaceUngroundIsSaidToStayUnground) {
 // conjugate profile turns back 0.27 mm below the tip): the true machine grinds the proposal
 // everywhere but in that band (at the tip's probe row), and the verdict said "Correctable" with no word of it
 // (docs/validation.md, "Three more seeds"). The same case on a grid that stops below the turn
-// (the measured numbers unchanged) carries no such sentence: the band is off the face judged.
+// (the measured numbers unchanged) carries no such sentence: the band is off the face judged; and
+// so with measured points, judged by the highest point.
 TEST(Validation, AVerdictOnAFacePastTheWheelEdgeNamesTheBand) {
   auto s = makeScenario(7003, 259);
   ASSERT_TRUE(s.ok());
@@ -249,6 +250,32 @@ TEST(Validation, AVerdictOnAFacePastTheWheelEdgeNamesTheBand) {
   ASSERT_TRUE(e->correction.has_value());
   EXPECT_FALSE(e->correction->keepsRun()) << e->correction->verdict;
   EXPECT_EQ(e->correction->verdict.find("past the edge"), std::string::npos) << e->correction->verdict;
+
+  // The same measurement as a measuring machine's points just off the grid (measured_points.h):
+  // judged by the highest point's radius, with the band's points and without them.
+  const auto pointsCase = [&](bool withBand) {
+    CaseInput c = cases[0];
+    const Eigen::MatrixXd grid = *c.measured;
+    c.measured.reset();
+    std::vector<MeasuredPoint> points;
+    for (int i = 0; i < grid.rows(); ++i)
+      for (int j = 0; j < grid.cols(); ++j) {
+        const double r = job->grid.r[static_cast<size_t>(i)] + (i == 0 ? 0.01 : -0.01), x = 0.99 * job->grid.x[static_cast<size_t>(j)];
+        if (withBand || r < turn) points.push_back(MeasuredPoint{r, x, grid(i, j)});
+      }
+    c.measuredPoints = points;
+    return c;
+  };
+  for (bool withBand : {true, false}) {
+    auto pj = resolveJob(pointsCase(withBand));
+    ASSERT_TRUE(pj.ok()) << pj.error().message;
+    auto pe = evaluate(*pj);
+    ASSERT_TRUE(pe.ok()) << pe.error().message;
+    ASSERT_TRUE(pe->correction.has_value() && pe->correction->atProbes());
+    EXPECT_FALSE(pe->correction->keepsRun()) << pe->correction->verdict;
+    EXPECT_EQ(pe->correction->verdict.find(withBand ? band : "past the edge") != std::string::npos, withBand)
+        << pe->correction->verdict;
+  }
 }
 
 // A wheel-class scenario of the committed seed, run (no outcome if it is not one).
