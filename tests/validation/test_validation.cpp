@@ -278,6 +278,41 @@ TEST(Validation, AVerdictOnAFacePastTheWheelEdgeNamesTheBand) {
   }
 }
 
+// A proposal with which some of the errors the face cannot show leave part of the face unground is
+// "Uncertain" and says so, even where its bound lies below the face measured (correction.h,
+// uncertain()). Seed 7005's scenario 344 (150 µm rms, straight gash): the bound is 106 of 149 µm,
+// the bound's samples in the directions the face cannot show leave part of the face unground, and
+// so does the true machine, at the hob's end. It said "Correctable" with no word of it before.
+TEST(Validation, AProposalThatMayLeavePartUngroundIsUncertainWhateverItsBound) {
+  auto s = makeScenario(7005, 344);
+  ASSERT_TRUE(s.ok());
+  std::vector<CaseInput> cases;
+  const ScenarioOutcome o = runScenario(*s, &cases);
+  ASSERT_GE(o.passes.size(), 1u);
+  ASSERT_GE(cases.size(), 1u);
+  const PassOutcome& p = o.passes[0];
+  EXPECT_TRUE(p.unground) << "the true machine leaves part of the face unground";
+  EXPECT_NE(p.message.find("x = 21.2737 mm"), std::string::npos) << "at the hob's end: " << p.message;
+  EXPECT_LT(p.predictedRmsHigh, p.measuredRms) << "a bound below the face measured";
+  EXPECT_EQ(p.verdict.rfind("Uncertain: ", 0), 0u) << p.verdict;
+  EXPECT_NE(p.verdict.find("the wheel would not reach part of the face (part of it would stay unground)"), std::string::npos)
+      << p.verdict;
+
+  auto job = resolveJob(cases[0]);
+  ASSERT_TRUE(job.ok()) << job.error().message;
+  auto e = evaluate(*job);
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  ASSERT_TRUE(e->correction.has_value());
+  const Correction& c = *e->correction;
+  EXPECT_GT(c.predictedUngrindable, 0);
+  EXPECT_LE(c.predictedRmsHigh, c.before.rms);
+  EXPECT_TRUE(c.uncertain());
+  // The bound alone does not make it so: the same correction with every sample ground is not.
+  Correction ground = c;
+  ground.predictedUngrindable = 0;
+  EXPECT_FALSE(ground.uncertain());
+}
+
 // A wheel-class scenario of the committed seed, run (no outcome if it is not one).
 ScenarioOutcome runWheelScenario(int index) {
   auto s = makeScenario(kSeed, index);
