@@ -40,9 +40,10 @@ struct WheelEdge {
 // The band in the engineer's words: what the wheel cannot grind as designed, and what moves it.
 std::string wheelEdgeText(const WheelEdge& edge);
 
-// The band in a correction's verdict, for a pass judged on a grid that reaches above the turn: the
-// figures the verdict quotes do not hold there, and the machine may leave part of it unground (on
-// campaign seeds 7002 and 7003, two "Correctable" proposals failed only in that band; docs/validation.md).
+// The band in a correction's verdict, for a pass judged on a grid, or on measured points, that
+// reaches above the turn: the figures the verdict quotes do not hold there, and the machine may
+// leave part of it unground (on campaign seeds 7002 and 7003, two "Correctable" proposals failed
+// only in that band; docs/validation.md).
 std::string wheelEdgeVerdictText(const WheelEdge& edge);
 
 }  // namespace hobsharp
