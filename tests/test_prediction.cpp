@@ -85,5 +85,25 @@ TEST(Prediction, NoiseFreeTheBoundIsTight) {
   EXPECT_EQ(c.summary.status, SolveStatus::Converged) << c.summary.reason;
 }
 
+// uncertain() (correction.h) on a hand-built correction: a bound above the face measured, or any
+// sampled error with which part of the face stays unground; neither when the run is kept or the
+// verdict says stop (no change is proposed).
+TEST(Prediction, UncertainIsABoundAboveTheFaceOrAPartUnground) {
+  Correction c;
+  c.before.rms = 10;
+  c.predictedRmsHigh = 2;
+  EXPECT_FALSE(c.uncertain());
+  c.predictedRmsHigh = 11;
+  EXPECT_TRUE(c.uncertain());
+  c.predictedRmsHigh = 2;
+  c.predictedUngrindable = 1;
+  EXPECT_TRUE(c.uncertain()) << "a bound below the face measured does not clear a part left unground";
+  c.stop = true;
+  EXPECT_FALSE(c.uncertain());
+  c.stop = false;
+  c.runKept = true;
+  EXPECT_FALSE(c.uncertain());
+}
+
 }  // namespace
 }  // namespace hobsharp::test

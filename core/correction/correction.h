@@ -83,8 +83,9 @@ struct Correction {
   // What the pass will leave on the probe grid, µm rms, and its bound (face_prediction.h).
   double predictedRms = 0, predictedRmsHigh = 0;
   double predictedNoisePart = 0, predictedUnseenPart = 0;  // the bound's shares, µm rms
-  // Of the errors the bound samples in the directions the face cannot show, those with which the
-  // proposed axes grind a face the wheel does not envelop everywhere.
+  // Of the errors the bound samples (in the directions the face cannot show, and the error less its
+  // part that mimics the wheel's shape: face_prediction.h), those with which the proposed axes grind
+  // a face the wheel does not envelop everywhere.
   int predictedUngrindable = 0;
   // The bound also samples the wheel shape the face cannot tell from the axes' motion (the wheel
   // identified alongside; face_prediction.h, `mimicking`).

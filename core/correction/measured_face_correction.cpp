@@ -66,7 +66,8 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
     v << "Stop: the measured face (" << std::setprecision(2) << c.before.rms << " µm rms) is within the probe noise (sigma "
       << o.probeNoise << " µm); another pass would only move noise. Keep the axes run.";
   } else if (c.uncertain()) {
-    // A bound above the face measured: the pass may leave the face worse than it is, and the
+    // A bound above the face measured, or a sampled error with which part of the face stays
+    // unground (correction.h, uncertain()): the pass may leave the face worse than it is, and the
     // verdict leads with that, not with what the identified model would leave.
     v << "Uncertain: the face does not show enough of the machine's error to say that this pass improves it; "
       << leaves;

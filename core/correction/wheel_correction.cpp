@@ -28,7 +28,8 @@ std::string noDressingText(double largest, double step) {
 // The sentence for the engineer when the solve converged and a change is proposed; otherwise the
 // axes' own sentence (stalled, not converged, run kept) stands. What the pass leaves is the
 // prediction and its bound on the probe grid (face_prediction.h), as the axes' verdict states it;
-// a bound above the face measured keeps the axes' "Uncertain:" verdict and names the dressing.
+// a bound above the face measured, or a sampled error with which part of the face stays unground
+// (correction.h, uncertain()), keeps the axes' "Uncertain:" verdict and names the dressing.
 std::string verdictOf(const Correction& c, const WheelCorrection& w, const CorrectionOptions& o, int points) {
   double largest = 0;
   for (double x : w.offset) largest = std::max(largest, std::abs(x));
