@@ -39,6 +39,20 @@ ScenarioOutcome outcomeOf(int index) {
   return s ? runScenario(*s) : ScenarioOutcome{};
 }
 
+// A scenario of any seed, run as the campaign runs it, with each pass's case (the first at least).
+struct RunWithCases {
+  ScenarioOutcome outcome;
+  std::vector<CaseInput> cases;
+  bool hasFirstPass() const { return !outcome.passes.empty() && !cases.empty(); }
+};
+RunWithCases runWithCases(std::uint64_t seed, int index) {
+  RunWithCases r;
+  auto s = makeScenario(seed, index);
+  EXPECT_TRUE(s.ok()) << "seed " << seed << ", scenario " << index;
+  if (s) r.outcome = runScenario(*s, &r.cases);
+  return r;
+}
+
 const ClassSummary& classOf(ScenarioClass k) { return campaign().classes[static_cast<int>(k)]; }
 
 // One test, so that the campaign runs once per CTest run (each test is a process of its own).
@@ -220,13 +234,10 @@ TEST(Validation, OnlyThePassFaceUngroundIsSaidToStayUnground) {
 // (the measured numbers unchanged) carries no such sentence: the band is off the face judged; and
 // so with measured points, judged by the highest point.
 TEST(Validation, AVerdictOnAFacePastTheWheelEdgeNamesTheBand) {
-  auto s = makeScenario(7003, 259);
-  ASSERT_TRUE(s.ok());
-  std::vector<CaseInput> cases;
-  const ScenarioOutcome o = runScenario(*s, &cases);
-  ASSERT_GE(o.passes.size(), 1u);
-  ASSERT_GE(cases.size(), 1u);
-  const PassOutcome& p = o.passes[0];
+  const RunWithCases run = runWithCases(7003, 259);
+  ASSERT_TRUE(run.hasFirstPass());
+  const PassOutcome& p = run.outcome.passes[0];
+  const std::vector<CaseInput>& cases = run.cases;
   EXPECT_TRUE(p.unground) << "the true machine leaves part of the band unground";
   // At the tip's probe row, in the band.
   EXPECT_NE(p.message.find("cannot be solved at the grid point r = 22.9534 mm"), std::string::npos) << p.message;
@@ -284,13 +295,9 @@ TEST(Validation, AVerdictOnAFacePastTheWheelEdgeNamesTheBand) {
 // the bound's samples in the directions the face cannot show leave part of the face unground, and
 // so does the true machine, at the hob's end. It said "Correctable" with no word of it before.
 TEST(Validation, AProposalThatMayLeavePartUngroundIsUncertainWhateverItsBound) {
-  auto s = makeScenario(7005, 344);
-  ASSERT_TRUE(s.ok());
-  std::vector<CaseInput> cases;
-  const ScenarioOutcome o = runScenario(*s, &cases);
-  ASSERT_GE(o.passes.size(), 1u);
-  ASSERT_GE(cases.size(), 1u);
-  const PassOutcome& p = o.passes[0];
+  const RunWithCases run = runWithCases(7005, 344);
+  ASSERT_TRUE(run.hasFirstPass());
+  const PassOutcome& p = run.outcome.passes[0];
   EXPECT_TRUE(p.unground) << "the true machine leaves part of the face unground";
   EXPECT_NE(p.message.find("x = 21.2737 mm"), std::string::npos) << "at the hob's end: " << p.message;
   EXPECT_LT(p.predictedRmsHigh, p.measuredRms) << "a bound below the face measured";
@@ -298,7 +305,7 @@ TEST(Validation, AProposalThatMayLeavePartUngroundIsUncertainWhateverItsBound) {
   EXPECT_NE(p.verdict.find("the wheel would not reach part of the face (part of it would stay unground)"), std::string::npos)
       << p.verdict;
 
-  auto job = resolveJob(cases[0]);
+  auto job = resolveJob(run.cases[0]);
   ASSERT_TRUE(job.ok()) << job.error().message;
   auto e = evaluate(*job);
   ASSERT_TRUE(e.ok()) << e.error().message;
