@@ -181,8 +181,9 @@ TEST(PassHistory, WhereNoStartJoinsTheFacesTheNoteQuotesTheNearest) {
 
 // The verdict's offer of the next pass (an "Uncertain:" verdict, here a bound above the face
 // measured) only where a next pass uses this face: not for a face measured at the measuring
-// machine's own points, which the pass history leaves out. Scenario 152 (straight gash, 150 µm rms), first pass, measured on the grid
-// and at points 5 µm off each grid point: both bounds are above the face measured.
+// machine's own points, which the pass history leaves out. Scenario 152 (straight gash, 150 µm
+// rms), first pass, measured on the grid and at points 5 µm off each grid point: both bounds are
+// above the face measured.
 TEST(PassHistory, TheNextPassIsOfferedOnlyWhereItUsesThisFace) {
   Passes p;
   CaseInput c = firstCase(p, 152);
