@@ -8,7 +8,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
-import { afterResult, base, openPage, plotted, root, shots, useBrowser } from './support.mjs';
+import { afterResult, base, dataCase, openPage, plotted, root, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 const hobsharp = await loadHobSharp();
@@ -131,8 +131,7 @@ test('a face measured within the probe noise: Stop, set apart; nothing predicted
 test('a proposal that may leave part of the face unground says Uncertain with the warning, whatever its bound', async () => {
   const page = await openPage(base, desk);
   await plotted(page);
-  const pass = readFileSync(path.join(root, 'tests', 'data', 'unground-sample-pass.json'));
-  await afterResult(page, () => page.setInputFiles('#load-case', { name: 'unground-sample-pass.json', mimeType: 'application/json', buffer: pass }));
+  await afterResult(page, () => page.setInputFiles('#load-case', dataCase('unground-sample-pass.json')));
   const verdict = await page.textContent('#verdict');
   const m = verdict.match(/^Uncertain: the face does not show enough of the machine's error to say that this pass improves it; the face measured ([\d.]+) µm rms will be left at most ([\d.]+) µm rms/);
   assert.ok(m, verdict);

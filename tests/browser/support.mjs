@@ -3,7 +3,7 @@
 // Screenshots go to test-output/browser/.
 import { before, after } from 'node:test';
 import { spawn } from 'node:child_process';
-import { mkdirSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import net from 'node:net';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -12,6 +12,8 @@ import { chromium } from 'playwright-core';
 export const root = path.join(path.dirname(fileURLToPath(import.meta.url)), '..', '..');
 export const site = process.env.HOBSHARP_SITE || path.join(root, 'build', 'wasm', 'site');
 export const shots = path.join(root, 'test-output', 'browser');
+// A case file of tests/data/ as the page's file input takes it.
+export const dataCase = (name) => ({ name, mimeType: 'application/json', buffer: readFileSync(path.join(root, 'tests', 'data', name)) });
 mkdirSync(shots, { recursive: true });
 
 let server, browser;

@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { afterError, afterResult, base, colours, ON_DEMAND, openPage, plotted, root, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, colours, dataCase, ON_DEMAND, openPage, plotted, root, shots, useBrowser } from './support.mjs';
 import { readWheelCsv } from '../../wasm/lib/wheel-csv.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 
@@ -148,8 +148,7 @@ test('a face past the edge of the wheel\'s envelope is said in the answer, and g
   const page = await openPage(base, desk);
   await plotted(page);
   assert.ok(await page.isHidden('#wheel-edge'), 'Tab. 1: the profile reaches the tip');
-  const edge = readFileSync(path.join(root, 'tests', 'data', 'wheel-edge.json'));
-  await afterResult(page, () => page.setInputFiles('#load-case', { name: 'wheel-edge.json', mimeType: 'application/json', buffer: edge }));
+  await afterResult(page, () => page.setInputFiles('#load-case', dataCase('wheel-edge.json')));
   assert.ok(await page.isVisible('#wheel-edge'));
   assert.match(await page.textContent('#wheel-edge'), /^The wheel cannot grind the top 0\.077 mm of the face as designed: the conjugate wheel's profile turns back at the face radius r = 23\.915 mm, below the tip \(r = 23\.992 mm\)/);
   await page.locator('#summary').screenshot({ path: path.join(shots, 'wheel-edge.png') });
@@ -164,8 +163,7 @@ test('a face past the edge of the wheel\'s envelope is said in the answer, and g
   await page.locator('fieldset:has([data-field="setup.tilt"])').screenshot({ path: path.join(shots, 'wheel-edge-refused.png') });
   await afterResult(page, () => page.click('#wheel-conjugate'));
   assert.ok(await page.isHidden('label:has([data-field="setup.tilt"]) .field-message'), 'the refusal goes with the dressed wheel');
-  await afterResult(page, () => page.setInputFiles('#load-case', { name: 'tab1.json', mimeType: 'application/json',
-    buffer: readFileSync(path.join(root, 'tests', 'data', 'tab1.json')) }));
+  await afterResult(page, () => page.setInputFiles('#load-case', dataCase('tab1.json')));
   assert.ok(await page.isHidden('#wheel-edge'));
   await page.context().close();
 });
@@ -177,8 +175,7 @@ test('a face past the edge of the wheel\'s envelope is said in the answer, and g
 test('a correction on a face past the edge of the wheel\'s envelope names the band in its verdict', async () => {
   const page = await openPage(base, desk);
   await plotted(page);
-  const pass = readFileSync(path.join(root, 'tests', 'data', 'wheel-edge-pass.json'));
-  await afterResult(page, () => page.setInputFiles('#load-case', { name: 'wheel-edge-pass.json', mimeType: 'application/json', buffer: pass }));
+  await afterResult(page, () => page.setInputFiles('#load-case', dataCase('wheel-edge-pass.json')));
   const verdict = await page.textContent('#verdict');
   assert.match(verdict, /^Correctable: the axes can cancel the measured deviation; the face measured 30 µm rms will be left at most [\d.]+ µm rms/);
   assert.match(verdict, /The top 0\.27 mm of the face, above r = 22\.6842 mm, lies past the edge of the wheel's envelope: the figures given for the face do not hold in that band, and the machine may leave part of it unground\./);
