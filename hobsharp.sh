@@ -10,7 +10,7 @@
 #   ./hobsharp.sh validate [--scenarios N] [--seed S] [--docs] [--index I [--cases DIR]]
 #                         the validation campaign on random hobs (docs/validation.md); --docs
 #                         writes its table, JSON and plot into docs/validation/
-#   ./hobsharp.sh validate --calibration [--hobs H] [--seed S] [--error-scale K] [--offsets-only] [--docs]
+#   ./hobsharp.sh validate --calibration [--hobs H] [--seed S] [--error-scale K] [--offsets-only] [--bootstrap B] [--docs]
 #                         the calibration of the values read about the machine (calibration.json)
 set -euo pipefail
 cd "$(dirname "$0")"

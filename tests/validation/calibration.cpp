@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <thread>
@@ -139,6 +140,22 @@ int Calibration::figureUnder(double share) const {
                                         [&](const AxisSpread& a) { return a.figureUnder(share); }));
 }
 
+int Calibration::bootstrapMoved() const {
+  return static_cast<int>(
+      std::count_if(axisSpreads.begin(), axisSpreads.end(), [](const AxisSpread& a) { return a.bootstrap > 0; }));
+}
+
+int Calibration::bootstrapWithin() const {
+  return static_cast<int>(std::count_if(axisSpreads.begin(), axisSpreads.end(), [&](const AxisSpread& a) {
+    return a.bootstrap > 0 && a.bootstrapRatio() >= options.low && a.bootstrapRatio() <= options.high;
+  }));
+}
+
+int Calibration::bootstrapUnder(double factor) const {
+  return static_cast<int>(std::count_if(axisSpreads.begin(), axisSpreads.end(),
+                                        [&](const AxisSpread& a) { return a.bootstrapRatio() > factor; }));
+}
+
 int Calibration::within() const {
   return static_cast<int>(std::count_if(values.begin(), values.end(), [&](const CalibratedValue& v) {
     return v.ratio() >= options.low && v.ratio() <= options.high;
@@ -199,28 +216,50 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
     const MotionRange range = motionRange(*nominal);
     std::array<std::array<std::vector<double>, kCurveSamples>, kAxisCount> curves;
     std::array<std::vector<double>, kAxisCount> uncertainties;
-    for (int k = 0; k < o.measurements; ++k) {
+    // Each axis's identified error at the curve's samples, in display units.
+    const auto sampleCurves = [&](const AxisPolynomials& identified, auto& into) {
+      for (Axis a : kAxes)
+        for (int t = 0; t < kCurveSamples; ++t)
+          into[static_cast<size_t>(a)][static_cast<size_t>(t)].push_back(
+              identified[a].at(range.min + (range.max - range.min) * t / (kCurveSamples - 1)).value * displayFactor(a));
+    };
+    // `groundNormal` (µm) measured with fresh noise from `rng` after the nominal axes, evaluated as the page does.
+    const auto measure = [&](const Eigen::MatrixXd& groundNormal, std::mt19937_64& rng) {
       CaseInput c = s->input;
       c.axes = job->nominalAxes;
-      Eigen::MatrixXd measured = face;
-      for (int i = 0; i < measured.size(); ++i) measured.data()[i] += o.sigma * gauss(noise);
+      Eigen::MatrixXd measured = groundNormal;
+      for (int i = 0; i < measured.size(); ++i) measured.data()[i] += o.sigma * gauss(rng);
       c.measured = measured;
       c.correction.probeNoise = o.sigma;
-      ++evaluations;
       auto j = resolveJob(c);
-      auto e = j ? evaluate(*j) : Outcome<Evaluation>(j.error());
+      return j ? evaluate(*j) : Outcome<Evaluation>(j.error());
+    };
+    std::optional<AxisPolynomials> first;  // the first measurement's identified error, for the bootstrap
+    for (int k = 0; k < o.measurements; ++k) {
+      ++evaluations;
+      auto e = measure(face, noise);
       if (!e || !e->correction) {
         ++refused;
         continue;
       }
       collect(e->correction->identified, o.sigma, samples);
-      for (Axis a : kAxes) {
-        const size_t i = static_cast<size_t>(a);
-        for (int t = 0; t < kCurveSamples; ++t)
-          curves[i][static_cast<size_t>(t)].push_back(
-              e->correction->identifiedError[a].at(range.min + (range.max - range.min) * t / (kCurveSamples - 1)).value *
-              displayFactor(a));
-        uncertainties[i].push_back(e->correction->uncertainty[i]);
+      sampleCurves(e->correction->identifiedError, curves);
+      for (Axis a : kAxes) uncertainties[static_cast<size_t>(a)].push_back(e->correction->uncertainty[static_cast<size_t>(a)]);
+      if (!first) first = e->correction->identifiedError;
+    }
+    // The bootstrap of the first measurement: the face its identified error grinds, measured again
+    // with fresh noise and identified again (CalibrationOptions::bootstrapDraws).
+    std::array<std::array<std::vector<double>, kCurveSamples>, kAxisCount> bootstrapCurves;
+    const auto modelFace = first && o.bootstrapDraws > 0
+                               ? simulateGroundFace(job->setup, plusError(job->nominalAxes, *first), job->grid,
+                                                    Sensitivities::Skip)
+                               : Outcome<GroundFace>(Error{});
+    if (modelFace) {
+      const Eigen::MatrixXd base = topographyOf(*modelFace).normal;
+      std::mt19937_64 again(o.seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(index) + 29);
+      for (int b = 0; b < o.bootstrapDraws; ++b) {
+        auto e = measure(base, again);
+        if (e && e->correction) sampleCurves(e->correction->identifiedError, bootstrapCurves);
       }
     }
     std::vector<AxisSpread> spreads;
@@ -231,6 +270,9 @@ Calibration runCalibration(const CalibrationOptions& o, unsigned threads) {
       a.hob = index, a.axis = axisName(axis), a.unit = unitOf(axis);
       for (const std::vector<double>& atSample : curves[i]) a.spread = std::max(a.spread, meanAndSpread(atSample).second);
       a.given = rms(uncertainties[i]);
+      if (bootstrapCurves[i][0].size() >= 3)
+        for (const std::vector<double>& atSample : bootstrapCurves[i])
+          a.bootstrap = std::max(a.bootstrap, meanAndSpread(atSample).second);
       if (a.spread > 0) spreads.push_back(a);  // an axis the identification never moves is not judged
     }
     std::vector<CalibratedValue> judged, rare;
@@ -324,6 +366,13 @@ nlohmann::json toJson(const Calibration& c) {
   for (const AxisSpread& a : c.axisSpreads)
     j["axisSpreads"].push_back({{"hob", a.hob}, {"axis", a.axis}, {"unit", a.unit}, {"spread", a.spread},
                                 {"given", a.given}, {"ratio", a.ratio()}});
+  if (c.options.bootstrapDraws > 0) {
+    j["bootstrapDraws"] = c.options.bootstrapDraws;
+    for (size_t i = 0; i < c.axisSpreads.size(); ++i) {
+      j["axisSpreads"][i]["bootstrap"] = c.axisSpreads[i].bootstrap;
+      j["axisSpreads"][i]["bootstrapRatio"] = c.axisSpreads[i].bootstrapRatio();
+    }
+  }
   j["axisSpreadsWithin"] = c.axisSpreadsWithin();
   j["axisFigureTenTimesOrMore"] = c.figureOver(10);
   j["axisFigureBelowHalf"] = c.figureUnder(0.5);
@@ -363,6 +412,21 @@ std::string calibrationText(const Calibration& c) {
       << c.figureOver(10) << " more than 10 times the spread, " << c.figureUnder(0.5)
       << " less than half of it; ratio (spread / given) lowest " << a.front() << ", median " << quantile(a, 0.5)
       << ", highest " << a.back() << "\n";
+    if (c.options.bootstrapDraws > 0) {
+      // The bootstrap's spread against the spread over the measurements.
+      std::vector<double> b;
+      for (const AxisSpread& x : c.axisSpreads)
+        if (x.bootstrap > 0) b.push_back(x.bootstrapRatio());
+      std::sort(b.begin(), b.end());
+      s << "  a bootstrap of each hob's first measurement (" << c.options.bootstrapDraws
+        << " draws) against the identified error's spread over the measurements, " << c.axisSpreads.size()
+        << " axes moved: " << c.bootstrapWithin() << " within " << c.options.low << " to " << c.options.high << ", "
+        << c.bootstrapUnder(2) << " spread more than twice the bootstrap's figure, "
+        << c.axisSpreads.size() - static_cast<size_t>(c.bootstrapMoved()) << " never moved by the bootstrap";
+      if (!b.empty()) s << "; ratio (spread / bootstrap) lowest " << b.front() << ", median " << quantile(b, 0.5) << ", 90th "
+                        << quantile(b, 0.9) << ", highest " << b.back();
+      s << "\n";
+    }
     for (const AxisSpread& x : c.axisSpreads)
       if (x.figureUnder(0.5))
         s << "  uncertainty below the spread: scenario " << x.hob << ", " << x.axis << ": spread " << x.spread << " "

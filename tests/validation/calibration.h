@@ -35,6 +35,12 @@ struct CalibrationOptions {
   // noise, the value the reading stands for. Its mean over the measurements should lie within this
   // many of its standard uncertainties of that (beyond it: a value wrong by more than it says).
   double truthWithin = 3;
+  // A parametric bootstrap of each hob's first measurement (0: none): the face the identified error
+  // grinds, measured this many times with fresh probe noise of the same sigma and identified again
+  // as the page does; each axis curve's spread over those draws is set against the spread over the
+  // measurements (AxisSpread::bootstrap). What a per-axis spread of one proposal, computed from its
+  // own measurement alone, would give.
+  int bootstrapDraws = 0;
 };
 
 // One value the page reads on one hob, over the measurements that read it.
@@ -73,7 +79,12 @@ struct AxisSpread {
   std::string unit;  // µm or µrad
   double spread = 0;  // largest over the range of the curve's standard deviation (n - 1)
   double given = 0;   // root mean square of correction.uncertainty over the measurements
+  // With bootstrapDraws: the same spread over the bootstrap of the first measurement (0 where the
+  // bootstrap never moves the axis, or was not run).
+  double bootstrap = 0;
   double ratio() const { return given > 0 ? spread / given : 0.0; }
+  // The spread over the measurements against the bootstrap's (0 without a bootstrap figure).
+  double bootstrapRatio() const { return bootstrap > 0 ? spread / bootstrap : 0.0; }
   bool figureOver(double factor) const { return ratio() * factor < 1; }  // given above factor times the spread
   bool figureUnder(double share) const { return ratio() * share > 1; }   // given below share of the spread
 };
@@ -96,6 +107,11 @@ struct Calibration {
   int axisSpreadsWithin() const;            // axis spreads whose ratio lies in [low, high]
   int figureOver(double factor) const;      // ... whose figure given is more than factor times the spread
   int figureUnder(double share) const;      // ... whose figure given is less than share of the spread
+  // With bootstrapDraws: the axis spreads whose bootstrap figure is there (moved by the bootstrap),
+  // of them those whose spread over the measurements lies within [low, high] times it, and those
+  // whose spread is more than `factor` times it (the bootstrap a figure more certain than it is).
+  int bootstrapMoved() const, bootstrapWithin() const;
+  int bootstrapUnder(double factor) const;
 };
 
 Calibration runCalibration(const CalibrationOptions& options, unsigned threads);

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   int hobs = CalibrationOptions{}.hobs;
   double errorScale = 1;
   bool offsetsOnly = false;
+  int bootstrap = 0;  // --bootstrap B: with --calibration, B draws of each hob's first measurement
   unsigned threads = std::max(1u, std::thread::hardware_concurrency());
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -42,10 +43,11 @@ int main(int argc, char** argv) {
     else if (a == "--hobs" && hasValue) hobs = std::atoi(argv[++i]);
     else if (a == "--error-scale" && hasValue) errorScale = std::atof(argv[++i]);
     else if (a == "--offsets-only") offsetsOnly = true;
+    else if (a == "--bootstrap" && hasValue) bootstrap = std::atoi(argv[++i]);
     else if (a == "--threads" && hasValue) threads = static_cast<unsigned>(std::max(1, std::atoi(argv[++i])));
     else {
       std::cerr << "usage: validate [--scenarios N] [--seed S] [--out DIR] [--threads T] [--index I [--cases DIR]]\n"
-                   "       validate --calibration [--hobs H] [--error-scale K] [--offsets-only] [--seed S] [--out DIR] [--threads T]\n";
+                   "       validate --calibration [--hobs H] [--error-scale K] [--offsets-only] [--bootstrap B] [--seed S] [--out DIR] [--threads T]\n";
       return 2;
     }
   }
@@ -60,6 +62,7 @@ int main(int argc, char** argv) {
     o.hobs = std::max(1, hobs);
     if (errorScale > 0) o.errorScale = errorScale;
     o.offsetsOnly = offsetsOnly;
+    o.bootstrapDraws = std::max(0, bootstrap);
     const Calibration c = runCalibration(o, threads);
     std::cout << calibrationText(c);
     std::filesystem::create_directories(out);
