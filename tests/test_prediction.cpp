@@ -85,8 +85,8 @@ TEST(Prediction, NoiseFreeTheBoundIsTight) {
   EXPECT_EQ(c.summary.status, SolveStatus::Converged) << c.summary.reason;
 }
 
-// uncertain() (correction.h) on a hand-built correction: a bound above the face measured, or any
-// sampled error with which part of the face stays unground; neither when the run is kept or the
+// uncertain() (correction.h) on a hand-built correction: a bound above the face measured, any
+// sampled error with which part of the face stays unground, or a point near a fold; none when the run is kept or the
 // verdict says stop (no change is proposed).
 TEST(Prediction, UncertainIsABoundAboveTheFaceOrAPartUnground) {
   Correction c;
@@ -98,6 +98,12 @@ TEST(Prediction, UncertainIsABoundAboveTheFaceOrAPartUnground) {
   c.predictedRmsHigh = 2;
   c.predictedUngrindable = 1;
   EXPECT_TRUE(c.uncertain()) << "a bound below the face measured does not clear a part left unground";
+  c.predictedUngrindable = 0;
+  GridPoint fold;
+  fold.p.setZero();
+  fold.n.setZero();
+  c.predictedFoldAt = fold;
+  EXPECT_TRUE(c.uncertain()) << "nor a point near a fold";
   c.stop = true;
   EXPECT_FALSE(c.uncertain());
   c.stop = false;

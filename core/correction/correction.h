@@ -7,6 +7,8 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,6 +92,11 @@ struct Correction {
   // The bound also samples the wheel shape the face cannot tell from the axes' motion (the wheel
   // identified alongside; face_prediction.h, `mimicking`).
   bool predictedWheelAlike = false;
+  // With an error the face cannot show, of the size the bound samples, the wheel may stop
+  // enveloping the face the pass grinds (a fold of the envelope, fold_margin.h): the margin, and the
+  // point where it falls below the check's limit (face_prediction.h).
+  double predictedFoldMargin = std::numeric_limits<double>::infinity();
+  std::optional<GridPoint> predictedFoldAt;
   // The measured face is within the probe noise: another pass would only move noise.
   bool stop = false;
   // The axes run are proposed unchanged (run kept, or stop): so is the wheel, with no dressing.
@@ -99,7 +106,9 @@ struct Correction {
   // machine's error to say that the pass improves it (the verdicts lead with "Uncertain:"). A bound
   // below the face measured does not clear the second: on campaign seed 7005's scenario 344 it was
   // 106 of 149 µm, 4 of the 6 samples left part of the face unground, and so did the true machine.
-  bool uncertain() const { return !keepsRun() && (predictedRmsHigh > before.rms || predictedUngrindable > 0); }
+  bool uncertain() const {
+    return !keepsRun() && (predictedRmsHigh > before.rms || predictedUngrindable > 0 || predictedFoldAt.has_value());
+  }
   // The face the pass leaves (`after`, over `points` values) is within twice the probe noise: its
   // rms at most twice the probe's sigma (the verdict's "to within twice the probe noise"). Looser
   // than the chi-square ceiling the status and the stop take (noiseCeiling, 1.28 sigma on 45

@@ -15,10 +15,15 @@
 //     largest of (the face moved at the new point) - (the visible part of the face moved at the
 //     measured point). With the wheel alongside, also the error less twice its part along the axis
 //     changes that mimic a wheel shape (`mimicking`): that part might be the wheel's.
-// The last rests on an assumption, stated in the verdict: the error the face cannot show (or cannot
+// Beside the bound, the fold check (fold_margin.h): where, with an error the face cannot show of the
+// samples' radius, a point of the face the pass grinds may come to a fold of the envelope (the wheel
+// stops reaching it), the pass is uncertain and the verdict names the point.
+// The last two rest on an assumption, stated in the verdict: the error the face cannot show (or cannot
 // tell from the wheel's shape) is no larger than the one it shows.
 #pragma once
 
+#include <limits>
+#include <optional>
 #include <string>
 
 #include <Eigen/Core>
@@ -39,6 +44,11 @@ struct FacePrediction {
   // reach part of it). The bound cannot say for those, nor for the ones with which the face measured
   // cannot be simulated, which are not counted here.
   int ungrindable = 0;
+  // How near the face the pass grinds is to a fold with an error the face cannot show, of the
+  // samples' radius (fold_margin.h): the margin, and the point where it is below the check's limit
+  // (face_prediction.cpp, kFoldMargin), where the wheel may stop enveloping the face.
+  double foldMargin = std::numeric_limits<double>::infinity();
+  std::optional<GridPoint> foldAt;
   // The unseen share includes the wheel shape the face cannot tell from the axes (`mimicking`).
   bool wheelAlike = false;
 };

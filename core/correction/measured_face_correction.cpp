@@ -74,6 +74,9 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
     if (c.predictedUngrindable > 0)
       v << ", and with some of the errors it cannot show the wheel would not reach part of the face (part of it "
            "would stay unground)";
+    else if (c.predictedFoldAt)
+      v << ", and with an error it cannot show, of that size, the wheel may stop reaching the face near r = "
+        << c.predictedFoldAt->r << " mm, x = " << c.predictedFoldAt->x << " mm (part of it would stay unground)";
     v << ".";
     if (unfinished) v << " The identification " << how << ": " << c.summary.reason;
     if (historyNext)
@@ -329,6 +332,8 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     c.predictedUnseenPart = p.unseenPart;
     c.predictedUngrindable = p.ungrindable;
     c.predictedWheelAlike = p.wheelAlike;
+    c.predictedFoldMargin = p.foldMargin;
+    c.predictedFoldAt = p.foldAt;
   }
   // The wheel is corrected where this case asks for it, where the error was identified with the
   // wheel alongside (which only a wheel correction does), or where an earlier pass dressed it.

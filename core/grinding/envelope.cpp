@@ -317,6 +317,16 @@ bool addSensitivities(const SharpeningSetup& setup, const SetupRotations& rotati
   return addSensitivities(PointEquations(setup, rotations, axes, point), e);
 }
 
+Eigen::Vector4d envelopeResidual(const SharpeningSetup& setup, const SetupRotations& rotations,
+                                 const AxisPolynomials& axes, const GridPoint& point, const EnvelopePoint& at) {
+  return residualAt(PointEquations(setup, rotations, axes, point), EnvelopeGuess{at.t, at.phi, at.u, at.w});
+}
+
+Eigen::Matrix4d envelopeJacobian(const SharpeningSetup& setup, const SetupRotations& rotations,
+                                 const AxisPolynomials& axes, const GridPoint& point, const EnvelopePoint& at) {
+  return linearise(PointEquations(setup, rotations, axes, point), EnvelopeGuess{at.t, at.phi, at.u, at.w}).J;
+}
+
 bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes, const GridPoint& point,
                       EnvelopePoint& e) {
   return addSensitivities(setup, setupRotations(setup), axes, point, e);

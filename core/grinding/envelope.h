@@ -117,6 +117,15 @@ bool addSensitivities(const SharpeningSetup& setup, const AxisPolynomials& axes,
 bool addSensitivities(const SharpeningSetup& setup, const SetupRotations& rotations, const AxisPolynomials& axes,
                       const GridPoint& point, EnvelopePoint& e);
 
+// Eqs. 5, 6, 11 at the unknowns (t, phi, u, w) of `at`, with the axes `axes`: their residual, and
+// their Jacobian d / d(t, phi, u, w) formed afresh there. Where the Jacobian's determinant reaches 0,
+// the point's solution meets another one and both vanish (a fold: the wheel stops enveloping the
+// face at the point); its unit is the unknowns' product, so only its ratios mean anything.
+Eigen::Vector4d envelopeResidual(const SharpeningSetup& setup, const SetupRotations& rotations,
+                                 const AxisPolynomials& axes, const GridPoint& point, const EnvelopePoint& at);
+Eigen::Matrix4d envelopeJacobian(const SharpeningSetup& setup, const SetupRotations& rotations,
+                                 const AxisPolynomials& axes, const GridPoint& point, const EnvelopePoint& at);
+
 // The guess from the nominal screw motion: the wheel touches (u, w) when w + phi = w*(u).
 EnvelopeGuess nominalGuess(const GridPoint& point, double contactW);
 

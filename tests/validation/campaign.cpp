@@ -203,7 +203,7 @@ nlohmann::json toJson(const Campaign& c) {
     for (const PassOutcome& p : o.passes) {
       nlohmann::json q = {{"refused", p.refused}, {"unground", p.unground}, {"measuredRms", p.measuredRms}, {"probeRms", p.probeRms},
                           {"denseRms", p.denseRms}, {"denseRmsRounded", p.denseRmsRounded},
-                          {"predictedRms", p.predictedRms}, {"predictedRmsHigh", p.predictedRmsHigh}, {"predictedUnseenPart", p.predictedUnseenPart},
+                          {"predictedRms", p.predictedRms}, {"predictedRmsHigh", p.predictedRmsHigh}, {"predictedUnseenPart", p.predictedUnseenPart}, {"foldMargin", p.foldMargin},
                           {"status", p.status}, {"verdict", p.verdict}, {"rank", p.rank},
                           {"withinNoise", p.withinNoise}, {"amplifying", p.amplifying}, {"iterations", p.iterations},
                           {"linearisedAtNominal", p.linearisedAtNominal}, {"passesJoined", p.passesJoined}, {"stop", p.stopAdvised},

@@ -1,5 +1,6 @@
 #include "run_scenario.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <random>
@@ -170,6 +171,7 @@ ScenarioOutcome runScenario(const Scenario& s, std::vector<CaseInput>* cases) {
     p.predictedRms = k.predictedRms;
     p.predictedRmsHigh = k.predictedRmsHigh;
     p.predictedUnseenPart = k.predictedUnseenPart;
+    p.foldMargin = std::min(k.predictedFoldMargin, 1e30);
     p.stopAdvised = k.stop;
     p.linearisedAtNominal = k.linearisedAtNominal;
     p.passesJoined = k.passesJoined;

@@ -27,6 +27,7 @@ struct PassOutcome {
   double denseRmsRounded = 0;  // ... with correction.roundedAxes run, µm
   double predictedRms = -1;      // correction.predictedRms, µm (-1: not given)
   double predictedRmsHigh = -1;  // correction.predictedRmsHigh, µm (-1: not given)
+  double foldMargin = 0;  // correction.predictedFoldMargin (capped for the JSON)
   double predictedUnseenPart = 0;  // the bound's share for the error the face cannot show, µm rms
   std::string status;        // correction.summary status
   std::string verdict;

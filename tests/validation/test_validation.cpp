@@ -215,7 +215,8 @@ TEST(Validation, ABoundAboveTheFaceMeasuredIsSaid) {
 // pass grinds cannot be simulated. Scenario 452 (helical gash, 150 µm rms): the first proposal's
 // bound is above the face measured, and 3 of its 6 sampled errors make the face measured one the
 // module cannot simulate, none the face the pass grinds; the pass is ground (not refused). Those 3
-// made the verdict say that part of the face would stay unground.
+// made the verdict say that part of the face would stay unground. (The fold check, which asks
+// another question, warns here: a point near the root is within its margin; face_prediction.h.)
 TEST(Validation, OnlyThePassFaceUngroundIsSaidToStayUnground) {
   const ScenarioOutcome o = outcomeOf(452);
   ASSERT_GE(o.passes.size(), 1u);
@@ -223,14 +224,15 @@ TEST(Validation, OnlyThePassFaceUngroundIsSaidToStayUnground) {
   EXPECT_TRUE(p.ground()) << p.message;
   EXPECT_GT(p.predictedRmsHigh, p.measuredRms);
   EXPECT_NE(p.verdict.rfind("Uncertain: the face does not show enough", 0), std::string::npos) << p.verdict;
-  EXPECT_EQ(p.verdict.find("part of it would stay unground"), std::string::npos) << p.verdict;
+  EXPECT_EQ(p.verdict.find("the wheel would not reach part of the face"), std::string::npos) << p.verdict;
 }
 
 // A proposal judged on a grid that reaches past the edge of the wheel's envelope names the band in
 // its verdict (wheel_profile_turn.h). Seed 7003's scenario 259 (30 µm class, helical gash; the
 // conjugate profile turns back 0.27 mm below the tip): the true machine grinds the proposal
 // everywhere but in that band (at the tip's probe row), and the verdict said "Correctable" with no word of it
-// (docs/validation.md, "Three more seeds"). The same case on a grid that stops below the turn
+// (docs/validation.md, "Three more seeds"); the fold check now makes it "Uncertain:" and names a
+// point of the band's row (face_prediction.h). The same case on a grid that stops below the turn
 // (the measured numbers unchanged) carries no such sentence: the band is off the face judged; and
 // so with measured points, judged by the highest point.
 TEST(Validation, AVerdictOnAFacePastTheWheelEdgeNamesTheBand) {
@@ -244,7 +246,8 @@ TEST(Validation, AVerdictOnAFacePastTheWheelEdgeNamesTheBand) {
   const std::string band =
       "The top 0.27 mm of the face, above r = 22.6842 mm, lies past the edge of the wheel's envelope: the figures "
       "given for the face do not hold in that band, and the machine may leave part of it unground.";
-  EXPECT_EQ(p.verdict.rfind("Correctable: ", 0), 0u) << p.verdict;
+  EXPECT_EQ(p.verdict.rfind("Uncertain: ", 0), 0u) << p.verdict;
+  EXPECT_NE(p.verdict.find("the wheel may stop reaching the face near r = 23 mm"), std::string::npos) << p.verdict;
   EXPECT_NE(p.verdict.find(band), std::string::npos) << p.verdict;
 
   auto job = resolveJob(cases[0]);
@@ -314,10 +317,34 @@ TEST(Validation, AProposalThatMayLeavePartUngroundIsUncertainWhateverItsBound) {
   EXPECT_GT(c.predictedUngrindable, 0);
   EXPECT_LE(c.predictedRmsHigh, c.before.rms);
   EXPECT_TRUE(c.uncertain());
-  // The bound alone does not make it so: the same correction with every sample ground is not.
+  // The bound alone does not make it so: the same correction with every sample ground, and no point
+  // near a fold, is not.
   Correction ground = c;
   ground.predictedUngrindable = 0;
+  ground.predictedFoldAt.reset();
   EXPECT_FALSE(ground.uncertain());
+}
+
+// The fold check (face_prediction.h, fold_margin.h): seed 1013's scenario 325 (30 µm class). Its
+// bound lay below the face measured, every sampled error ground the face, and the verdict said
+// "Correctable"; the true machine does not grind the proposal at the probe point r = 17.673 mm,
+// x = 27.7019 mm (the envelope's solution there meets another and both vanish). With an error the
+// face cannot show, of the samples' radius, the point's envelope determinant may reach 0 to first
+// order: the verdict is "Uncertain:" and names that point.
+TEST(Validation, AProposalNearAFoldIsUncertainAndNamesThePoint) {
+  const RunWithCases run = runWithCases(1013, 325);
+  ASSERT_TRUE(run.hasFirstPass());
+  const PassOutcome& p = run.outcome.passes[0];
+  EXPECT_TRUE(p.unground) << "the true machine leaves part of the face unground";
+  EXPECT_NE(p.message.find("r = 17.673 mm, x = 27.7019 mm"), std::string::npos) << p.message;
+  EXPECT_LT(p.predictedRmsHigh, p.measuredRms) << "a bound below the face measured";
+  EXPECT_LT(p.foldMargin, 1);
+  EXPECT_EQ(p.verdict.rfind("Uncertain: ", 0), 0u) << p.verdict;
+  EXPECT_NE(p.verdict.find("the wheel may stop reaching the face near r = 17.7 mm, x = 27.7 mm (part of it would stay "
+                           "unground)"),
+            std::string::npos)
+      << p.verdict;
+  EXPECT_EQ(p.verdict.find("the wheel would not reach part of the face"), std::string::npos) << p.verdict;
 }
 
 // A wheel-class scenario of the committed seed, run (no outcome if it is not one).
