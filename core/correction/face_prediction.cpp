@@ -183,10 +183,14 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
         base = rowsOf(base, at);
         explained = rowsOf(explained, at);
       }
+      // The face the pass grinds on the identified machine, at the sampled points: the fold check's
+      // (below), and the base of the moves where they are measured from re-simulated faces.
+      std::optional<Outcome<GroundFace>> ground;
+      if (sampling.fromResimulated || !unseen.empty())
+        ground = simulateGroundFaceLike(like, passSetup, actual, Sensitivities::Skip, FaceStart::Near);
       if (sampling.fromResimulated) {
-        auto after0 = simulateGroundFaceLike(like, passSetup, actual, Sensitivities::Skip, FaceStart::Near);
         auto before0 = simulateGroundFaceLike(like, measuredSetup, measuredAt, Sensitivities::Skip, FaceStart::Near);
-        if (after0 && before0) base = faceNormal(*after0), explained = faceNormal(*before0);
+        if (*ground && before0) base = faceNormal(**ground), explained = faceNormal(*before0);
       }
       double worst = 0;
       // The face the pass leaves with the error changed by dc (coefficient units), less what the
@@ -222,16 +226,14 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
       // The fold check: on the face the pass grinds, how near each point is to a fold, with an error
       // the face cannot show of the samples' radius (sqrt(#unseen) times the size per term) along
       // each of those directions (fold_margin.h).
-      if (!unseen.empty()) {
-        auto ground = simulateGroundFaceLike(like, passSetup, actual, Sensitivities::Skip, FaceStart::Near);
-        if (ground) {
-          const double radius = size * std::sqrt(static_cast<double>(unseen.size()));
-          std::vector<AxisPolynomials> moved;
-          for (int d = 0; d < N.cols(); ++d) moved.push_back(plusChange(actual, cs, (radius * N.col(d)).cwiseQuotient(w)));
-          const FoldMargin fold = foldMargin(*ground, passSetup, actual, moved);
-          p.foldMargin = fold.margin;
-          if (fold.margin < kFoldMargin) p.foldAt = ground->points[static_cast<size_t>(fold.at)];
-        }
+      if (!unseen.empty() && *ground) {
+        const GroundFace& face = **ground;
+        const double radius = size * std::sqrt(static_cast<double>(unseen.size()));
+        std::vector<AxisPolynomials> moved;
+        for (int d = 0; d < N.cols(); ++d) moved.push_back(plusChange(actual, cs, (radius * N.col(d)).cwiseQuotient(w)));
+        const FoldMargin fold = foldMargin(face, passSetup, actual, moved);
+        p.foldMargin = fold.margin;
+        if (fold.margin < kFoldMargin) p.foldAt = face.points[static_cast<size_t>(fold.at)];
       }
       // The error less kMimicScale times that part, the wheel taking it: the face the pass then
       // leaves, where the axes' mimicry of the wheel's shape holds at the measurement only.
