@@ -100,6 +100,11 @@ std::string predictionText(const Correction& c) {
     leaves << (c.predictedWheelAlike ? " if the error the face cannot show, or cannot tell from the wheel's shape, is no "
                                        "larger than the one it shows"
                                      : " if the error the face cannot show is no larger than the one it shows");
+  // Below the pass's floor (machine_resolution.h): the exact axes' figure is not what the machine,
+  // which quantises each axis position to its step, can hold; no pass promises a face below it.
+  if (c.resolutionFloor > c.predictedRmsHigh)
+    leaves << " with the exact axes; quantising each axis position to the machine's resolution sets a floor of about "
+           << c.resolutionFloor << " µm rms, which no pass goes below";
   return leaves.str();
 }
 
