@@ -24,6 +24,45 @@ UnobservableCombination combination(const std::vector<Coefficient>& coefficients
 
 }  // namespace
 
+std::string lockedText(int degree, const CorrectionOptions& o) {
+  std::string locked;
+  for (Axis a : kAxes) {
+    std::string some;  // the axis's locked coefficients, or the axis where all of them are
+    bool all = true;
+    for (int k = 0; k <= degree; ++k) {
+      const Coefficient ck{a, k};
+      if (isLocked(ck, o)) some += std::string(some.empty() ? "" : ", ") + ck.name();
+      else all = false;
+    }
+    if (!some.empty()) locked += std::string(locked.empty() ? "" : ", ") + (all ? std::string(axisName(a)) : some);
+  }
+  return locked;
+}
+
+std::string allLockedText(double rms) {
+  std::ostringstream v;
+  v.precision(3);
+  v << "No change proposed: every axis is locked (correction options), so the axes run stay as they are; unlock an "
+       "axis to correct the face (" << rms << " µm rms measured).";
+  return v.str();
+}
+
+std::string uncorrectableText(double share, const std::string& locked, const std::string& residual) {
+  std::ostringstream v;
+  v.precision(3);
+  v << "Partly uncorrectable: " << 100 * share << " % of the sum of squares is a shape "
+    << (locked.empty() ? "no axis polynomial produces (such as a second-degree shape along the radius)"
+                       : "the axes left free do not produce (" + locked + " locked)")
+    << "; it stays in the residual" << residual << ".";
+  if (!locked.empty()) v << " Unlocking " << locked << " may correct part of it.";
+  // Not every shape no axis makes is the wheel's (one that changes along the gash is not): the
+  // wheel correction decides the split (wheel_correction.h).
+  v << " A shape along the radius is the wheel profile's: the wheel correction (correction options) says how much of "
+       "it a dressing removes; a shape that changes along the gash is neither the axes' nor the wheel's (check the "
+       "measurement).";
+  return v.str();
+}
+
 Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials& runAxes,
                                    const Eigen::MatrixXd& measured, const CorrectionOptions& o) {
   // The face's shape: the grid, or one column of probe points (ground_face.h).
@@ -138,13 +177,13 @@ Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials&
   c.uncorrectableShare = c.before.sse > 0 ? c.after.sse / c.before.sse : 0.0;
   std::ostringstream v;
   v.precision(3);
-  if (c.uncorrectableShare <= o.correctableShare) {
+  if (c.coefficients.empty()) {
+    v << allLockedText(c.before.rms);
+  } else if (c.uncorrectableShare <= o.correctableShare) {
     v << "Correctable: the axes can cancel the measured deviation (predicted sum of squares "
       << c.after.sse << " µm², from " << c.before.sse << " µm²).";
   } else {
-    v << "Partly uncorrectable: " << 100 * c.uncorrectableShare
-      << " % of the sum of squares is a shape no axis polynomial produces (such as a second-degree "
-         "shape along the radius); it stays in the residual. Correct the wheel profile to remove it.";
+    v << uncorrectableText(c.uncorrectableShare, lockedText(runAxes.degree(), o), "");
   }
   c.verdict = v.str();
   return c;

@@ -140,6 +140,19 @@ struct Correction {
 std::array<double, kAxisCount> axisChangeOver(const AxisPolynomials& proposed, const AxisPolynomials& run,
                                               const MotionRange& range);
 
+// The coefficients `o` locks at `degree`, in words: "Y" where the whole axis is, "Y a2, Y a3" where
+// part of it is; "" without locks.
+std::string lockedText(int degree, const CorrectionOptions& o);
+
+// The verdict where every coefficient is locked: no change, and why (`rms`, the face measured, µm).
+std::string allLockedText(double rms);
+
+// The verdict for a face the free axes do not make (uncorrectableShare above correctableShare):
+// "Partly uncorrectable: 42 % of the sum of squares is a shape no axis polynomial produces …;
+// it stays in the residual<residual>." and what may remove it: the locked axes (`locked`,
+// lockedText), and a dressing only for a shape along the radius (the wheel correction decides).
+std::string uncorrectableText(double share, const std::string& locked, const std::string& residual);
+
 // The paper's single linear step (Eq. 17), with the linear prediction in `after`.
 Outcome<Correction> correctionStep(const GroundFace& run, const AxisPolynomials& runAxes,
                                    const Eigen::MatrixXd& measured, const CorrectionOptions& options);

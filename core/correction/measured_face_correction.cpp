@@ -59,7 +59,10 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
   // An identification that stalled or ran out of iterations, in a word.
   const bool unfinished = c.summary.status == SolveStatus::Stalled || c.summary.status == SolveStatus::NoConvergence;
   const char* how = c.summary.status == SolveStatus::Stalled ? "stalled" : "did not converge";
-  if (c.runKept) {
+  const std::string locked = lockedText(c.axes.degree(), o);
+  if (c.coefficients.empty()) {
+    v << allLockedText(c.before.rms);
+  } else if (c.runKept) {
     v << "No change proposed: the correction found would leave a sum of squares of " << squaresText(c.discardedSse)
       << " µm², more than the " << squaresText(c.before.sse) << " µm² measured, so the axes run stay as they are.";
   } else if (c.stop) {
@@ -89,10 +92,7 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
       << (withinNoise && c.uncorrectableShare > o.correctableShare ? " to within twice the probe noise (rms)" : "")
       << "; " << leaves << ".";
   } else {
-    v << "Partly uncorrectable: " << 100 * c.uncorrectableShare
-      << " % of the sum of squares is a shape no axis polynomial produces (such as a second-degree "
-         "shape along the radius); it stays in the residual: "
-      << leaves << ". Correct the wheel profile to remove it.";
+    v << uncorrectableText(c.uncorrectableShare, locked, ": " + leaves);
   }
   return v.str();
 }
