@@ -85,6 +85,56 @@ TEST(Prediction, NoiseFreeTheBoundIsTight) {
   EXPECT_EQ(c.summary.status, SolveStatus::Converged) << c.summary.reason;
 }
 
+// A bound below the pass's floor (the face rms that quantising each axis position to its step
+// causes, machine_resolution.h): the verdict names the floor too, since no pass goes below it
+// (docs/conventions.md); with a resolution a thousand times finer the floor lies below the bound and
+// the verdict quotes the bound alone.
+TEST(Prediction, ABoundBelowThePassFloorIsQuotedWithTheFloor) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials error = inSpanError(job, 1e4, 7);
+  const Eigen::MatrixXd measured = topographyFor(job, withMachineError(job.nominalAxes, error)).normal;
+  const Correction c = corrected(job, measured, 1e-4);
+  ASSERT_LT(c.predictedRmsHigh, c.resolutionFloor) << "the defaults (0.1 µm, 0.0001 deg) set about 0.03 µm";
+  const std::string lead = "sets a floor of about ";
+  const size_t at = c.verdict.find(lead);
+  ASSERT_NE(at, std::string::npos) << c.verdict;
+  EXPECT_NEAR(std::stod(c.verdict.substr(at + lead.size())), c.resolutionFloor, 5e-3 * c.resolutionFloor) << c.verdict;
+  expectQuotesTheBoundAlone(c);
+
+  SharpeningJob fine = job;
+  for (double& step : fine.correction.resolution.step) step *= 1e-3;
+  const Correction f = corrected(fine, measured, 1e-4);
+  ASSERT_GT(f.predictedRmsHigh, f.resolutionFloor);
+  EXPECT_EQ(f.verdict.find("floor"), std::string::npos) << f.verdict;
+}
+
+// Locked axes (correction options) are not a shape "no axis polynomial produces": with the paper's
+// error measured (in the span of every axis), every axis locked proposes no change and says so;
+// all but B a0 and a1 locked leave a shape those two do not make, and the verdict names the locks
+// and points to them, not to the wheel alone.
+TEST(Prediction, LockedAxesAreNamedNotBlamedOnTheFace) {
+  const SharpeningJob job = jobOf(paperCase());
+  const AxisPolynomials error = inSpanError(job, 1e4, 7);
+  const Eigen::MatrixXd measured = topographyFor(job, withMachineError(job.nominalAxes, error)).normal;
+  SharpeningJob locked = job;
+  locked.correction.lockedAxes = {Axis::X, Axis::Y, Axis::Z, Axis::A, Axis::B};
+  const Correction all = corrected(locked, measured, 0.01);
+  EXPECT_EQ(all.verdict.rfind("No change proposed: every axis is locked", 0), 0u) << all.verdict;
+  EXPECT_EQ(all.change.size(), 0);
+
+  locked.correction.lockedAxes = {Axis::X, Axis::Y, Axis::Z, Axis::A};
+  locked.correction.locked = {Coefficient{Axis::B, 2}, Coefficient{Axis::B, 3}, Coefficient{Axis::B, 4}};
+  const Correction some = corrected(locked, measured, 0.01);
+  ASSERT_GT(some.uncorrectableShare, locked.correction.correctableShare);
+  EXPECT_EQ(some.verdict.rfind("Partly uncorrectable:", 0), 0u) << some.verdict;
+  EXPECT_NE(some.verdict.find("the axes left free do not produce (X, Y, Z, A, B a2, B a3, B a4 locked)"), std::string::npos)
+      << some.verdict;
+  EXPECT_NE(some.verdict.find("Unlocking X, Y, Z, A, B a2, B a3, B a4 may correct part of it"), std::string::npos) << some.verdict;
+  EXPECT_EQ(some.verdict.find("no axis polynomial produces"), std::string::npos) << some.verdict;
+  EXPECT_EQ(some.verdict.find("Correct the wheel profile to remove it"), std::string::npos) << some.verdict;
+  EXPECT_EQ(lockedText(4, CorrectionOptions{}), "");
+}
+
 // uncertain() (correction.h) on a hand-built correction: a bound above the face measured, any
 // sampled error with which part of the face stays unground, or a point near a fold; none when the run is kept or the
 // verdict says stop (no change is proposed).
