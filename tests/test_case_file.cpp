@@ -143,6 +143,8 @@ const Rule kRules[] = {
     // A geometry for which a grid point cannot be solved: the message names r and x.
     {"UnsolvableGridPoint", [](Json& j) { j["axes"] = {{"X", {222.4, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}}; }, "grid", "cannot be solved at the grid point r = 19 mm, x = -70 mm"},
     // Correction options.
+    {"GashDeviationsNotOnePerGash", [](Json& j) { j["hob"]["gashes"] = 12; j["inspection"] = {{"gashDeviations", {0, 1.5, -2}}}; },
+     "inspection.gashDeviations", "needs one deviation per gash: the hob has 12 gashes (hob.gashes); got 3."},
     {"LockedUnknown", [](Json& j) { j["correction"] = {{"locked", {"Q a0"}}}; }, "correction.locked", "write a coefficient as"},
     {"LockedBeyondDegree", [](Json& j) { j["correction"] = {{"locked", {"X a6"}}}; }, "correction.locked", "beyond the polynomial degree"},
     {"TruncationOutOfRange", [](Json& j) { j["correction"] = {{"truncation", 2}}; }, "correction.truncation", "between 0 and 1"},

@@ -98,7 +98,9 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   // A dressed wheel as well (wheel.profileOffset: the contact range is R = 29.53 to 50.0 mm).
   CaseInput withWheel = measuredCase();
   withWheel.wheelProfileOffset = WheelPointsInput{{30, 40, 49.9}, {1, -1, 0.5}};
-  withWheel.hob.relief = HobReliefInput{12, 4.5, std::nullopt};  // and the gear effect
+  withWheel.hob.relief = HobReliefInput{12, 4.5, std::nullopt};  // and the gear effect, of 12 gashes:
+  for (double shift : {1.0, 0.0, 1.5, -2.0, 0.5, 0.0, 1.0, -1.0})  // one topography per gash
+    withWheel.inspection.gashTopographies.push_back(withWheel.measured->array() + shift);
   withWheel.correction.wheel = true;  // and the wheel-profile correction's fields
   const Json j = Json::parse(resultJson(evaluated(withWheel)));
   std::set<std::string> written;

@@ -26,7 +26,9 @@ struct InspectionPlan {
 };
 
 // The case's `inspection` (checkInspectionInput) with its gash topographies checked against the
-// grid, the refusal naming the inspection.* field; `normalModule` is hob.normalModule (mm).
-Outcome<InspectionPlan> inspectionPlan(const InspectionInput& in, double normalModule, const FaceGrid& grid);
+// grid, the refusal naming the inspection.* field; `normalModule` is hob.normalModule (mm). Where
+// the hob's gashes are given (hob.gashes, z), the gashes given must be z: one per gash.
+Outcome<InspectionPlan> inspectionPlan(const InspectionInput& in, double normalModule, const FaceGrid& grid,
+                                       std::optional<int> gashes = std::nullopt);
 
 }  // namespace hobsharp

@@ -116,7 +116,7 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
     return refuse("correction.wheel", "is not available for measured points off the grid yet: give the points at the "
                                       "grid's positions (or the grid as `measured`) to correct the wheel too.");
 
-  auto inspection = inspectionPlan(in.inspection, in.hob.normalModule, job.grid);
+  auto inspection = inspectionPlan(in.inspection, in.hob.normalModule, job.grid, in.hob.relief.gashes);
   if (!inspection) return inspection.error();
   job.inspection = std::move(inspection).value();
   job.gear = gearPlan(in.hob);
