@@ -20,7 +20,8 @@ test('every listed field is in the result of a measured case, and nothing else i
   const c = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
   c.measured = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (__, j) => (i - 2) * (j - 4) * 0.1));
   // With one topography per gash, so that the inspection's spacing and per-gash fields are there too.
-  c.inspection = { gashTopographies: [0, 1.5, -2, 0.5].map((d) => c.measured.map((row) => row.map((v) => v + d))) };
+  // (one per gash of the hob's 12, below)
+  c.inspection = { gashTopographies: [0, 1.5, -2, 0.5, 1, 0, 1.5, -2, 0.5, 1, 0, -1].map((d) => c.measured.map((row) => row.map((v) => v + d))) };
   // A dressed wheel, so that the wheel offset's fields are there too (contact range R 29.53 to 50.0 mm).
   c.wheel.profileOffset = { R: [30, 40, 49.9], offset: [1, -1, 0.5] };
   // The hob's relief, so that the gear effect's fields are there too.
