@@ -62,6 +62,11 @@ test('a record of the job: its inputs, the measured grid, the verdict, the figur
   assert.deepEqual(numbers(lines[predicted + 2]), r.correction.residual[0]);
   assert.equal(resultsFileName(caseObject, new Date('2026-11-23T10:00:00Z')), `hobsharp-m${paper.hob.normalModule}-helical-right-2026-11-23.csv`);
   assert.equal(resultsFileName({ hob: { normalModule: 4, gash: 'straight' } }, new Date('2026-01-02T00:00:00Z')), 'hobsharp-m4-straight-2026-01-02.csv');
+  // A module typed or loaded to 15 digits is named to 4 significant ones, as a hob is (not m8.11031724285288).
+  const day = new Date('2026-12-07T10:00:00Z');
+  assert.equal(resultsFileName({ hob: { normalModule: 8.11031724285288, gash: 'helical', hand: 'left' } }, day), 'hobsharp-m8.11-helical-left-2026-12-07.csv');
+  assert.equal(resultsFileName({ hob: { normalModule: 0.125, gash: 'straight' } }, day), 'hobsharp-m0.125-straight-2026-12-07.csv');
+  assert.equal(resultsFileName({ hob: { normalModule: 12.75, gash: 'straight' } }, day), 'hobsharp-m12.75-straight-2026-12-07.csv');
 });
 
 test('semicolons with decimal commas, read back by the measured grid import', () => {

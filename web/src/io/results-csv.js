@@ -5,7 +5,7 @@
 // a decimal point, or a semicolon and a decimal comma (style 'semicolon') as a German
 // spreadsheet reads them. The figures' labels and units are the module's (result-fields.js).
 import { AXES, coefficientUnit } from '../limits.js';
-import { motionUnit } from '../format.js';
+import { fmt, motionUnit } from '../format.js';
 import { FACE_FIGURES } from '../figures.js';
 import { FLANKS, gearEffectRows, hasGearEffect } from '../gear-effect-figures.js';
 import { fieldLabel, fieldMeaning, fieldUnit, unitText } from '../result-fields.js';
@@ -15,10 +15,12 @@ import { inputRows } from './input-rows.js';
 
 const BOM = '\uFEFF';
 
-// A name for the file from the job and the day: hobsharp-m8-helical-right-2026-11-23.csv.
+// A name for the file from the job and the day: hobsharp-m8-helical-right-2026-11-23.csv. The
+// module to 4 significant digits (m8.11, not a derived case's m8.11031724285288).
 export function resultsFileName(caseObject, date = new Date()) {
   const h = (caseObject && caseObject.hob) || {};
-  const job = [h.normalModule !== undefined ? `m${h.normalModule}` : '', h.gash || 'helical',
+  const m = h.normalModule;
+  const job = [m === undefined ? '' : `m${typeof m === 'number' && Number.isFinite(m) ? fmt(m, 4) : m}`, h.gash || 'helical',
     (h.gash || 'helical') === 'straight' ? '' : h.hand || 'right'].filter(Boolean).join('-');
   return `hobsharp-${job}-${date.toISOString().slice(0, 10)}.csv`;
 }
