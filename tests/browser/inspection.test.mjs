@@ -7,7 +7,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
-import { afterError, afterResult, base, ON_DEMAND, openPage, root, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, dataCase, ON_DEMAND, openPage, root, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 
@@ -86,6 +86,41 @@ test('the class with its conformity and the proven class lead, above the maps; s
     .map((s) => [s, document.querySelector(s).getBoundingClientRect().right]).filter(([, right]) => right > 390));
   assert.deepEqual(overflow, [], 'nothing runs past the screen');
   await shot(page, '#inspection', 'inspection-390.png');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('nothing measured: the simulated face\'s class, with no conformity and no proven class, on the page and in the report', async () => {
+  let page = await openPage(base, { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
+  // The class of the simulated face (after "Use as next run", the face the proposal grinds without the error).
+  const NOTHING = (k) => `Class ${k} on the simulated face (nothing measured: no conformity is decided)`;
+  const decided = async () => page.$$eval('#inspection-table tbody tr', (trs) => trs.map((r) => [r.dataset.check, r.children[3].textContent, r.children[4].textContent]));
+  const check = async (what, k = 'AA') => {
+    assert.equal(await page.textContent('#inspection-lead'), NOTHING(k), what);
+    assert.equal(await page.getAttribute('#inspection-lead .lead-box', 'data-conformity'), 'not decided', what);
+    assert.equal(await page.textContent('#report-inspection'), `Rake face (DIN 3968): ${NOTHING(k)}.`, what);
+    assert.match(await page.textContent('#report-verdict'), new RegExp(`^Class ${k} on the simulated face, no conformity decided; face .* simulated for the axes run; nothing measured, no correction\\.$`), what);
+    // Per check too: no conformity, no proven grade, said why.
+    for (const [name, conformity, proven] of await decided()) {
+      assert.deepEqual([conformity, proven], ['—', '—'], `${what}: ${name}`);
+    }
+    assert.match(await page.getAttribute('#inspection-table tr[data-check="radialAlignment"] td:nth-child(4)', 'title'), /simulated face: nothing of it is measured/);
+  };
+  // The page as it opens (the paper's example).
+  await check('opened');
+  await page.locator('#summary').screenshot({ path: path.join(shots, 'inspection-simulated-summary.png') });
+  // A case whose face lies past the wheel's edge, nothing measured.
+  await afterResult(page, () => page.setInputFiles('#load-case', dataCase('wheel-edge.json')));
+  await check('wheel-edge.json');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+  // A measured face decides; "Use as next run" leaves the next face unmeasured, so nothing is decided.
+  page = await openPage(link({ ...paper, measured }), { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
+  assert.match(await page.textContent('#inspection-lead'), /^Class \w+ — (conforms|undecided|does not conform) \(ISO 14253-1, U95 = 2 µm\)/);
+  await afterResult(page, () => page.click('#next-run'));
+  // The proposal ground without the error: the simulated face's class is A here.
+  await check('after "Use as next run"', 'A');
+  await page.locator('#summary').screenshot({ path: path.join(shots, 'inspection-simulated-next-run.png') });
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

@@ -74,8 +74,10 @@ test("the report's verdict line: the class with its conformity, the face's rms b
   const unitOf = (p) => fieldUnit(p) || '';
   const nominal = hobsharp.evaluate(paper);
   const line = verdictLine(nominal, unitOf);
-  assert.match(line, /^Class (AA|A|B|C|D) — (conforms|undecided|does not conform); face (below 0\.001|[\d.]+) µm rms simulated for the axes run; nothing measured, no correction\.$/);
-  assert.ok(line.startsWith(`Class ${nominal.inspection.class} — ${nominal.inspection.conformity};`), line);
+  // Nothing measured: the simulated face's class, with no conformity decided on it.
+  assert.match(line, /^Class (AA|A|B|C|D) on the simulated face, no conformity decided; face (below 0\.001|[\d.]+) µm rms simulated for the axes run; nothing measured, no correction\.$/);
+  assert.ok(line.startsWith(`Class ${nominal.inspection.class} on the simulated face`), line);
+  assert.doesNotMatch(line, /conforms|proven/);
   // A measured face: a what-if's Z offset of 10 µm, noise-free.
   const radial = paper.grid.radial, axial = paper.grid.axial;
   const measured = Array.from({ length: radial }, (_, i) => Array.from({ length: axial }, (_, j) => 3 + 0.5 * i - 0.2 * j));
@@ -129,7 +131,13 @@ test("the report's head: the rake face's class with its conformity and the prove
   const c = structuredClone(paper);
   c.hob.normalModule = 5;  // pitch jump -20 µm against AA 20 µm: undecided with U95 = 2 µm, proven A
   const line = reportInspectionLine(hobsharp.evaluate({ ...c, inspection: { gashDeviations: d } }).inspection);
-  assert.equal(line, 'Rake face (DIN 3968): Class AA — undecided (ISO 14253-1, U95 = 2 µm); proven class A.');
+  assert.equal(line, 'Rake face (DIN 3968): Class AA on the simulated face (the face is not measured: no conformity is decided).');
+  // A measured face: the conformity and the proven class.
+  const measured = Array.from({ length: c.grid.radial }, () => Array(c.grid.axial).fill(0));
+  assert.equal(reportInspectionLine(hobsharp.evaluate({ ...c, measured, inspection: { gashDeviations: d } }).inspection),
+    'Rake face (DIN 3968): Class AA — undecided (ISO 14253-1, U95 = 2 µm); proven class A.');
+  // Nothing measured: the simulated face's class, nothing proven.
+  assert.equal(reportInspectionLine(hobsharp.evaluate(paper).inspection), 'Rake face (DIN 3968): Class AA on the simulated face (nothing measured: no conformity is decided).');
   const outside = hobsharp.evaluate({ ...paper, inspection: { tolerances: { moduleBands: [1, 2], checks: { pitchJump: { AA: [5] } } } } }).inspection;
   assert.match(reportInspectionLine(outside), /^Rake face \(DIN 3968\): Not graded: cutting-face form, radial alignment, gash lead \(/);
   assert.equal(reportInspectionLine(undefined), '');

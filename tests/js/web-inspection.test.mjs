@@ -48,6 +48,7 @@ test('the class leads with its conformity and the proven class; side by side whe
   d[2] = 10;
   const c = structuredClone(paper);
   c.hob.normalModule = 5;
+  c.measured = grid(() => 0);  // a measured face: the conformity is decided on it
   const i = hobsharp.evaluate({ ...c, inspection: { gashDeviations: d } }).inspection;
   const lead = classLead(i);
   assert.equal(lead.graded, true);
@@ -59,6 +60,30 @@ test('the class leads with its conformity and the proven class; side by side whe
   assert.equal(exact.same, true);
   assert.equal(exact.text, 'Class AA — conforms (ISO 14253-1, U95 = 0 µm); proven class AA');
   assert.equal(classLead(undefined), null);
+});
+
+test('on the simulated face the class decides nothing: no conformity, no proven class, none per check', () => {
+  // Nothing measured: the face inspected is the one simulated for the axes run.
+  const i = hobsharp.evaluate(paper).inspection;
+  assert.equal(i.source, 'simulated');
+  const lead = classLead(i);
+  assert.equal(lead.simulated, true);
+  assert.equal(lead.text, `Class ${i.class} on the simulated face (nothing measured: no conformity is decided)`);
+  assert.doesNotMatch(lead.text, /conforms|proven|ISO 14253/);
+  assert.equal(lead.provenText, '');
+  assert.ok(inspectionRows(i).filter((r) => r.grade !== 'not graded').every((r) => r.decided === false));
+  // Gash deviations given are measured: their checks decide; the face's do not, nor does the class.
+  const d = Array(12).fill(0);
+  d[2] = 10;
+  const withGashes = hobsharp.evaluate({ ...paper, inspection: { gashDeviations: d } }).inspection;
+  assert.equal(classLead(withGashes).text, `Class ${withGashes.class} on the simulated face (the face is not measured: no conformity is decided)`);
+  const rows = inspectionRows(withGashes);
+  assert.deepEqual(rows.map((r) => [r.check, r.decided]), [['cuttingFaceForm', false], ['radialAlignment', false], ['gashLead', false],
+    ['adjacentSpacing', true], ['pitchJump', true]]);
+  // A measured face decides as before.
+  const measured = classLead(hobsharp.evaluate({ ...paper, measured: grid(() => 1), correction: { probeNoise: 1e-4 } }).inspection);
+  assert.equal(measured.simulated, false);
+  assert.match(measured.text, /^Class \w+ — (conforms|undecided|does not conform) \(ISO 14253-1, U95 = 2 µm\); proven class/);
 });
 
 test('the warning names the checks whose U95 exceeds a tenth of their tolerance', () => {

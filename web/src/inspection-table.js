@@ -8,13 +8,19 @@ import { fixed, fmt, signed, withUnit } from './format.js';
 import { unitText } from './result-fields.js';
 
 // The checks DIN 3968 grades, in the order the table shows them.
+// The spacing checks come from the gashes' deviations; the others from the face inspected.
 export const CHECK_WORDS = {
   cuttingFaceForm: { label: 'cutting-face form' },
   radialAlignment: { label: 'radial alignment' },
   gashLead: { label: 'gash lead' },
-  adjacentSpacing: { label: 'single pitch (adjacent spacing)', short: 'single pitch' },
-  pitchJump: { label: 'pitch jump' },
+  adjacentSpacing: { label: 'single pitch (adjacent spacing)', short: 'single pitch', spacing: true },
+  pitchJump: { label: 'pitch jump', spacing: true },
 };
+
+// The face inspected is the one simulated for the axes run (inspection.source): nothing of it is
+// measured, so no conformity (ISO 14253-1) is decided and no class proven on it.
+export const onSimulatedFace = (inspection) => Boolean(inspection) && inspection.source === 'simulated';
+export const SIMULATED_NOTE = 'the simulated face: nothing of it is measured, so no conformity is decided';
 
 export const SERIES_NOTE = 'series value, not confirmed: enter the hob maker\'s table';
 const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
@@ -33,19 +39,27 @@ export function gradeTolerance(c) {
 }
 
 // The class and its conformity, the lead of the inspection:
-// {graded, same, klass, conformity, proven, text, classText, provenText}. `text` is one line:
-// "Class A — conforms (ISO 14253-1, U95 = 2 µm); proven class A". When the proven class differs,
-// classText and provenText are the two halves the page shows side by side.
+// {graded, simulated, same, klass, conformity, proven, text, classText, provenText}. `text` is one
+// line: "Class A — conforms (ISO 14253-1, U95 = 2 µm); proven class A". When the proven class
+// differs, classText and provenText are the two halves the page shows side by side. On the
+// simulated face the class alone, said to be the simulated face's, with no conformity and no
+// proven class: "Class AA on the simulated face (nothing measured: no conformity is decided)".
 export function classLead(inspection, unitOf = unitText) {
   if (!inspection) return null;
   const klass = inspection.class, proven = inspection.provenClass, conformity = inspection.conformity;
   if (klass === 'not graded') {
-    return { graded: false, same: true, klass, conformity, proven, text: 'Not graded', classText: 'Not graded', provenText: '' };
+    return { graded: false, simulated: false, same: true, klass, conformity, proven, text: 'Not graded', classText: 'Not graded', provenText: '' };
+  }
+  if (onSimulatedFace(inspection)) {
+    // Gash deviations given are measured, the face is not: the class rests on both.
+    const spacing = Object.keys(inspection.checks || {}).some((k) => (CHECK_WORDS[k] || {}).spacing);
+    const text = `Class ${klass} on the simulated face (${spacing ? 'the face is not measured' : 'nothing measured'}: no conformity is decided)`;
+    return { graded: true, simulated: true, same: true, klass, conformity: 'not decided', proven: null, text, classText: text, provenText: '' };
   }
   const u = withUnit(fmt(inspection.uncertainty, 3), unitOf('inspection.uncertainty'));
   const classText = `Class ${klass} — ${conformity} (ISO 14253-1, U95 = ${u})`;
   const provenText = proven === 'none' ? 'proven class: none' : `proven class ${proven}`;
-  return { graded: true, same: proven === klass, klass, conformity, proven, text: `${classText}; ${provenText}`, classText, provenText };
+  return { graded: true, simulated: false, same: proven === klass, klass, conformity, proven, text: `${classText}; ${provenText}`, classText, provenText };
 }
 
 // "Rake face (DIN 3968, module band over 6.3 to 10 mm, measured face): class A (limited by the
@@ -118,7 +132,8 @@ export function cumulativeText(inspection, unitOf = unitText) {
 }
 
 // One row per check computed: {check, label, unit, value, grade, gradeText, conformity, proven,
-// provenText, confidence, series, source, uncertainty, tolerances, after: {value, grade} | null}.
+// provenText, decided, confidence, series, source, uncertainty, tolerances, after: {value, grade} | null}.
+// decided: false for a check of the simulated face, whose conformity and proven grade are no decision.
 // gradeText is the grade with a * when its tolerance is a series value, and provenText the proven
 // class with a * when the tolerance it rests on is one (known from the table's cells, or the
 // grade's own when it is the same class). With the table in use and the band
@@ -136,6 +151,7 @@ export function inspectionRows(inspection, { unitOf = unitText, confidenceOf = n
       check: k, label: label(k), unit: unitOf(`inspection.${k}`), value: num(c.value), grade: c.grade,
       gradeText: `${c.grade}${series ? '*' : ''}`,
       conformity: c.conformity, proven: graded ? c.provenGrade : '',
+      decided: !(onSimulatedFace(inspection) && !CHECK_WORDS[k].spacing),
       provenText: !graded ? '' : `${c.provenGrade}${c.provenGrade === 'none' ? ''
         : confidenceOf ? star(c.provenGrade) : c.provenGrade === c.grade && series ? '*' : ''}`,
       confidence: c.confidence || '', series,

@@ -22,7 +22,8 @@ export function reportDateLine(caseObject, date = new Date()) {
 
 // The inspection's line in the report's head: the class with its conformity and the proven class,
 // "Rake face (DIN 3968): Class A — conforms (ISO 14253-1, U95 = 2 µm); proven class A." ('' without
-// an inspection). The verdict's sentence and the checks lead the topography's page.
+// an inspection); on the simulated face its class with no decision (inspection-table.js, classLead).
+// The verdict's sentence and the checks lead the topography's page.
 export function reportInspectionLine(inspection) {
   const lead = classLead(inspection);
   if (!lead) return '';
@@ -31,12 +32,14 @@ export function reportInspectionLine(inspection) {
 
 // "Class A — conforms; face 12.3 µm rms measured, at most 0.11 µm rms after the correction": the
 // rake face's class with its conformity (ISO 14253-1), then the face's rms
-// before and after. Without a measurement the face is the one simulated for the axes run; when
+// before and after. Without a measurement the face is the one simulated for the axes run, and its
+// class decides no conformity ("Class AA on the simulated face, no conformity decided"); when
 // the correction says stop, the face is within the probe noise and the axes stay; with no change
 // proposed (a run kept), the axes stay too.
 export function verdictLine(result, unitOf) {
   const lead = classLead(result && result.inspection, unitOf);
-  const head = !lead ? 'Rake face not inspected' : lead.graded ? `Class ${lead.klass} — ${lead.conformity}` : 'Rake face not graded';
+  const head = !lead ? 'Rake face not inspected' : !lead.graded ? 'Rake face not graded'
+    : lead.simulated ? `Class ${lead.klass} on the simulated face, no conformity decided` : `Class ${lead.klass} — ${lead.conformity}`;
   const c = result && result.correction;
   const before = num(c && c.rmsBefore);
   if (c && before !== null) {

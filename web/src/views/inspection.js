@@ -7,7 +7,7 @@
 // (information), what is not graded and what to enter, and the tolerances' sources.
 import { INSPECTION } from '../limits.js';
 import { escapeHtml, fixed } from '../format.js';
-import { SERIES_NOTE, classLead, cumulativeText, inspectionRows, rakeText, uncertaintyWarningText, verdictSentence } from '../inspection-table.js';
+import { SERIES_NOTE, SIMULATED_NOTE, classLead, cumulativeText, inspectionRows, rakeText, uncertaintyWarningText, verdictSentence } from '../inspection-table.js';
 import { cellConfidence, isEdited, tableInUse } from '../tolerance-edit.js';
 
 const $ = (selector) => document.querySelector(selector);
@@ -21,6 +21,8 @@ function leadHtml(lead, inspection) {
       inspection.notGraded ? ` <small>${escapeHtml(inspection.notGraded.replace(/^Not graded: /, ''))}</small>` : ''}</div>`;
   }
   const conformity = escapeHtml(lead.conformity);
+  // The simulated face: its class, and no decision (no conformity, no proven class).
+  if (lead.simulated) return `<div class="lead-box" data-part="class" data-conformity="${conformity}">${escapeHtml(lead.text)}</div>`;
   if (lead.same) {
     return `<div class="lead-box" data-part="class" data-conformity="${conformity}">${escapeHtml(lead.classText)}; <strong>${
       escapeHtml(lead.provenText)}</strong></div>`;
@@ -36,11 +38,15 @@ function rowHtml(r, after, notGraded) {
   const graded = r.grade !== 'not graded';
   const gradeTitle = !graded ? notGraded : r.series ? `${SERIES_NOTE}. ${r.source}` : '';
   const uText = r.uncertainty === null ? '' : `U95 = ${fixed(r.uncertainty, 2)} ${r.unit}: conforms within the tolerance less U, does not conform beyond it plus U.`;
+  // A check of the simulated face: no conformity, no proven grade (nothing measured).
+  const undecided = `<td title="${escapeHtml(SIMULATED_NOTE)}">—</td>`;
   const cells = [
     `<td class="num">${value(r.value, escapeHtml(r.unit))}</td>`,
     `<td class="word" data-series="${r.series}"${gradeTitle ? ` title="${escapeHtml(gradeTitle)}"` : ''}>${escapeHtml(graded ? r.gradeText : r.grade)}</td>`,
-    graded ? `<td class="word" data-conformity="${escapeHtml(r.conformity)}" title="${escapeHtml(uText)}">${escapeHtml(r.conformity)}</td>` : '<td>—</td>',
-    `<td class="word"${r.provenText.endsWith('*') ? ` title="${escapeHtml(SERIES_NOTE)}"` : ''}>${graded ? escapeHtml(r.provenText) : '—'}</td>`,
+    !graded ? '<td>—</td>' : !r.decided ? undecided
+      : `<td class="word" data-conformity="${escapeHtml(r.conformity)}" title="${escapeHtml(uText)}">${escapeHtml(r.conformity)}</td>`,
+    !graded ? '<td>—</td>' : !r.decided ? undecided
+      : `<td class="word"${r.provenText.endsWith('*') ? ` title="${escapeHtml(SERIES_NOTE)}"` : ''}>${escapeHtml(r.provenText)}</td>`,
     graded ? `<td class="word" data-confidence="${escapeHtml(r.confidence)}" title="${escapeHtml(r.source)}">${
       escapeHtml(CONFIDENCE_WORDS[r.confidence] || r.confidence)}</td>` : '<td>—</td>',
     `<td class="tolerances">${r.tolerances.split(' · ').map((t) => `<span>${escapeHtml(t)}</span>`).join(' · ')}</td>`,
@@ -74,7 +80,7 @@ function show(result, state) {
   $('#inspection-table tbody').innerHTML = rows.map((r) => rowHtml(r, after, i.notGraded)).join('');
 
   const starred = rows.filter((r) => r.series);
-  const provenStarred = rows.filter((r) => r.provenText.endsWith('*'));
+  const provenStarred = rows.filter((r) => r.decided && r.provenText.endsWith('*'));
   const anySeries = starred.length || rows.some((r) => r.tolerances.includes('*'));
   $('#inspection-series-note').hidden = !anySeries;
   $('#inspection-series-note').textContent = anySeries ? `* ${SERIES_NOTE} (the tolerance table below). ${starred.length
