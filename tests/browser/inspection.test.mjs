@@ -36,8 +36,10 @@ test('the class with its conformity and the proven class lead, above the maps; s
   await page.waitForFunction(() => window.hobsharpTimings.results > 0 && !document.querySelector('#inspection').hidden);
   // The lead: the class without the uncertainty and the proven class, side by side.
   const klass = await page.textContent('#inspection-lead [data-part="class"]');
-  assert.equal(klass, 'Class A — undecided (ISO 14253-1, U95 = 2 µm)the class without the uncertainty');
-  assert.equal(await page.textContent('#inspection-lead [data-part="proven"]'), 'Proven class Bevery graded check within its tolerance less U95');
+  // Both on series values (A's 40 µm, B's 80 µm): starred, as the table's grade and proven grade, and said under them.
+  assert.equal(klass, 'Class A* — undecided (ISO 14253-1, U95 = 2 µm)the class without the uncertainty');
+  assert.equal(await page.textContent('#inspection-lead [data-part="proven"]'), 'Proven class B*every graded check within its tolerance less U95');
+  assert.equal(await page.textContent('#inspection-lead .lead-note'), "* the class and the proven class rest on a series value, not confirmed: enter the hob maker's table");
   const [a, b] = await page.$$eval('#inspection-lead .lead-box', (els) => els.map((e) => e.getBoundingClientRect().toJSON()));
   assert.ok(Math.abs(a.top - b.top) < 1 && b.left > a.right, 'side by side at 1366 px');
   const verdict = await page.textContent('#inspection-verdict');
@@ -95,11 +97,15 @@ test('nothing measured: the simulated face\'s class, with no conformity and no p
   // The class of the simulated face (after "Use as next run", the face the proposal grinds without the error).
   const NOTHING = (k) => `Class ${k} on the simulated face (nothing measured: no conformity is decided)`;
   const decided = async () => page.$$eval('#inspection-table tbody tr', (trs) => trs.map((r) => [r.dataset.check, r.children[3].textContent, r.children[4].textContent]));
+  // k: the class, with its * when it rests on a series value (then said under it).
   const check = async (what, k = 'AA') => {
-    assert.equal(await page.textContent('#inspection-lead'), NOTHING(k), what);
+    const series = k.endsWith('*') ? "* the class rests on a series value, not confirmed: enter the hob maker's table" : '';
+    assert.equal(await page.textContent('#inspection-lead'), NOTHING(k) + series, what);
     assert.equal(await page.getAttribute('#inspection-lead .lead-box', 'data-conformity'), 'not decided', what);
-    assert.equal(await page.textContent('#report-inspection'), `Rake face (DIN 3968): ${NOTHING(k)}.`, what);
-    assert.match(await page.textContent('#report-verdict'), new RegExp(`^Class ${k} on the simulated face, no conformity decided; face .* simulated for the axes run; nothing measured, no correction\\.$`), what);
+    assert.equal(await page.textContent('#report-inspection'), `Rake face (DIN 3968): ${NOTHING(k)}${series ? ` (${series})` : ''}.`, what);
+    assert.ok((await page.textContent('#report-verdict')).startsWith(`Class ${k} on the simulated face, no conformity decided${
+      series ? ' (* on a series value, not confirmed)' : ''}; face `), what);
+    assert.match(await page.textContent('#report-verdict'), /; face .* simulated for the axes run; nothing measured, no correction\.$/, what);
     // Per check too: no conformity, no proven grade, said why.
     for (const [name, conformity, proven] of await decided()) {
       assert.deepEqual([conformity, proven], ['—', '—'], `${what}: ${name}`);
@@ -116,11 +122,27 @@ test('nothing measured: the simulated face\'s class, with no conformity and no p
   await page.context().close();
   // A measured face decides; "Use as next run" leaves the next face unmeasured, so nothing is decided.
   page = await openPage(link({ ...paper, measured }), { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
-  assert.match(await page.textContent('#inspection-lead'), /^Class \w+ — (conforms|undecided|does not conform) \(ISO 14253-1, U95 = 2 µm\)/);
+  assert.match(await page.textContent('#inspection-lead'), /^Class \w+\*? — (conforms|undecided|does not conform) \(ISO 14253-1, U95 = 2 µm\)/);
   await afterResult(page, () => page.click('#next-run'));
-  // The proposal ground without the error: the simulated face's class is A here.
-  await check('after "Use as next run"', 'A');
+  // The proposal ground without the error: the simulated face's class is A here, on A's series value.
+  await check('after "Use as next run"', 'A*');
   await page.locator('#summary').screenshot({ path: path.join(shots, 'inspection-simulated-next-run.png') });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+test('a class on a series value: the lead and the report\'s page 1 carry the * and its caveat, as the table does', async () => {
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
+  await afterResult(page, () => page.setInputFiles('#load-case', dataCase('unground-sample-pass.json')));
+  const note = "* the class and the proven class rest on a series value, not confirmed: enter the hob maker's table";
+  // The table: B* on the radial alignment's series value, proven B* too.
+  const rows = await rowsOf(page);
+  assert.deepEqual(rows.find((r) => r[0] === 'radial alignment').slice(2, 5), ['B*', 'conforms', 'B*']);
+  assert.equal(await page.textContent('#inspection-lead'), `Class B* — conforms (ISO 14253-1, U95 = 2 µm); proven class B*${note}`);
+  assert.equal(await page.textContent('#inspection-lead [data-part="series"]'), note);
+  assert.equal(await page.textContent('#report-inspection'), `Rake face (DIN 3968): Class B* — conforms (ISO 14253-1, U95 = 2 µm); proven class B* (${note}).`);
+  assert.match(await page.textContent('#report-verdict'), /^Class B\* — conforms \(\* on a series value, not confirmed\); /);
+  await page.locator('#summary-class').screenshot({ path: path.join(shots, 'inspection-series-lead.png') });
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
@@ -134,12 +156,13 @@ test('the uncertainty U95 typed: the conformity and the proven class follow, the
   const set = (text) => afterResult(page, async () => { await page.fill('#inspection-uncertainty', text); await page.dispatchEvent('#inspection-uncertainty', 'change'); });
   // A finer measurement proves the class.
   await set('0.5');
-  assert.equal(await page.textContent('#inspection-lead'), 'Class A — conforms (ISO 14253-1, U95 = 0.5 µm); proven class A');
+  assert.equal(await page.textContent('#inspection-lead'), 'Class A* — conforms (ISO 14253-1, U95 = 0.5 µm); proven class A*'
+    + "* the class and the proven class rest on a series value, not confirmed: enter the hob maker's table");
   assert.equal(await page.getAttribute('#inspection-lead .lead-box', 'data-conformity'), 'conforms');
   assert.match(decodeURIComponent(await page.evaluate(() => location.hash)), /"uncertainty":0\.5/);
   // A coarse one: the checks whose U exceeds a tenth of their tolerance named.
   await set('5');
-  assert.match(await page.textContent('#inspection-lead [data-part="class"]'), /^Class A — undecided \(ISO 14253-1, U95 = 5 µm\)/);
+  assert.match(await page.textContent('#inspection-lead [data-part="class"]'), /^Class A\* — undecided \(ISO 14253-1, U95 = 5 µm\)/);
   assert.equal(await page.textContent('#inspection-warning'), "The measurement's uncertainty U95 exceeds a tenth of the tolerance for the radial alignment (U 5 µm, tolerance A 40 µm), "
     + 'single pitch (U 5 µm, tolerance AA 25 µm) and pitch jump (U 5 µm, tolerance AA 25 µm): their class rests on a measurement too coarse for it. Measure with a smaller uncertainty.');
   await shot(page, '#inspection', 'inspection-warning.png');

@@ -125,6 +125,15 @@ test("the report's first line names the day and what was measured: a grid, the m
     'Printed 2026-11-23; with a measured topography at 2 probe points.');
 });
 
+test("the report's page 1 carries the class's * where it rests on a series value, as the inspection's table", () => {
+  const unitOf = (p) => fieldUnit(p) || '';
+  const sample = JSON.parse(readFileSync(new URL('../data/unground-sample-pass.json', import.meta.url), 'utf8'));
+  const r = hobsharp.evaluate(sample);
+  assert.match(verdictLine(r, unitOf), /^Class B\* — conforms \(\* on a series value, not confirmed\); face /);
+  assert.equal(reportInspectionLine(r.inspection), "Rake face (DIN 3968): Class B* — conforms (ISO 14253-1, U95 = 2 µm); proven class B* "
+    + "(* the class and the proven class rest on a series value, not confirmed: enter the hob maker's table).");
+});
+
 test("the report's head: the rake face's class with its conformity and the proven class", () => {
   const d = Array(12).fill(0);
   d[2] = 10;

@@ -7,7 +7,7 @@ import { readFileSync } from 'node:fs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 import { classLead, cumulativeText, inspectionRows, rakeText, uncertaintyWarningText, verdictSentence, withUnit } from '../../web/src/inspection-table.js';
 import { setResultFields } from '../../web/src/result-fields.js';
-import { cellConfidence, tableInUse, withCell } from '../../web/src/tolerance-edit.js';
+import { cellConfidence, cellConfidenceOf, tableInUse, withCell } from '../../web/src/tolerance-edit.js';
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
 const hobsharp = await loadHobSharp();
@@ -138,6 +138,30 @@ test('a grade that rests on a series value carries a *, and so do the series cel
   assert.equal(typed.checks.radialAlignment.grade, 'A');
   assert.equal(cellConfidence(tableInUse(extra, defaults), { band, check: 'radialAlignment', klass: 'B', edited: true }), 'series', 'the others keep their marks');
   assert.equal(cellConfidence(tableInUse(extra, defaults), { band, check: 'pitchJump', klass: 'AA', edited: true }), 'printed');
+});
+
+test('a class and a proven class that rest on a series value carry its * and say so in the lead', () => {
+  // The sample pass: the radial alignment graded B on B's series value, proven B on the same.
+  const sample = JSON.parse(readFileSync(new URL('../data/unground-sample-pass.json', import.meta.url), 'utf8'));
+  const i = hobsharp.evaluate(sample).inspection;
+  assert.equal(i.class, 'B');
+  assert.equal(i.checks.radialAlignment.confidence, 'series');
+  const note = "* the class and the proven class rest on a series value, not confirmed: enter the hob maker's table";
+  const rows = inspectionRows(i, { confidenceOf: cellConfidenceOf({}, hobsharp.limits().inspection.defaultTolerances, i.moduleBandIndex) });
+  for (const lead of [classLead(i), classLead(i, undefined, rows)]) {
+    assert.equal(lead.classText, 'Class B* — conforms (ISO 14253-1, U95 = 2 µm)');
+    assert.equal(lead.provenText, 'proven class B*');
+    assert.equal(lead.seriesNote, note);
+    assert.equal(lead.text, `Class B* — conforms (ISO 14253-1, U95 = 2 µm); proven class B* (${note})`);
+  }
+  // The table's own cell typed (entered, not a series value): no * and no note.
+  const defaults = hobsharp.limits().inspection.defaultTolerances;
+  const extra = withCell({}, defaults, { band: i.moduleBandIndex, check: 'radialAlignment', klass: 'B', text: '80' });
+  const typed = hobsharp.evaluate({ ...sample, ...extra }).inspection;
+  const typedLead = classLead(typed, undefined, inspectionRows(typed, { confidenceOf: cellConfidenceOf(extra, defaults, typed.moduleBandIndex) }));
+  assert.equal(typedLead.text, 'Class B — conforms (ISO 14253-1, U95 = 2 µm); proven class B');
+  // Printed values (the paper's face): none.
+  assert.equal(classLead(hobsharp.evaluate({ ...paper, measured: grid(() => 1), correction: { probeNoise: 1e-4 } }).inspection).seriesNote, '');
 });
 
 test('outside the table\'s bands: no after column, and not graded said in words with what to enter', () => {

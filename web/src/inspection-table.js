@@ -38,28 +38,42 @@ export function gradeTolerance(c) {
   return k >= 0 ? c.tolerances[k] : c.tolerances[c.tolerances.length - 1];
 }
 
-// The class and its conformity, the lead of the inspection:
-// {graded, simulated, same, klass, conformity, proven, text, classText, provenText}. `text` is one
-// line: "Class A — conforms (ISO 14253-1, U95 = 2 µm); proven class A". When the proven class
+// The class and its conformity, the lead of the inspection: {graded, simulated, same, klass,
+// conformity, proven, classStar, provenStar, seriesNote, text, classText, provenText}. `text` is
+// one line: "Class A — conforms (ISO 14253-1, U95 = 2 µm); proven class A". When the proven class
 // differs, classText and provenText are the two halves the page shows side by side. On the
 // simulated face the class alone, said to be the simulated face's, with no conformity and no
 // proven class: "Class AA on the simulated face (nothing measured: no conformity is decided)".
-export function classLead(inspection, unitOf = unitText) {
+// The class carries the * of a check it is that check's grade of, and the proven class that of a
+// check's proven grade (the table's marks, as rows give them: inspectionRows); seriesNote says
+// what the * means, and `text` carries it: "Class B* — conforms (...); proven class B* (* the
+// class and the proven class rest on a series value, not confirmed: enter the hob maker's table)".
+export function classLead(inspection, unitOf = unitText, rows = inspectionRows(inspection, { unitOf })) {
   if (!inspection) return null;
   const klass = inspection.class, proven = inspection.provenClass, conformity = inspection.conformity;
   if (klass === 'not graded') {
-    return { graded: false, simulated: false, same: true, klass, conformity, proven, text: 'Not graded', classText: 'Not graded', provenText: '' };
+    return { graded: false, simulated: false, same: true, klass, conformity, proven, classStar: false, provenStar: false, seriesNote: '',
+      text: 'Not graded', classText: 'Not graded', provenText: '' };
   }
-  if (onSimulatedFace(inspection)) {
+  const simulated = onSimulatedFace(inspection);
+  const classStar = rows.some((r) => r.grade === klass && r.series);
+  const provenStar = !simulated && proven !== 'none' && rows.some((r) => r.decided && r.proven === proven && r.provenText.endsWith('*'));
+  const rests = [classStar && 'class', provenStar && 'proven class'].filter(Boolean);
+  const seriesNote = rests.length ? `* the ${rests.join(' and the ')} ${rests.length > 1 ? 'rest' : 'rests'} on a ${SERIES_NOTE}` : '';
+  const noted = (text) => (seriesNote ? `${text} (${seriesNote})` : text);
+  const star = (on) => (on ? '*' : '');
+  if (simulated) {
     // Gash deviations given are measured, the face is not: the class rests on both.
     const spacing = Object.keys(inspection.checks || {}).some((k) => (CHECK_WORDS[k] || {}).spacing);
-    const text = `Class ${klass} on the simulated face (${spacing ? 'the face is not measured' : 'nothing measured'}: no conformity is decided)`;
-    return { graded: true, simulated: true, same: true, klass, conformity: 'not decided', proven: null, text, classText: text, provenText: '' };
+    const classText = `Class ${klass}${star(classStar)} on the simulated face (${spacing ? 'the face is not measured' : 'nothing measured'}: no conformity is decided)`;
+    return { graded: true, simulated: true, same: true, klass, conformity: 'not decided', proven: null, classStar, provenStar, seriesNote,
+      text: noted(classText), classText, provenText: '' };
   }
   const u = withUnit(fmt(inspection.uncertainty, 3), unitOf('inspection.uncertainty'));
-  const classText = `Class ${klass} — ${conformity} (ISO 14253-1, U95 = ${u})`;
-  const provenText = proven === 'none' ? 'proven class: none' : `proven class ${proven}`;
-  return { graded: true, simulated: false, same: proven === klass, klass, conformity, proven, text: `${classText}; ${provenText}`, classText, provenText };
+  const classText = `Class ${klass}${star(classStar)} — ${conformity} (ISO 14253-1, U95 = ${u})`;
+  const provenText = proven === 'none' ? 'proven class: none' : `proven class ${proven}${star(provenStar)}`;
+  return { graded: true, simulated: false, same: proven === klass, klass, conformity, proven, classStar, provenStar, seriesNote,
+    text: noted(`${classText}; ${provenText}`), classText, provenText };
 }
 
 // "Rake face (DIN 3968, module band over 6.3 to 10 mm, measured face): class A (limited by the

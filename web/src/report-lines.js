@@ -24,8 +24,9 @@ export function reportDateLine(caseObject, date = new Date()) {
 // "Rake face (DIN 3968): Class A — conforms (ISO 14253-1, U95 = 2 µm); proven class A." ('' without
 // an inspection); on the simulated face its class with no decision (inspection-table.js, classLead).
 // The verdict's sentence and the checks lead the topography's page.
-export function reportInspectionLine(inspection) {
-  const lead = classLead(inspection);
+// rows: the checks' rows with the table's series marks (inspectionRows), for the class's *.
+export function reportInspectionLine(inspection, rows) {
+  const lead = classLead(inspection, undefined, rows);
   if (!lead) return '';
   return `Rake face (DIN 3968): ${lead.graded ? `${lead.text}.` : inspection.notGraded || 'Not graded.'}`;
 }
@@ -36,10 +37,13 @@ export function reportInspectionLine(inspection) {
 // class decides no conformity ("Class AA on the simulated face, no conformity decided"); when
 // the correction says stop, the face is within the probe noise and the axes stay; with no change
 // proposed (a run kept), the axes stay too.
-export function verdictLine(result, unitOf) {
-  const lead = classLead(result && result.inspection, unitOf);
+export function verdictLine(result, unitOf, rows) {
+  const lead = classLead(result && result.inspection, unitOf, rows);
+  // A class on a series value carries its * and says so, as the inspection's table does.
+  const klass = lead ? `Class ${lead.klass}${lead.classStar ? '*' : ''}` : '';
+  const series = lead && lead.classStar ? ' (* on a series value, not confirmed)' : '';
   const head = !lead ? 'Rake face not inspected' : !lead.graded ? 'Rake face not graded'
-    : lead.simulated ? `Class ${lead.klass} on the simulated face, no conformity decided` : `Class ${lead.klass} — ${lead.conformity}`;
+    : lead.simulated ? `${klass} on the simulated face, no conformity decided${series}` : `${klass} — ${lead.conformity}${series}`;
   const c = result && result.correction;
   const before = num(c && c.rmsBefore);
   if (c && before !== null) {

@@ -117,6 +117,14 @@ export function cellConfidence(table, { band, check, klass, edited }) {
   return typeof word === 'string' ? word : edited ? 'entered' : 'printed';
 }
 
+// A cell's confidence in the table in use for the hob's band, (check, klass) => word, as the
+// inspection's rows take it (inspection-table.js, confidenceOf); null without a table or a band.
+export function cellConfidenceOf(extra, defaults, band) {
+  if (!defaults || !(band >= 0)) return null;
+  const table = tableInUse(extra, defaults), edited = isEdited(extra);
+  return (check, klass) => cellConfidence(table, { band, check, klass, edited });
+}
+
 // The measurement's uncertainty U95 typed (µm): blank is the calculator's default, so the case
 // leaves it out; a text that is not a number is kept, for the calculator to name the field.
 export const withUncertainty = (extra, text) => withInspection(extra, (i) => {

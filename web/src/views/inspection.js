@@ -8,7 +8,7 @@
 import { INSPECTION } from '../limits.js';
 import { escapeHtml, fixed } from '../format.js';
 import { SERIES_NOTE, SIMULATED_NOTE, classLead, cumulativeText, inspectionRows, rakeText, uncertaintyWarningText, verdictSentence } from '../inspection-table.js';
-import { cellConfidence, isEdited, tableInUse } from '../tolerance-edit.js';
+import { cellConfidenceOf } from '../tolerance-edit.js';
 
 const $ = (selector) => document.querySelector(selector);
 // A figure and its unit, each kept on one line; a narrow column breaks between them.
@@ -21,18 +21,25 @@ function leadHtml(lead, inspection) {
       inspection.notGraded ? ` <small>${escapeHtml(inspection.notGraded.replace(/^Not graded: /, ''))}</small>` : ''}</div>`;
   }
   const conformity = escapeHtml(lead.conformity);
+  // A class or proven class on a series value: its *, said under it.
+  const note = lead.seriesNote ? `<small data-part="series">${escapeHtml(lead.seriesNote)}</small>` : '';
   // The simulated face: its class, and no decision (no conformity, no proven class).
-  if (lead.simulated) return `<div class="lead-box" data-part="class" data-conformity="${conformity}">${escapeHtml(lead.text)}</div>`;
+  if (lead.simulated) return `<div class="lead-box" data-part="class" data-conformity="${conformity}">${escapeHtml(lead.classText)}${note}</div>`;
   if (lead.same) {
     return `<div class="lead-box" data-part="class" data-conformity="${conformity}">${escapeHtml(lead.classText)}; <strong>${
-      escapeHtml(lead.provenText)}</strong></div>`;
+      escapeHtml(lead.provenText)}</strong>${note}</div>`;
   }
   // Different: the class without the uncertainty and the class the measurement proves, side by side.
   return `<div class="lead-box" data-part="class" data-conformity="${conformity}">${escapeHtml(lead.classText)}<small>the class without the uncertainty</small></div>
     <div class="lead-box" data-part="proven" data-conformity="${lead.proven === 'none' ? 'does not conform' : 'conforms'}"><strong>${
       escapeHtml(lead.provenText.replace(/^p/, 'P'))}</strong><small>${lead.proven === 'none'
-      ? 'no class holds every graded check within its tolerance less U95' : 'every graded check within its tolerance less U95'}</small></div>`;
+      ? 'no class holds every graded check within its tolerance less U95' : 'every graded check within its tolerance less U95'}</small></div>${
+      note ? `<div class="lead-note">${note}</div>` : ''}`;
 }
+
+// The checks' rows with the series marks of the table in use (the case's, or the default).
+export const rowsOf = (inspection, extra) =>
+  inspectionRows(inspection, { confidenceOf: cellConfidenceOf(extra, INSPECTION.defaultTolerances, inspection.moduleBandIndex) });
 
 function rowHtml(r, after, notGraded) {
   const graded = r.grade !== 'not graded';
@@ -59,7 +66,8 @@ function show(result, state) {
   const i = result.inspection;
   $('#inspection').hidden = !i;
   if (!i) return;
-  const lead = classLead(i);
+  const rows = rowsOf(i, state.extra);
+  const lead = classLead(i, undefined, rows);
   $('#inspection-lead').innerHTML = leadHtml(lead, i);
   $('#inspection-lead').dataset.same = String(lead.same);
   $('#inspection-verdict').textContent = verdictSentence(i);
@@ -68,11 +76,6 @@ function show(result, state) {
   $('#inspection-warning').hidden = !warning;
   $('#inspection-rake').textContent = rakeText(i, result.gearEffect) || '';
 
-  const edited = isEdited(state.extra);
-  const table = INSPECTION.defaultTolerances ? tableInUse(state.extra, INSPECTION.defaultTolerances) : null;
-  const band = i.moduleBandIndex;
-  const confidenceOf = table && band >= 0 ? (check, klass) => cellConfidence(table, { band, check, klass, edited }) : null;
-  const rows = inspectionRows(i, { confidenceOf });
   const after = rows.some((r) => r.after);
   $('#inspection-table thead').innerHTML = `<tr><th>check</th><th>value</th><th>grade</th><th title="ISO 14253-1, with the measurement's uncertainty U95">conformity</th>
     <th title="the tightest class whose tolerance less U95 holds the value">proven</th><th title="where the tolerance the grade rests on comes from">tolerance from</th><th>class tolerances</th>${

@@ -15,6 +15,7 @@ import { axesToRun, machineCoefficients } from '../../../wasm/lib/axes-to-run.js
 import { LINK_TOO_LONG, QR_MOST_BYTES, jobRows, linkBytes, reportDateLine, reportInputRows, reportInspectionLine, verdictLine } from '../report-lines.js';
 import { fieldNames } from './field-names.js';
 import { openForPrint } from './on-demand.js';
+import { rowsOf } from './inspection.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -119,9 +120,11 @@ function printWidth(el) {
 export function mountReport(store) {
   store.on('ncProgram', ({ program }) => showReportProgram(program));
   store.on('result', ({ result, caseObject }, state) => {
-    $('#report-verdict').textContent = verdictLine(result, unitText);
+    // The class with the series marks the inspection's table shows (views/inspection.js).
+    const rows = result.inspection ? rowsOf(result.inspection, state.extra) : [];
+    $('#report-verdict').textContent = verdictLine(result, unitText, rows);
     $('#report-date').textContent = reportDateLine(caseObject);
-    $('#report-inspection').textContent = reportInspectionLine(result.inspection);
+    $('#report-inspection').textContent = reportInspectionLine(result.inspection, rows);
     renderInputs(result, caseObject);
     renderProgramAxes(state);
     // The link is written after the result (io/url.js): the code follows it.
