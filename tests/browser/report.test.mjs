@@ -11,7 +11,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import QRCode from 'qrcode';
-import { afterError, afterResult, base, openPage, openParts, pngRegions, pngStats, settled, shots, useBrowser } from './support.mjs';
+import { afterError, afterResult, base, dataCase, openPage, openParts, pngRegions, pngStats, settled, shots, useBrowser } from './support.mjs';
 
 useBrowser();
 const mmToPx = (mm) => (mm / 25.4) * 96;
@@ -145,9 +145,10 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
     const firstFlat = first.replace(/\s+/g, ' ');
     assert.match(first, /HobSharp report/);
     assert.match(first, /Printed \d{4}-\d\d-\d\d/);
-    // The verdict in one line: the class with its conformity, the face's rms measured and predicted.
+    // The verdict in one line: the class with its conformity, the verdict's word, the face's rms
+    // measured and predicted, with the condition the bound holds on when the verdict states one.
     assert.ok(firstFlat.includes(verdict), `${format}: the verdict "${verdict}" on page 1`);
-    assert.match(verdict, /^Class (AA|A|B|C|D) — (conforms|undecided|does not conform); face [\d.]+ µm rms measured, at most [\d.e-]+ µm rms after the correction\.$/);
+    assert.match(verdict, /^Class (AA|A|B|C|D)\*? — (conforms|undecided|does not conform)( \(\* on a series value, not confirmed\))?; (Correctable|Uncertain|Partly uncorrectable)[^:]*: face [\d.]+ µm rms measured, at most [\d.e-]+ µm rms after the correction( if the error the face cannot show is no larger than the one it shows)?\.$/);
     // The rake face's class with its conformity and the proven class.
     assert.match(firstFlat, /Rake face \(DIN 3968\): Class (AA|A|B|C|D) — (conforms|undecided|does not conform) \(ISO 14253-1, U95 = 2 µm\); proven class (AA|A|B|C|D|none)\./);
     // The job, by the form's labels.
@@ -218,6 +219,29 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
     assert.ok(qrBox.inked > 0.25 && qrBox.inked < 0.75, `${format}: the QR code printed: ${JSON.stringify(qrBox)}`);
     await page.emulateMedia({ media: 'screen' });
   }
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
+// Page 1's verdict line keeps the correction's verdict: its word (Uncertain), the condition the
+// bound holds on and the part of the face that may stay unground; and the class's * (a series
+// value) as the inspection's table shows it. Printed to PDF as the browser prints, page 1 rendered.
+test("page 1 carries the verdict's word, its condition and warning, and the class's series mark", async () => {
+  const page = await openPage(base, { viewport: { width: 1366, height: 900 } });
+  await afterResult(page, () => page.setInputFiles('#load-case', dataCase('unground-sample-pass.json')));
+  assert.match(await page.textContent('#verdict'), /^Uncertain: .* if the error the face cannot show is no larger than the one it shows, .*\(part of it would stay unground\)/);
+  await settled(page);
+  await page.emulateMedia({ media: 'print' });
+  const out = path.join(shots, 'report');
+  mkdirSync(out, { recursive: true });
+  const pdf = path.join(out, 'report-uncertain.pdf');
+  writeFileSync(pdf, await page.pdf({ format: 'A4', printBackground: true }));
+  const first = execFileSync('pdftotext', ['-f', '1', '-l', '1', pdf, '-'], { encoding: 'utf8' }).replace(/\s+/g, ' ');
+  assert.ok(first.includes('Class B* — conforms (* on a series value, not confirmed); Uncertain: face 149 µm rms measured, at most 106 µm rms after the correction '
+    + 'if the error the face cannot show is no larger than the one it shows; part of the face may stay unground.'), first);
+  assert.ok(first.includes("Rake face (DIN 3968): Class B* — conforms (ISO 14253-1, U95 = 2 µm); proven class B* (* the class and the proven class rest on "
+    + "a series value, not confirmed: enter the hob maker's table)."), first);
+  execFileSync('pdftoppm', ['-r', '80', '-f', '1', '-l', '1', '-png', pdf, path.join(out, 'uncertain-page')]);
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });

@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { inputRows } from '../../web/src/io/input-rows.js';
-import { jobRows, reportDateLine, reportInputRows, reportInspectionLine, verdictLine } from '../../web/src/report-lines.js';
+import { jobRows, reportDateLine, reportInputRows, reportInspectionLine, verdictLine, verdictWord } from '../../web/src/report-lines.js';
 import { fieldUnit } from '../../web/src/result-fields.js';
 import { fmt, fixed } from '../../web/src/format.js';
 import { rmsText } from '../../web/src/views/summary.js';
@@ -85,10 +85,13 @@ test("the report's verdict line: the class with its conformity, the face's rms b
   const c = r.correction;
   assert.equal(c.stop, false);
   const f = (v) => fmt(v, 3);
-  // What the pass leaves by its bound alone, not the model's figure below it.
-  assert.equal(verdictLine(r, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured, at most ${f(c.predictedRmsHigh)} µm rms after the correction.`);
+  // What the pass leaves by its bound alone, not the model's figure below it, led by the verdict's
+  // word and with the condition the bound holds on, as the verdict states them.
+  assert.match(c.verdict, /^Correctable: .* if the error the face cannot show is no larger than the one it shows\./);
+  assert.equal(verdictLine(r, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; Correctable: face ${f(c.rmsBefore)} µm rms measured, at most ${
+    f(c.predictedRmsHigh)} µm rms after the correction if the error the face cannot show is no larger than the one it shows.`);
   assert.equal(verdictLine({ ...r, correction: { ...c, runKept: true } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured: no change proposed, keep the axes run.`);
-  assert.equal(verdictLine({ ...r, correction: { ...c, predictedRmsHigh: NaN } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured.`);
+  assert.equal(verdictLine({ ...r, correction: { ...c, predictedRmsHigh: NaN } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; Correctable: face ${f(c.rmsBefore)} µm rms measured.`);
   // Within the probe noise: stop, the axes run stay.
   const quiet = hobsharp.evaluate({ ...paper, measured: measured.map((row) => row.map(() => 0.01)), correction: { probeNoise: 0.5 } });
   assert.equal(quiet.correction.stop, true);
@@ -129,9 +132,28 @@ test("the report's page 1 carries the class's * where it rests on a series value
   const unitOf = (p) => fieldUnit(p) || '';
   const sample = JSON.parse(readFileSync(new URL('../data/unground-sample-pass.json', import.meta.url), 'utf8'));
   const r = hobsharp.evaluate(sample);
-  assert.match(verdictLine(r, unitOf), /^Class B\* — conforms \(\* on a series value, not confirmed\); face /);
+  assert.match(verdictLine(r, unitOf), /^Class B\* — conforms \(\* on a series value, not confirmed\); /);
   assert.equal(reportInspectionLine(r.inspection), "Rake face (DIN 3968): Class B* — conforms (ISO 14253-1, U95 = 2 µm); proven class B* "
     + "(* the class and the proven class rest on a series value, not confirmed: enter the hob maker's table).");
+});
+
+test("the report's verdict line carries the verdict's word, the condition its bound holds on, and part of the face left unground", () => {
+  const unitOf = (p) => fieldUnit(p) || '';
+  const read = (name) => JSON.parse(readFileSync(new URL(`../data/${name}`, import.meta.url), 'utf8'));
+  // Uncertain: some errors the face cannot show keep the wheel from part of it.
+  const sample = hobsharp.evaluate(read('unground-sample-pass.json'));
+  assert.match(sample.correction.verdict, /^Uncertain: .* if the error the face cannot show is no larger than the one it shows, .*\(part of it would stay unground\)/);
+  assert.equal(verdictLine(sample, unitOf), 'Class B* — conforms (* on a series value, not confirmed); Uncertain: face 149 µm rms measured, at most 106 µm rms after the correction '
+    + 'if the error the face cannot show is no larger than the one it shows; part of the face may stay unground.');
+  // A fold near a point, and the top of the face past the wheel's edge: unground said too.
+  const edge = hobsharp.evaluate(read('wheel-edge-pass.json'));
+  assert.match(verdictLine(edge, unitOf), /; Uncertain: face [\d.]+ µm rms measured, at most [\d.]+ µm rms after the correction if the error the face cannot show is no larger than the one it shows; part of the face may stay unground\.$/);
+  // The verdict's word: what comes before its colon.
+  assert.equal(verdictWord('Partly uncorrectable: 35 % of the sum of squares ...'), 'Partly uncorrectable');
+  assert.equal(verdictWord('Correctable with the wheel: run the axes proposed ...'), 'Correctable with the wheel');
+  assert.equal(verdictWord('Identification stalled; the best estimate is proposed: the face ...'), 'Identification stalled; the best estimate is proposed');
+  assert.equal(verdictWord(''), '');
+  assert.equal(verdictWord(undefined), '');
 });
 
 test("the report's head: the rake face's class with its conformity and the proven class", () => {

@@ -31,9 +31,23 @@ export function reportInspectionLine(inspection, rows) {
   return `Rake face (DIN 3968): ${lead.graded ? `${lead.text}.` : inspection.notGraded || 'Not graded.'}`;
 }
 
-// "Class A — conforms; face 12.3 µm rms measured, at most 0.11 µm rms after the correction": the
-// rake face's class with its conformity (ISO 14253-1), then the face's rms
-// before and after. Without a measurement the face is the one simulated for the axes run, and its
+// The correction verdict's lead, before its first colon: "Correctable", "Uncertain", "Partly
+// uncorrectable", "Correctable with the wheel", ... ('' for a verdict without one).
+export function verdictWord(verdict) {
+  const m = /^([^:.]{1,80}):/.exec(String(verdict || ''));
+  return m ? m[1] : '';
+}
+// What the bound holds on, in the verdict's own words (the module's, face_prediction.cpp), and
+// its warning that part of the face may stay unground (an error it cannot show, a fold, the edge
+// of the wheel's envelope).
+const CONDITION = / if the error the face cannot show[^.;]*? is no larger than the one it shows/;
+const UNGROUND = /\bunground\b/;
+
+// "Class A — conforms; Correctable: face 12.3 µm rms measured, at most 0.11 µm rms after the
+// correction": the rake face's class with its conformity (ISO 14253-1), the verdict's lead word
+// and the face's rms before and after, the bound with the verdict's condition and warning: "...;
+// Uncertain: face 149 µm rms measured, at most 106 µm rms after the correction if the error the
+// face cannot show is no larger than the one it shows; part of the face may stay unground.". Without a measurement the face is the one simulated for the axes run, and its
 // class decides no conformity ("Class AA on the simulated face, no conformity decided"); when
 // the correction says stop, the face is within the probe noise and the axes stay; with no change
 // proposed (a run kept), the axes stay too.
@@ -51,11 +65,16 @@ export function verdictLine(result, unitOf, rows) {
     const measured = `face ${figure(before, unit)} rms measured`;
     if (c.stop === true) return `${head}; ${measured}: within the probe noise, keep the axes run.`;
     if (c.runKept === true) return `${head}; ${measured}: no change proposed, keep the axes run.`;
+    const verdict = String(c.verdict || '');
+    const word = verdictWord(verdict);
+    const warning = UNGROUND.test(verdict) ? '; part of the face may stay unground' : '';
     // What the pass leaves by its bound alone (words.js, predictionText): the model's figure below
     // it is what the pass leaves only if the identified error is all of the machine's.
     const high = num(c.predictedRmsHigh);
-    if (high === null) return `${head}; ${measured}.`;
-    return `${head}; ${measured}, at most ${figure(Math.max(high, LEAST_RMS), unitOf('correction.predictedRmsHigh'))} rms after the correction.`;
+    const lead = `${head}; ${word ? `${word}: ` : ''}${measured}`;
+    if (high === null) return `${lead}${warning}.`;
+    const condition = (CONDITION.exec(verdict) || [''])[0];
+    return `${lead}, at most ${figure(Math.max(high, LEAST_RMS), unitOf('correction.predictedRmsHigh'))} rms after the correction${condition}${warning}.`;
   }
   const simulated = num(result && result.topography && result.topography.rms);
   const face = simulated === null ? '' : `; face ${figure(simulated, unitOf('topography.rms'))} rms simulated for the axes run`;
