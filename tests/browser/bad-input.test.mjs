@@ -95,6 +95,38 @@ test('a case file whose measured grid has the wrong shape: refused once, its tex
   await page.context().close();
 });
 
+// A grid in use that no longer fits the grid lines is set aside while they differ, its refusal
+// naming the lines asked for; back on its shape it is in use again and the refusal is gone.
+test('the grid lines changed under a measured grid and back: the grid in use again, no stale refusal', async () => {
+  const c = paper();
+  c.measured = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (_, j) => 2 + 0.5 * i - 0.25 * j));
+  const page = await openPage(link(c), { viewport: { width: 1366, height: 900 }, open: ['machine-grid-details'] });
+  const radial = '[data-field="grid.radial"]';
+  const setRadial = (v) => afterResult(page, async () => { await page.fill(radial, v); await page.dispatchEvent(radial, 'change'); });
+  const measuring = async () => (await page.textContent('#summary-rms')).includes('µm measured');
+  assert.ok(await measuring(), 'the measured face is corrected');
+  await setRadial('3');
+  assert.equal(await page.textContent('#measured-error'), 'Measured grid: needs 3 rows (the radial grid lines) of 9 values (the axial grid lines); got 5 x 9.');
+  assert.match(await notice(page), /set aside, not used: .* set the grid lines back to its shape and it is used again/);
+  assert.ok(!(await measuring()));
+  // Other lines that do not fit either: the refusal names them, not the 3 rows before.
+  await setRadial('4');
+  await plotted(page);
+  assert.equal(await page.textContent('#measured-error'), 'Measured grid: needs 4 rows (the radial grid lines) of 9 values (the axial grid lines); got 5 x 9.');
+  // Back to 5 lines: the grid is in use again, corrected; nothing of the refusal stays.
+  await setRadial('5');
+  await plotted(page);
+  assert.ok(await measuring(), await page.textContent('#summary-rms'));
+  assert.equal(await page.isHidden('#measured-error'), true, await page.textContent('#measured-error'));
+  assert.equal(await page.isHidden('#notice'), true);
+  assert.doesNotMatch(await page.textContent('#inspection-lead'), /simulated/);
+  assert.match(await page.textContent('#verdict'), /^(Correctable|Uncertain|Partly uncorrectable)/);
+  assert.deepEqual(JSON.parse(decodeURIComponent(await page.evaluate(() => location.hash.slice('#case='.length)))).measured, c.measured);
+  await page.locator('#summary').screenshot({ path: path.join(shots, 'grid-lines-back.png') });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
 test('a paste larger than 2 MB is refused before it reaches the box; a small one goes in', async () => {
   const page = await openPage(undefined, { permissions: ['clipboard-read', 'clipboard-write'] });
   const paste = async (text) => {

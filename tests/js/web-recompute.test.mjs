@@ -110,3 +110,66 @@ test('a refused grid that a view replaces by the grid in use before is not set a
   assert.equal(calc.calls.length, 3, 'computed again once');
   assert.deepEqual(calc.calls[2].caseObject.measured, [[1, 2]]);
 });
+
+// A grid in use that no longer fits the grid lines (the lines changed under it) is set aside; on
+// other lines it is sent again, for the calculator to name them; back on its shape it is in use
+// again (nothing stale: the refusal named lines no longer asked for). Another measurement drops it.
+test('a grid set aside for not fitting the grid lines is used again once they are back to its shape', async () => {
+  const store = createStore();
+  const calc = standIn();
+  startRecompute(store, calc);
+  const seen = watch(store);
+  const lines = (radial) => ({ format: 'hobsharp-case/1', grid: { radial, axial: 2 } });
+  const grid = [[1, 2], [3, 4], [5, 6]];
+  const source = { name: 'probe.csv', what: '3 × 2 values', meta: {}, text: '1,2\n3,4\n5,6' };
+  store.setInputs({ form: lines(3), measured: grid, measuredSource: source }, { source: 'measured' });
+  calc.calls[0].resolve({ result: { n: 0 }, ms: 1 });
+  await settle();
+  const notFit = (k) => Object.assign(new Error(`Measured grid: needs ${k} rows (the radial grid lines) of 2 values (the axial grid lines); got 3 x 2.`),
+    { code: 'InvalidInput', field: 'measured' });
+  // 3 -> 2: refused, set aside, the rest computed without it.
+  store.setInputs({ form: lines(2) }, { source: 'form' });
+  calc.calls[1].reject(notFit(2));
+  await settle();
+  assert.equal(seen.filter(([e]) => e === 'aside').length, 1);
+  assert.equal(seen.find(([e]) => e === 'aside')[1].untilFits, true);
+  assert.equal(store.state.measured, null);
+  assert.equal(calc.calls[2].caseObject.measured, undefined);
+  calc.calls[2].resolve({ result: { n: 2 }, ms: 1 });
+  await settle();
+  // Another edit on the same lines: not sent again.
+  store.setInputs({ form: { ...lines(2), setup: { tilt: 16 } } }, { source: 'form' });
+  assert.equal(calc.calls[3].caseObject.measured, undefined, 'not resent on the lines it did not fit');
+  calc.calls[3].resolve({ result: { n: 3 }, ms: 1 });
+  await settle();
+  // 2 -> 4: sent again, so that the refusal names 4 rows, not 2.
+  store.setInputs({ form: { ...lines(4), setup: { tilt: 16 } } }, { source: 'form' });
+  assert.deepEqual(calc.calls[4].caseObject.measured, grid);
+  calc.calls[4].reject(notFit(4));
+  await settle();
+  assert.equal(seen.filter(([e]) => e === 'aside').length, 2);
+  calc.calls[5].resolve({ result: { n: 5 }, ms: 1 });
+  await settle();
+  // 4 -> 3, its shape: in use again, with its source, and the result is the measured face's.
+  store.setInputs({ form: { ...lines(3), setup: { tilt: 16 } } }, { source: 'form' });
+  assert.deepEqual(calc.calls[6].caseObject.measured, grid);
+  assert.equal(store.state.measured, grid);
+  assert.equal(store.state.measuredSource, source);
+  calc.calls[6].resolve({ result: { n: 6 }, ms: 1 });
+  await settle();
+  assert.deepEqual(store.state.result, { n: 6 });
+  assert.equal(seen.filter(([e]) => e === 'aside').length, 2, 'not set aside again');
+
+  // Set aside again, then another measurement (here "Clear"): the grid is not put back.
+  store.setInputs({ form: { ...lines(2), setup: { tilt: 16 } } }, { source: 'form' });
+  calc.calls[7].reject(notFit(2));
+  await settle();
+  calc.calls[8].resolve({ result: { n: 8 }, ms: 1 });
+  await settle();
+  store.setInputs({ measured: null }, { source: 'measured', force: true });
+  calc.calls[9].resolve({ result: { n: 9 }, ms: 1 });
+  await settle();
+  store.setInputs({ form: { ...lines(3), setup: { tilt: 16 } } }, { source: 'form' });
+  assert.equal(calc.calls[10].caseObject.measured, undefined, 'cleared: not put back');
+  assert.equal(store.state.measured, null);
+});

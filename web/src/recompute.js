@@ -3,15 +3,26 @@
 // calculation cancelled (views/cancel.js) shows nothing new: the 'cancelled' event says so.
 import { caseOf } from './store.js';
 import { isMeasuredField } from './measurement.js';
+import { GRID } from './limits.js';
 
 // The calculator refused the measured grid or its locks: an input error (code InvalidInput)
 // that names them. A fault (Internal) or a timeout says nothing about the grid, and neither does
 // a refused option of the correction (its view shows it at its input; the grid stays in use).
 const refusesMeasured = (error) => error.code === 'InvalidInput' && isMeasuredField(error.field);
 
+// The grid lines a case asks for, radial x axial (the module's default where it gives none).
+const linesOf = (c) => `${(c.grid && c.grid.radial) ?? GRID.radial}x${(c.grid && c.grid.axial) ?? GRID.axial}`;
+const shapeOf = (grid) => `${grid.length}x${(grid[0] || []).length}`;
+// Changes after which a grid set aside is not put back: another measurement, a loaded case, an undo
+// step, a pass kept.
+const DROPS_ASIDE = new Set(['measured', 'load', 'restore', 'passes']);
+
 export function startRecompute(store, calculator) {
   let running = false;
   let waiting = null;
+  // A grid in use set aside because it no longer fits the grid lines (the calculator names the whole
+  // grid: its shape), with what it was and the lines it did not fit: {measured, source, lines}.
+  let aside = null;
 
   const refused = (error, caseObject) => {
     store.refuse(error, caseObject);
@@ -21,9 +32,24 @@ export function startRecompute(store, calculator) {
     // stays in the CSV box.
     if (caseObject.measured && refusesMeasured(error) && store.state.measured === caseObject.measured) {
       store.state.measured = null;
-      store.emit('aside', { error });
+      aside = error.field === 'measured' && shapeOf(caseObject.measured) !== linesOf(caseObject)
+        ? { measured: caseObject.measured, source: store.state.measuredSource, lines: linesOf(caseObject) } : null;
+      store.emit('aside', { error, untilFits: Boolean(aside) });
       request();
     }
+  };
+
+  // Other grid lines than those the grid set aside did not fit: it is sent again. Back to its shape,
+  // it is in use again and its refusal goes with the result; on other lines the calculator's refusal
+  // names them, never the lines before. Any other measurement, a loaded case, an undo step or a pass
+  // kept drops it.
+  const putBack = ({ source }) => {
+    if (!aside) return;
+    if (DROPS_ASIDE.has(source) || store.state.measured) { aside = null; return; }
+    if (linesOf(caseOf(store.state)) === aside.lines) return;
+    store.state.measured = aside.measured;
+    store.setMeasurement({ measuredSource: aside.source });
+    aside = null;
   };
 
   async function next() {
@@ -50,7 +76,7 @@ export function startRecompute(store, calculator) {
     if (!running) next();
   }
 
-  store.on('inputs', request);
+  store.on('inputs', (detail) => { putBack(detail); request(); });
   // busy(): a case is being computed or waits to be (the tests' hobsharpTest.settled()).
   return { request, busy: () => running || waiting !== null };
 }

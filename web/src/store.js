@@ -9,7 +9,8 @@
 //   computing  a case went to the calculator: {caseObject}
 //   result     a result arrived for the newest inputs: {result, caseObject, ms}
 //   refusal    an input was refused, by the calculator or by the page: {error, caseObject}
-//   aside      a measured grid the calculator refused was set aside: {error}
+//   aside      a measured grid the calculator refused was set aside: {error, untilFits} (untilFits:
+//              it does not fit the grid lines, and is used again when they are back to its shape)
 //   cancelled  the user cancelled the calculation of these inputs: {caseObject}
 //   status     state.status changed
 //   notice     state.notice changed (a message that stays until the user changes something)

@@ -30,8 +30,10 @@ export function mountStatus(store) {
     store.setStatus(`Cancelled: nothing was computed for the inputs now in the form.${kept()}`, 'error');
     store.setNotice(`The computation was cancelled.${kept()} Change an input to compute again.`);
   });
-  store.on('aside', ({ error }) => store.setNotice(`The measured grid is set aside, not used: ${error.message} ` +
-    'Its text stays in the box under "The measured face": correct it there, or the grid, and press "Use this grid".'));
+  // A grid that does not fit the grid lines is used again once they are back to its shape (recompute.js).
+  store.on('aside', ({ error, untilFits }) => store.setNotice(`The measured grid is set aside, not used: ${error.message} ` +
+    `Its text stays in the box under "The measured face": ${untilFits ? 'set the grid lines back to its shape and it is used again, or correct it there and press "Use this grid".'
+      : 'correct it there, or the grid, and press "Use this grid".'}`));
   // A user's change ends the notice; loading a case does not.
   store.on('inputs', ({ source }) => { if (store.state.notice && source !== 'load') store.setNotice(null); });
 }
