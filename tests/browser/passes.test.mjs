@@ -100,6 +100,10 @@ test('measure, correct, use as next run, measure again; the history is saved and
   await afterResult(page, () => page.click('#next-run'));
   assert.equal(await page.isVisible('#run-axes'), true);
   assert.equal(await page.inputValue('#measured-csv'), '');
+  // The next step is the pass's, not the first open's: grind with these axes, load the new face.
+  assert.equal(await page.textContent('#first-step'), 'Grind with the axes to run below (the run axes in use), measure the face and load '
+    + 'the new measurement in step 2; the verdict, the class and the next axes to run show here.');
+  await page.locator('#summary').screenshot({ path: path.join(shots, 'passes-next-run-summary.png') });
   rows = await table(page);
   assert.deepEqual(rows.map((r) => [r[0], r[9]]), [['1', ''], ['2 (under way)', 'not measured yet']]);
   assert.equal(sseOf(rows[0], 'measured'), first, 'the kept pass, computed again from its axes and grid');

@@ -8,7 +8,7 @@ import { inputRows } from '../../web/src/io/input-rows.js';
 import { jobRows, reportDateLine, reportInputRows, reportInspectionLine, verdictLine, verdictWord } from '../../web/src/report-lines.js';
 import { fieldUnit } from '../../web/src/result-fields.js';
 import { fmt, fixed } from '../../web/src/format.js';
-import { rmsText } from '../../web/src/views/summary.js';
+import { firstStepText, rmsText } from '../../web/src/views/summary.js';
 import { setResultFields } from '../../web/src/result-fields.js';
 import { setModuleLimits } from '../../web/src/limits.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
@@ -118,6 +118,24 @@ test("the answer's rms line: after the pass the prediction's bound, never the id
   assert.equal(rmsText({ ...r, correction: { ...c, usable: false } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured.`);
   assert.equal(rmsText({ ...r, correction: { ...c, runKept: true } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured: no change proposed, the axes run stay.`);
   assert.match(rmsText({ ...r, correction: { ...c, predictedRmsHigh: 2e-4 } }, fieldUnit), /→ at most 0\.001 µm after the pass\.$/);
+});
+
+test("the answer's first line: what to do next, by where the job is", () => {
+  const nominal = hobsharp.evaluate(paper);
+  assert.match(firstStepText(nominal, paper), /^First type the hob's data at the left \(or load a case\); then load the measured face/);
+  assert.match(firstStepText(null, null), /^First type the hob's data/);
+  // After "Use as next run": the proposal is the run and a pass is kept; nothing measured yet. The
+  // hob is there: the next step is to grind with those axes and load the new measurement.
+  const radial = paper.grid.radial, axial = paper.grid.axial;
+  const measured = Array.from({ length: radial }, (_, i) => Array.from({ length: axial }, (_, j) => 3 + 0.5 * i - 0.2 * j));
+  const first = hobsharp.evaluate({ ...paper, measured, correction: { probeNoise: 0.5 } });
+  const next = { ...paper, axes: first.correction.axes, passes: [{ axes: first.axes, measured }] };
+  const text = firstStepText(hobsharp.evaluate(next), next);
+  assert.equal(text, 'Grind with the axes to run below (the run axes in use), measure the face and load the new measurement in step 2; '
+    + 'the verdict, the class and the next axes to run show here.');
+  assert.doesNotMatch(text, /type the hob/);
+  // A correction: run its axes.
+  assert.match(firstStepText(first, { ...paper, measured }), /^Run the axes below, measure the face and load it in step 2/);
 });
 
 test("the report's first line names the day and what was measured: a grid, the machine's points, or nothing", () => {

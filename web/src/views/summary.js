@@ -9,8 +9,13 @@ import { fieldUnit } from '../result-fields.js';
 
 const $ = (selector) => document.querySelector(selector);
 
-// What to do next, by where the job is: no measured face yet, or a correction to run.
-export function firstStepText(result) {
+// What to do next, by where the job is: no measured face yet, the axes of a pass to grind (run
+// axes given, as "Use as next run" gives them), or a correction to run.
+export function firstStepText(result, caseObject = null) {
+  if (result && !result.correction && caseObject && (caseObject.axes || (caseObject.passes || []).length)) {
+    return 'Grind with the axes to run below (the run axes in use), measure the face and load the new measurement in step 2; ' +
+      'the verdict, the class and the next axes to run show here.';
+  }
   if (!result || !result.correction) {
     return 'First type the hob\'s data at the left (or load a case); then load the measured face in step 2 below, ' +
       'and the verdict, the class and the axes to run show here.';
@@ -48,8 +53,8 @@ export function rmsText(result, unitOf = fieldUnit) {
 }
 
 export function mountSummary(store) {
-  store.on('result', ({ result }) => {
-    $('#first-step').textContent = firstStepText(result);
+  store.on('result', ({ result, caseObject }) => {
+    $('#first-step').textContent = firstStepText(result, caseObject);
     $('#summary-rms').textContent = rmsText(result);
     $('#summary-class').hidden = !result.inspection;
   });
