@@ -2,7 +2,7 @@
 // null where none is (a stop, a run kept, a proposal not to be used) or the bound is not a number.
 import test from 'node:test';
 import assert from 'node:assert/strict';
-import { passBound } from '../../wasm/lib/pass-bound.js';
+import { floorAboveBound, passBound } from '../../wasm/lib/pass-bound.js';
 
 test('the bound of the pass proposed, and none where no pass is proposed', () => {
   const c = { predictedRmsHigh: 0.446, predictedRms: 0.012 };
@@ -13,4 +13,13 @@ test('the bound of the pass proposed, and none where no pass is proposed', () =>
   }
   assert.equal(passBound(null), null);
   assert.equal(passBound(undefined), null);
+});
+
+test('the pass floor where it lies above the bound, and none where it lies below or no pass is proposed', () => {
+  const c = { predictedRmsHigh: 0.00575, resolutionFloor: 0.0329 };
+  assert.equal(floorAboveBound(c), 0.0329);
+  assert.equal(floorAboveBound({ ...c, predictedRmsHigh: 0.2 }), null);
+  for (const none of [{ stop: true }, { runKept: true }, { usable: false }, { resolutionFloor: NaN }, { resolutionFloor: undefined }]) {
+    assert.equal(floorAboveBound({ ...c, ...none }), null, JSON.stringify(none));
+  }
 });

@@ -117,7 +117,10 @@ test("the answer's rms line: after the pass the prediction's bound, never the id
   // A proposal not to be run: nothing after it; a bound below a nanometre reads as 0.001, not 0.000.
   assert.equal(rmsText({ ...r, correction: { ...c, usable: false } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured.`);
   assert.equal(rmsText({ ...r, correction: { ...c, runKept: true } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured: no change proposed, the axes run stay.`);
-  assert.match(rmsText({ ...r, correction: { ...c, predictedRmsHigh: 2e-4 } }, fieldUnit), /→ at most 0\.001 µm after the pass\.$/);
+  // ... and below the pass's floor (the position resolution's), the floor follows it.
+  assert.ok(c.resolutionFloor > 2e-4 && c.resolutionFloor < c.predictedRmsHigh, `floor ${c.resolutionFloor} µm`);
+  assert.match(rmsText({ ...r, correction: { ...c, predictedRmsHigh: 2e-4 } }, fieldUnit),
+    new RegExp(`→ at most 0\\.001 µm after the pass with the exact axes; the machine's position resolution sets a floor of about ${Number(c.resolutionFloor.toPrecision(3))} µm rms\\.$`));
 });
 
 test("the answer's first line: what to do next, by where the job is", () => {

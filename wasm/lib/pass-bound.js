@@ -6,3 +6,12 @@ export function passBound(c) {
   if (!c || c.stop === true || c.runKept === true || c.usable === false) return null;
   return Number.isFinite(c.predictedRmsHigh) ? c.predictedRmsHigh : null;
 }
+
+// The pass's floor (correction.resolutionFloor, µm rms on the probe grid: what quantising each axis
+// position to its step does to the face) where it lies above the bound, or null: the bound is of
+// the exact axes, and no pass goes below the floor (docs/conventions.md, Machine resolution).
+export function floorAboveBound(c) {
+  const high = passBound(c);
+  if (high === null || !c || !Number.isFinite(c.resolutionFloor)) return null;
+  return c.resolutionFloor > high ? c.resolutionFloor : null;
+}

@@ -6,6 +6,7 @@
 import { classLead } from './inspection-table.js';
 import { LEAST_RMS, faceFigure, fmt } from './format.js';
 import { inputRows } from './io/input-rows.js';
+import { floorNote } from './words.js';
 
 const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
 // An rms to 3 significant digits; below a nanometre, what no measurement tells apart from zero, as
@@ -74,7 +75,7 @@ export function verdictLine(result, unitOf, rows) {
     const lead = `${head}; ${word ? `${word}: ` : ''}${measured}`;
     if (high === null) return `${lead}${warning}.`;
     const condition = (CONDITION.exec(verdict) || [''])[0];
-    return `${lead}, at most ${figure(Math.max(high, LEAST_RMS), unitOf('correction.predictedRmsHigh'))} rms after the correction${condition}${warning}.`;
+    return `${lead}, at most ${figure(Math.max(high, LEAST_RMS), unitOf('correction.predictedRmsHigh'))} rms after the correction${condition}${floorNote(c, unitOf)}${warning}.`;
   }
   const simulated = num(result && result.topography && result.topography.rms);
   const face = simulated === null ? '' : `; face ${figure(simulated, unitOf('topography.rms'))} rms simulated for the axes run`;

@@ -3,7 +3,7 @@
 // correction's verdict.
 import { fixed, fmt, signed, withUnit } from './format.js';
 import { fieldUnit, unitText } from './result-fields.js';
-import { passBound } from '../../wasm/lib/pass-bound.js';
+import { floorAboveBound, passBound } from '../../wasm/lib/pass-bound.js';
 
 
 // The status line once the newest inputs are computed.
@@ -64,6 +64,16 @@ const rmsFigure = (v) => fmt(v, 3);
 // µm rms if the identified error is all of the machine's)." Null when there is nothing to run
 // (correction.stop, a run kept, or a proposal that is not usable), when a figure is not a finite number, or
 // when the module gives no unit.
+// After a bound below the pass's floor (floorAboveBound), the floor in words, with the module's unit:
+// " with the exact axes; the machine's position resolution sets a floor of about 0.0329 µm rms";
+// '' where the bound is above it (or there is none).
+export function floorNote(c, unitOf) {
+  const floor = floorAboveBound(c);
+  const unit = unitOf('correction.resolutionFloor');
+  if (floor === null || !unit) return '';
+  return ` with the exact axes; the machine's position resolution sets a floor of about ${rmsFigure(floor)} ${unit} rms`;
+}
+
 export function predictionText(c, unitOf) {
   const high = passBound(c);
   if (high === null || !Number.isFinite(c.predictedRms)) return null;
@@ -72,5 +82,5 @@ export function predictionText(c, unitOf) {
   if (!unit || !highUnit) return null;
   // No shape left beyond the probe's noise: say so rather than print a certain-looking 0.
   const model = rms === 0 ? 'within the probe noise' : `${rmsFigure(rms)} ${unit} rms`;
-  return `Predicted after the pass: at most ${rmsFigure(high)} ${highUnit} rms at the probe points (${model} if the identified error is all of the machine's).`;
+  return `Predicted after the pass: at most ${rmsFigure(high)} ${highUnit} rms at the probe points (${model} if the identified error is all of the machine's)${floorNote(c, unitOf)}.`;
 }

@@ -6,6 +6,7 @@
 // writes the line on what to do and the rms; the others write their own elements, which stand here.
 import { LEAST_RMS, fixed } from '../format.js';
 import { fieldUnit } from '../result-fields.js';
+import { floorNote } from '../words.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -45,7 +46,7 @@ export function rmsText(result, unitOf = fieldUnit) {
     if (c.runKept === true) return `${measured}: no change proposed, the axes run stay.`;
     if (high && Number.isFinite(c.predictedRmsHigh))
       // A bound below the least rms written reads "at most 0.001", not 0.000.
-      return `${measured} → at most ${fixed(Math.max(c.predictedRmsHigh, LEAST_RMS), 3)} ${high} after the pass.`;
+      return `${measured} → at most ${fixed(Math.max(c.predictedRmsHigh, LEAST_RMS), 3)} ${high} after the pass${floorNote(c, unitOf)}.`;
     return `${measured} → ${fixed(c.rmsAfter, 3)} ${after} after the pass if the identified error is all of the machine's.`;
   }
   const unit = unitOf('topography.rms');
