@@ -1,7 +1,7 @@
 // The page's formatting (web/src/format.js, web/src/limits.js): every number shown goes through it.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { escapeHtml, fixed, fmt, motionSymbol, motionUnit, polynomialText, signed } from '../../web/src/format.js';
+import { escapeHtml, fixed, fmt, motionSymbol, motionUnit, polynomialText, signed, rmsFixed } from '../../web/src/format.js';
 import { coefficientUnit, setModuleLimits } from '../../web/src/limits.js';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
 
@@ -23,6 +23,14 @@ test('fixed and signed round, signed marks a positive value with +, neither show
   assert.equal(signed(-0.25, 2), '-0.25');
   assert.equal(signed(0, 3), '0.000');
   for (const f of [fixed, signed]) for (const v of [NaN, Infinity, undefined]) assert.equal(f(v, 3), '—');
+});
+
+test('rmsFixed: a face rms to the nanometre below 10 µm, to 4 significant digits above, never NaN', () => {
+  assert.equal(rmsFixed(3.2149), '3.215');
+  assert.equal(rmsFixed(0.0523), '0.052');
+  assert.equal(rmsFixed(149.31), '149.3');
+  assert.equal(rmsFixed(6176.695), '6177', 'no false precision on a face of millimetres');
+  assert.equal(rmsFixed(NaN), '—');
 });
 
 test('polynomialText writes Tab. 2 the way the paper does', () => {

@@ -22,6 +22,13 @@ export function faceFigure(v, least, significant = 3) {
 // v with `digits` decimals, never "-0.000" (wasm/lib/number-text.js, shared with the file writers).
 export { fixed };
 
+// A face rms in µm for a sentence: to the nanometre (3 decimals) below 10 µm, above it to 4
+// significant digits ("149.3", "6177"): a probe tells no nanometre on a face of millimetres.
+export function rmsFixed(v) {
+  const a = Math.abs(v);
+  return fixed(v, Number.isFinite(a) && a >= 10 ? Math.max(0, 3 - Math.floor(Math.log10(a))) : 3);
+}
+
 // The same with a + on a positive value (one that does not round to zero).
 export function signed(v, digits) {
   const text = fixed(v, digits);
