@@ -60,7 +60,7 @@ test('a measured face: the prediction and its bound under the verdict, in µm rm
   assert.equal(current[0], '1 (under way)');
   assert.equal(Number(current[1]), Number(expected.rmsBefore.toPrecision(4)));
   assert.equal(next[0], '2 (next, predicted)');
-  assert.equal(next[5], `at most ${tableFigure(expected.predictedRmsHigh)} (${tableFigure(expected.predictedRms)} on the identified machine)`);
+  assert.equal(next[5], `at most ${tableFigure(Math.max(expected.predictedRmsHigh, 0.001))} (${expected.predictedRms === 0 ? 'within the probe noise' : tableFigure(expected.predictedRms)} on the identified machine)`);
   // The plot's rms panel: the noise floor at the correction's sigma, the bound as a bar.
   const traces = await rmsTraces(page);
   assert.deepEqual(traces.map((t) => t.name), ['probe noise σ 0.5 µm', 'measured', 'predicted']);

@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { STOP_WHY, historyRows, historySeries, nextRunInputs, passCase, resultFigures, resultIsCurrent } from '../../web/src/pass-history.js';
+import { STOP_WHY, historyRows, historySeries, nextRunInputs, passCase, predictedRmsText, resultFigures, resultIsCurrent } from '../../web/src/pass-history.js';
 import { caseOf, initialState } from '../../web/src/store.js';
 
 const paper = JSON.parse(readFileSync(new URL('../data/tab1.json', import.meta.url), 'utf8'));
@@ -186,4 +186,13 @@ test('series: per quantity the passes with a value, measured and predicted apart
     if (q === 'floor') { assert.ok(v.y.every(Number.isFinite)); continue; }
     for (const set of Object.values(v)) assert.ok(set.y.every(Number.isFinite));
   }
+});
+
+test('the rms predicted in the table: the bound first, the identified machine\'s figure with its condition, a 0 in words', () => {
+  assert.equal(predictedRmsText({ rms: 0.012, rmsHigh: 0.446 }), 'at most 0.446 (0.012 on the identified machine)');
+  // The noise taken out clips the figure to 0: said in words, not as a certain-looking 0 (a review found "0").
+  assert.equal(predictedRmsText({ rms: 0, rmsHigh: 0.00575 }), 'at most 0.00575 (within the probe noise on the identified machine)');
+  assert.equal(predictedRmsText({ rms: 3e-11, rmsHigh: 2e-4 }), 'at most 0.001 (below 0.001 on the identified machine)');
+  assert.equal(predictedRmsText({ rms: 1.23456, rmsHigh: null }), '1.235');
+  assert.equal(predictedRmsText({ rms: null, rmsHigh: 0.4 }), '—');
 });

@@ -17,6 +17,7 @@
 // identification's status, up to 3 of its standard deviations above n sigma² (1.28 sigma in rms
 // on 45 points), so a face a little above the drawn floor may be told to stop. When the correction says stop (the face
 // measured is within the probe noise), no next pass is predicted or offered.
+import { LEAST_RMS, faceFigure } from './format.js';
 import { caseOf } from './store.js';
 
 const finiteOr = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
@@ -29,6 +30,16 @@ export const STOP_WHY = 'Stop: the face measured is within the probe noise; anot
 // bound, rmsHigh), and the one simulated for the axes run (with a measurement, at its points and
 // read as it is: correction.*Simulated; before one, the topography); the probe noise the correction assumed
 // (sigma) and whether it says stop. A number that is not finite becomes null (shown as a dash).
+// The rms predicted, in the table's words: its bound, what the pass leaves, and the identified
+// machine's figure below it with that condition, "at most 0.446 (0.012 on the identified
+// machine)"; a figure the noise takes to 0 (correction.predictedRms: the misfit less the noise,
+// clipped) is said in words, not as a certain-looking 0. Without a bound, the figure alone.
+export function predictedRmsText(f) {
+  if (f.rms === null || typeof f.rmsHigh !== 'number') return faceFigure(f.rms, LEAST_RMS, 4);
+  const model = f.rms === 0 ? 'within the probe noise' : faceFigure(f.rms, LEAST_RMS);
+  return `at most ${faceFigure(Math.max(f.rmsHigh, LEAST_RMS), LEAST_RMS)} (${model} on the identified machine)`;  // "at most 0.001", not "at most below 0.001"
+}
+
 export function resultFigures(result) {
   const c = result.correction, t = result.topography;
   return {

@@ -3,8 +3,8 @@
 // says which figures). A kept pass's figures come from the calculator: its case (the form, its
 // axes and grid) is evaluated once and the figures kept; a pass the calculator refuses (the grid
 // changed since) shows why in its row.
-import { LEAST_RMS, escapeHtml, faceFigure, fixed, signed } from '../format.js';
-import { STOP_WHY, historyRows, historySeries, nextRunInputs, passCase, resultFigures } from '../pass-history.js';
+import { escapeHtml, faceFigure, fixed, signed } from '../format.js';
+import { STOP_WHY, historyRows, historySeries, nextRunInputs, passCase, predictedRmsText, resultFigures } from '../pass-history.js';
 import { drawPassHistory } from '../plots/pass-history.js';
 import { loadPlotly } from '../plots/passes.js';
 import { fieldMeaning, fieldUnit, unitText } from '../result-fields.js';
@@ -17,13 +17,9 @@ const units = () => Object.fromEntries(['rms', 'sse', 'max', 'thickness'].map((q
 // The figures on the scale a probe reads (issue 22): an rms below 0.001 µm and a sum of squares
 // below 1e-6 µm² are "below" that, not the solver's 3e-11.
 const LEAST_SSE = 1e-6;
-// The rms predicted: its bound, what the pass leaves, and the identified machine's figure below it
-// with that condition: "at most 0.446 (0.012 on the identified machine)".
-const rmsCell = (f) => (f.rms !== null && typeof f.rmsHigh === 'number'
-  ? `at most ${faceFigure(f.rmsHigh, LEAST_RMS)} (${faceFigure(f.rms, LEAST_RMS)} on the identified machine)` : faceFigure(f.rms, LEAST_RMS, 4));
 
 const cells = (f, set) => (f
-  ? `<td class="num" data-${set}="rms">${rmsCell(f)}</td><td class="num" data-${set}="sse">${faceFigure(f.sse, LEAST_SSE, 6)}</td>` +
+  ? `<td class="num" data-${set}="rms">${predictedRmsText(f)}</td><td class="num" data-${set}="sse">${faceFigure(f.sse, LEAST_SSE, 6)}</td>` +
     `<td class="num" data-${set}="max">${fixed(f.max, 3)}</td><td class="num" data-${set}="thickness">${signed(f.thickness, 3)}</td>`
   : '<td class="num">—</td><td class="num">—</td><td class="num">—</td><td class="num">—</td>');
 
