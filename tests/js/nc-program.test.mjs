@@ -305,6 +305,9 @@ test('the header names the job from the case\'s job, in plain ASCII; the file is
   const none = programFor(result, paper, 'sinumerik', { digits, date: new Date('2026-11-26T08:00:00Z') });
   assert.match(none.text, /; Job: \(none given\)\n/);
   assert.equal(none.fileName, 'HOBSHARP_M7_20261126.mpf');
+  // A derived case's module: 4 significant digits in the name (a review found HOBSHARP_M8_110317242852).
+  const derived = programFor(result, { ...paper, hob: { ...paper.hob, normalModule: 8.11031724285288 } }, 'sinumerik', { digits, date: new Date('2026-11-26T08:00:00Z') });
+  assert.equal(derived.fileName, 'HOBSHARP_M8_11_20261126.mpf');
   assert.match(programNote(none), /^1 POLY block of degree 5 at most; largest deviation from the axes [\d.e-]+ µm \(X, Y, Z\), [\d.e-]+° \(A, B\)\.$/);
 });
 

@@ -309,11 +309,12 @@ export function ncProgram(o) {
 }
 
 // The program's name, also its file's: letters, digits and underscores, from the job number or
-// the hob's module and the date (HOBSHARP_M7_20261126).
+// the hob's module (to 4 significant digits: M8_11, not a derived case's M8_110317242852) and the
+// date (HOBSHARP_M7_20261126).
 export function programName(header = {}, dialect = 'sinumerik') {
   const job = header && header.job && header.job.number !== undefined ? String(header.job.number) : '';
   const date = header && header.date ? String(header.date).replace(/[^0-9]/g, '') : '';
-  const module = header && Number.isFinite(header.module) ? `M${String(header.module).replace('.', '_')}` : '';
+  const module = header && Number.isFinite(header.module) ? `M${String(Number(header.module.toPrecision(4))).replace('.', '_')}` : '';
   const parts = ['HOBSHARP', job ? commentText(job, 20) : module, date].filter(Boolean);
   let name = parts.join('_').toUpperCase().replace(/[^A-Z0-9_]/g, '_').replace(/_+/g, '_').slice(0, dialect === 'heidenhain' ? 24 : 24);
   name = name.replace(/_$/, '');
