@@ -39,7 +39,7 @@ test("the page's own exported grid reads back, header row and r column recognise
   assert.throws(() => readMeasured(shifted, r.topography), /^Error: Line 2, column 2: the column is at x = [-\d.]+ mm, but the grid's axial line 1 is at x = [-\d.]+ mm\./);
   const lines = block.split('\n');
   lines[4] = lines[4].replace(/^[-\d.e]+/, '99');
-  assert.throws(() => readMeasured(lines.join('\n'), r.topography), /^Error: Line 5: the row is at r = 99 mm, but the grid's radial line 3 is at r = [\d.]+ mm\./);
+  assert.throws(() => readMeasured(lines.join('\n'), r.topography), /^Error: Line 5: the row is at r = 99 mm, but the grid's radial line 3 is at r = [\d.]+ mm\. Set the grid lines \(Polynomials and measuring grid\) to the measured positions, or give the values without positions\.$/);
 });
 
 const positions = { r: [36.7, 38.4, 40, 41.6, 43.3], x: [-40, -30, -20, -10, 0, 10, 20, 30, 40] };

@@ -104,7 +104,7 @@ test('the grid check: positions beyond 0.01 mm of the grid\'s lines, or another 
   assert.throws(() => x3pOnGrid(read, { ...grid, x: grid.x.map((x, i) => (i === 3 ? x + 0.02 : x)) }),
     /^Error: main\.xml, Record1\/Axes\/CX: axial line 4 is at x = -17\.5 mm, but the grid's is at x = -17\.48 mm/);
   assert.throws(() => x3pOnGrid(read, { ...grid, r: grid.r.map((r) => r + 1) }), /^Error: main\.xml, Record1\/Axes\/CY: radial line 1 is at r = 19 mm, but the grid's is at r = 20 mm/);
-  assert.throws(() => x3pOnGrid(read, { r: grid.r, x: grid.x.slice(0, 7) }), /^Error: main\.xml, Record3\/MatrixDimension\/SizeX: 9 axial lines, but the grid has 7\./);
+  assert.throws(() => x3pOnGrid(read, { r: grid.r, x: grid.x.slice(0, 7) }), /^Error: main\.xml, Record3\/MatrixDimension\/SizeX: 9 axial lines, but the grid has 7\. Set the grid lines \(Polynomials and measuring grid\) to the measured positions\.$/);
   assert.doesNotThrow(() => x3pOnGrid(read, { ...grid, x: grid.x.map((x) => x + 0.009) }));
 });
 

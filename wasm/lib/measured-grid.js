@@ -110,12 +110,12 @@ export function readMeasured(text, grid) {
     notes.push(`a first column of ${r.length} r positions (mm)`);
     if (r.length === grid.r.length) {
       const i = r.findIndex((v, k) => !near(v, grid.r[k]));
-      if (i >= 0) throw new Error(`Line ${rows[i].n}: the row is at r = ${fmtList([r[i]])} mm, but the grid's radial line ${i + 1} is at r = ${fmtList([grid.r[i]])} mm. Change the grid (Grid in the form) to the measured positions, or give the values without positions.`);
+      if (i >= 0) throw new Error(`Line ${rows[i].n}: the row is at r = ${fmtList([r[i]])} mm, but the grid's radial line ${i + 1} is at r = ${fmtList([grid.r[i]])} mm. Set the grid lines (Polynomials and measuring grid) to the measured positions, or give the values without positions.`);
     }
   }
   if (headerX && headerX.length === grid.x.length) {
     const j = headerX.findIndex((v, k) => !near(v, grid.x[k]));
-    if (j >= 0) throw new Error(`Line ${headerLine}, column ${j + 2}: the column is at x = ${fmtList([headerX[j]])} mm, but the grid's axial line ${j + 1} is at x = ${fmtList([grid.x[j]])} mm. Change the grid (Grid in the form) to the measured positions, or give the values without positions.`);
+    if (j >= 0) throw new Error(`Line ${headerLine}, column ${j + 2}: the column is at x = ${fmtList([headerX[j]])} mm, but the grid's axial line ${j + 1} is at x = ${fmtList([grid.x[j]])} mm. Set the grid lines (Polynomials and measuring grid) to the measured positions, or give the values without positions.`);
   }
   if (out.length === grid.x.length && out.every((row) => row.length === grid.r.length) && grid.r.length !== grid.x.length) {
     suggest.transpose = true;

@@ -395,13 +395,13 @@ const fmt = (v) => String(Math.round(v * 1e4) / 1e4);
 export function x3pOnGrid(read, grid) {
   const check = (lines, gridLines, axis, what, name) => {
     if (lines.length !== gridLines.length) {
-      throw new Error(`${MAIN_FILE}, Record3/MatrixDimension/Size${axis}: ${lines.length} ${what} lines, but the grid has ${gridLines.length}. Change the grid (Grid in the form) to the measured positions.`);
+      throw new Error(`${MAIN_FILE}, Record3/MatrixDimension/Size${axis}: ${lines.length} ${what} lines, but the grid has ${gridLines.length}. Set the grid lines (Polynomials and measuring grid) to the measured positions.`);
     }
     const k = lines.findIndex((v, i) => Math.abs(v - gridLines[i]) > X3P_POSITION_TOLERANCE);
     if (k >= 0) {
       throw new Error(`${MAIN_FILE}, Record1/Axes/C${axis}: ${what} line ${k + 1} is at ${name} = ${fmt(lines[k])} mm, but the grid's is at ${name} = ${fmt(gridLines[k])} mm ` +
         `(the file's lines run from ${fmt(lines[0])} to ${fmt(lines[lines.length - 1])} mm, the grid's from ${fmt(gridLines[0])} to ${fmt(gridLines[gridLines.length - 1])} mm; X3P gives metres). ` +
-        'Change the grid (Grid in the form) to the measured positions.');
+        'Set the grid lines (Polynomials and measuring grid) to the measured positions.');
     }
   };
   check(read.r, grid.r, 'Y', 'radial', 'r');
