@@ -410,6 +410,7 @@ TEST(CaseFile, OverflowingNumberIsRefusedWhereItStands) {
   const Error e = firstError(text);
   EXPECT_NE(e.message.find("not valid JSON"), std::string::npos) << e.message;
   EXPECT_NE(e.message.find("character " + std::to_string(at + 5)), std::string::npos) << e.message << " at " << at;
+  EXPECT_NE(e.message.find("(a number too large: beyond ±1.8e308)"), std::string::npos) << e.message;  // not "syntax error"
 }
 
 // The job's record is read as given (characters counted, not bytes: 60 umlauts are 120 bytes),

@@ -84,6 +84,8 @@ class Shape : public nlohmann::json_sax<Json> {
     const std::size_t dash = reason.find(" - ");
     reason = dash == std::string::npos ? "syntax error" : reason.substr(dash + 3);
     reason = reason.substr(0, reason.find("; last read: "));
+    // nlohmann's out_of_range 406, "number overflow parsing '1e309'": not a syntax error.
+    if (e.id == 406) reason = "a number too large: beyond ±1.8e308";
     error_ = refuse(path(false), "the case is not valid JSON here, at character " + std::to_string(position) +
                                      " (" + reason.substr(0, 200) + ").");
     return false;
