@@ -95,16 +95,18 @@ std::string predictionText(const Correction& c) {
   // figure, predictedRms, is what the pass leaves only if the identified error is all of the
   // machine's: on ten campaign seeds (6,409 passes) the face left on the probe grid was more than
   // three times it plus 0.02 µm in 40 % of them, and above the bound in 5 % (docs/method.md).
-  leaves << "the face measured " << c.before.rms << " µm rms will be left at most " << c.predictedRmsHigh << " µm rms";
+  // Below the pass's floor (machine_resolution.h): the exact axes' figure is not what the machine,
+  // which quantises each axis position to its step, can hold; no pass promises a face below it.
+  const bool belowFloor = c.resolutionFloor > c.predictedRmsHigh;
+  leaves << "the face measured " << c.before.rms << " µm rms will be left at most " << c.predictedRmsHigh << " µm rms"
+         << (belowFloor ? " with the exact axes" : "");
   if (c.predictedUnseenPart > 0)
     leaves << (c.predictedWheelAlike ? " if the error the face cannot show, or cannot tell from the wheel's shape, is no "
                                        "larger than the one it shows"
                                      : " if the error the face cannot show is no larger than the one it shows");
-  // Below the pass's floor (machine_resolution.h): the exact axes' figure is not what the machine,
-  // which quantises each axis position to its step, can hold; no pass promises a face below it.
-  if (c.resolutionFloor > c.predictedRmsHigh)
-    leaves << " with the exact axes; quantising each axis position to the machine's resolution sets a floor of about "
-           << c.resolutionFloor << " µm rms, which no pass goes below";
+  if (belowFloor)
+    leaves << "; quantising each axis position to the machine's resolution sets a floor of about " << c.resolutionFloor
+           << " µm rms, which no pass goes below";
   return leaves.str();
 }
 

@@ -85,8 +85,8 @@ struct UnseenSampling {
 };
 
 // What the pass leaves, as c's prediction and its bound state it, for a verdict: "the face
-// measured 3 µm rms will be left at most 0.05 µm rms [if the error the face cannot show is no larger
-// than the one it shows][ with the exact axes; quantising each axis position to the machine's
+// measured 3 µm rms will be left at most 0.05 µm rms[ with the exact axes] [if the error the face
+// cannot show is no larger than the one it shows][; quantising each axis position to the machine's
 // resolution sets a floor of about 0.03 µm rms, which no pass goes below]": the bound, never the
 // model's figure below it, and the pass's floor (c.resolutionFloor) where the bound lies below it.
 std::string predictionText(const Correction& c);

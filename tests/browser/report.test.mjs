@@ -148,7 +148,7 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
     // The verdict in one line: the class with its conformity, the verdict's word, the face's rms
     // measured and predicted, with the condition the bound holds on when the verdict states one.
     assert.ok(firstFlat.includes(verdict), `${format}: the verdict "${verdict}" on page 1`);
-    assert.match(verdict, /^Class (AA|A|B|C|D)\*? — (conforms|undecided|does not conform)( \(\* on a series value, not confirmed\))?; (Correctable|Uncertain|Partly uncorrectable)[^:]*: face [\d.]+ µm rms measured, at most [\d.e-]+ µm rms after the correction( if the error the face cannot show is no larger than the one it shows)?( with the exact axes; the machine's position resolution sets a floor of about [\d.]+ µm rms)?\.$/);
+    assert.match(verdict, /^Class (AA|A|B|C|D)\*? — (conforms|undecided|does not conform)( \(\* on a series value, not confirmed\))?; (Correctable|Uncertain|Partly uncorrectable)[^:]*: face [\d.]+ µm rms measured, at most [\d.e-]+ µm rms after the correction( if the error the face cannot show is no larger than the one it shows)?(; that is with the exact axes, and the machine's position resolution sets a floor of about [\d.]+ µm rms)?\.$/);
     // The rake face's class with its conformity and the proven class.
     assert.match(firstFlat, /Rake face \(DIN 3968\): Class (AA|A|B|C|D) — (conforms|undecided|does not conform) \(ISO 14253-1, U95 = 2 µm\); proven class (AA|A|B|C|D|none)\./);
     // The job, by the form's labels.

@@ -120,7 +120,7 @@ test("the answer's rms line: after the pass the prediction's bound, never the id
   // ... and below the pass's floor (the position resolution's), the floor follows it.
   assert.ok(c.resolutionFloor > 2e-4 && c.resolutionFloor < c.predictedRmsHigh, `floor ${c.resolutionFloor} µm`);
   assert.match(rmsText({ ...r, correction: { ...c, predictedRmsHigh: 2e-4 } }, fieldUnit),
-    new RegExp(`→ at most 0\\.001 µm after the pass with the exact axes; the machine's position resolution sets a floor of about ${Number(c.resolutionFloor.toPrecision(3))} µm rms\\.$`));
+    new RegExp(`→ at most 0\\.001 µm after the pass; that is with the exact axes, and the machine's position resolution sets a floor of about ${Number(c.resolutionFloor.toPrecision(3))} µm rms\\.$`));
 });
 
 test("the answer's first line: what to do next, by where the job is", () => {

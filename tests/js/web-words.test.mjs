@@ -90,10 +90,10 @@ test('the prediction: what the pass will leave and its bound, µm rms at the pro
   assert.equal(c.stop, false);
   const text = predictionText(c, fieldUnit);
   // The bound first; the model's figure only with its condition, never as what the pass leaves.
-  assert.match(text, /^Predicted after the pass: at most [\d.e+-]+ µm rms at the probe points \(([\d.e+-]+ µm rms|within the probe noise) if the identified error is all of the machine's\)( with the exact axes; the machine's position resolution sets a floor of about [\d.]+ µm rms)?\.$/);
+  assert.match(text, /^Predicted after the pass: at most [\d.e+-]+ µm rms at the probe points \(([\d.e+-]+ µm rms|within the probe noise) if the identified error is all of the machine's\)(; that is with the exact axes, and the machine's position resolution sets a floor of about [\d.]+ µm rms)?\.$/);
   // The pass's floor follows a bound below it (the module's verdict says the same), and only then.
   const low = { ...c, predictedRmsHigh: 0.00575, resolutionFloor: 0.0329 };
-  assert.match(predictionText(low, fieldUnit), /\) with the exact axes; the machine's position resolution sets a floor of about 0\.0329 µm rms\.$/);
+  assert.match(predictionText(low, fieldUnit), /\); that is with the exact axes, and the machine's position resolution sets a floor of about 0\.0329 µm rms\.$/);
   assert.equal(floorNote({ ...low, predictedRmsHigh: 0.5 }, fieldUnit), '');
   assert.equal(floorNote(low, () => null), '', 'no unit, no figure');
   // A prediction of no shape beyond the noise is said in words, not as a certain-looking 0.

@@ -65,13 +65,14 @@ const rmsFigure = (v) => fmt(v, 3);
 // (correction.stop, a run kept, or a proposal that is not usable), when a figure is not a finite number, or
 // when the module gives no unit.
 // After a bound below the pass's floor (floorAboveBound), the floor in words, with the module's unit:
-// " with the exact axes; the machine's position resolution sets a floor of about 0.0329 µm rms";
+// "; that is with the exact axes, and the machine's position resolution sets a floor of about
+// 0.0329 µm rms";
 // '' where the bound is above it (or there is none).
 export function floorNote(c, unitOf) {
   const floor = floorAboveBound(c);
   const unit = unitOf('correction.resolutionFloor');
   if (floor === null || !unit) return '';
-  return ` with the exact axes; the machine's position resolution sets a floor of about ${rmsFigure(floor)} ${unit} rms`;
+  return `; that is with the exact axes, and the machine's position resolution sets a floor of about ${rmsFigure(floor)} ${unit} rms`;
 }
 
 export function predictionText(c, unitOf) {
