@@ -37,7 +37,7 @@ export function rmsText(result, unitOf = fieldUnit) {
   if (c) {
     const [before, after, high] = [unitOf('correction.rmsBefore'), unitOf('correction.rmsAfter'), unitOf('correction.predictedRmsHigh')];
     if (!before || !after) return '';
-    const measured = `Face rms: ${rmsFixed(c.rmsBefore, 3)} ${before} measured`;
+    const measured = `Face rms: ${rmsFixed(c.rmsBefore)} ${before} measured`;
     // A stop proposes no pass: nothing after it.
     if (c.stop === true) return `${measured}: within the probe noise, the axes run stay.`;
     // A proposal that is not to be run: nothing after it either.
@@ -46,11 +46,11 @@ export function rmsText(result, unitOf = fieldUnit) {
     if (c.runKept === true) return `${measured}: no change proposed, the axes run stay.`;
     if (high && Number.isFinite(c.predictedRmsHigh))
       // A bound below the least rms written reads "at most 0.001", not 0.000.
-      return `${measured} → at most ${rmsFixed(Math.max(c.predictedRmsHigh, LEAST_RMS), 3)} ${high} after the pass${floorNote(c, unitOf)}.`;
-    return `${measured} → ${rmsFixed(c.rmsAfter, 3)} ${after} after the pass if the identified error is all of the machine's.`;
+      return `${measured} → at most ${rmsFixed(Math.max(c.predictedRmsHigh, LEAST_RMS))} ${high} after the pass${floorNote(c, unitOf)}.`;
+    return `${measured} → ${rmsFixed(c.rmsAfter)} ${after} after the pass if the identified error is all of the machine's.`;
   }
   const unit = unitOf('topography.rms');
-  return unit ? `Face rms: ${rmsFixed(result.topography.rms, 3)} ${unit} simulated for the axes run; no measured face yet.` : '';
+  return unit ? `Face rms: ${rmsFixed(result.topography.rms)} ${unit} simulated for the axes run; no measured face yet.` : '';
 }
 
 export function mountSummary(store) {
