@@ -374,6 +374,32 @@ TEST(Inspection, TheGuardBandOfTheMeasurementsUncertainty) {
   EXPECT_DOUBLE_EQ(MeasurementUncertainty::of(2, 50).of(Check::PitchJump), 2);
 }
 
+// A reading computed at a tolerance carries the rounding of its arithmetic: 34.7 - 16.0 x 24.25 / 40
+// is 25.000000000000004 in doubles, the indicator's 25.0 µm. It is graded at AA's 25 µm (module 7),
+// its conformity there undecided, not pushed into class A by 4e-15 µm; a reading 1e-5 µm beyond is A.
+TEST(Inspection, AReadingAtAToleranceIsGradedByItsValueNotItsRounding) {
+  const ToleranceTable& t = defaultToleranceTable();
+  const double reading = 34.7 - 16.0 * 24.25 / 40;
+  ASSERT_GT(reading, 25.0) << "the arithmetic's rounding this test is about";
+  auto at = [&](double value) {
+    FaceChecks face;
+    face.radialAlignment = value;
+    return inspect(face, std::nullopt, t, 7, MeasurementUncertainty::of(2, 100));
+  };
+  EXPECT_EQ(at(reading).grade, Grade::AA);
+  EXPECT_EQ(at(reading).conformity, Conformity::Undecided);
+  EXPECT_EQ(at(-reading).grade, Grade::AA);
+  EXPECT_EQ(at(25.00001).grade, Grade::A);
+  // A reason to leave the face's checks ungraded keeps their readings and grades nothing of them.
+  FaceChecks face;
+  face.radialAlignment = 5;
+  const Inspection in = inspect(face, std::nullopt, t, 7, MeasurementUncertainty::of(2, 100), "a reason");
+  EXPECT_EQ(in.grade, Grade::NotGraded);
+  EXPECT_EQ(in.find(Check::RadialAlignment)->grade, Grade::NotGraded);
+  EXPECT_DOUBLE_EQ(in.find(Check::RadialAlignment)->value, 5);
+  EXPECT_EQ(in.faceNotGraded, "a reason");
+}
+
 TEST(Inspection, TheClassTableAtItsBandEdges) {
   const ToleranceTable& t = defaultToleranceTable();
   // "over 0.63 to 1": 0.63 itself is outside, 1 is in the first band, just above 1 the second.

@@ -5,6 +5,7 @@
 #include <random>
 #include <string>
 
+#include "face_prediction.h"
 #include "identification_cases.h"
 
 namespace hobsharp::test {
@@ -159,6 +160,40 @@ TEST(Prediction, UncertainIsABoundAboveTheFaceOrAPartUnground) {
   c.stop = false;
   c.runKept = true;
   EXPECT_FALSE(c.uncertain());
+}
+
+// mayStayUnground() (correction.h, the result's correction.mayStayUnground): an uncertain change
+// with a sampled error that leaves part of the face unground, or a point near a fold; not a bound
+// above the face alone, not with no coefficient free, not when the run is kept. The report's line
+// reads it and correction.boundCondition (predictionCondition) instead of matching the verdict's words.
+TEST(Prediction, MayStayUngroundAndTheBoundsConditionAreFieldsOfTheirOwn) {
+  Correction c;
+  c.coefficients = {Coefficient{Axis::Y, 0}};
+  c.before.rms = 10;
+  c.predictedRmsHigh = 11;
+  EXPECT_TRUE(c.uncertain());
+  EXPECT_FALSE(c.mayStayUnground()) << "a bound above the face is uncertain, not unground";
+  c.predictedRmsHigh = 2;
+  c.predictedUngrindable = 2;
+  EXPECT_TRUE(c.mayStayUnground());
+  c.runKept = true;
+  EXPECT_FALSE(c.mayStayUnground());
+  c.runKept = false;
+  c.coefficients.clear();
+  EXPECT_FALSE(c.mayStayUnground()) << "every axis locked: nothing proposed";
+
+  Correction p;
+  p.before.rms = 3;
+  p.predictedRmsHigh = 0.05;
+  EXPECT_EQ(predictionCondition(p), "") << "no error the face cannot show enters the bound";
+  p.predictedUnseenPart = 0.01;
+  EXPECT_EQ(predictionCondition(p), "if the error the face cannot show is no larger than the one it shows");
+  EXPECT_NE(predictionText(p).find(" will be left at most 0.05 µm rms " + predictionCondition(p)), std::string::npos)
+      << predictionText(p);
+  p.wheelKnots = 7;
+  EXPECT_EQ(predictionCondition(p), "if the error the face cannot show is no larger than the one it shows, and if the "
+                                    "wheel's shape between the probe rows is one a smooth curve through its 7 points "
+                                    "makes (the probe grid does not show the wheel between its rows)");
 }
 
 }  // namespace

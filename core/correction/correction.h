@@ -92,6 +92,9 @@ struct Correction {
   // The bound also samples the wheel shape the face cannot tell from the axes' motion (the wheel
   // identified alongside; face_prediction.h, `mimicking`).
   bool predictedWheelAlike = false;
+  // With the wheel's correction: the points of the spline its shape is identified as (wheel_error.h).
+  // The probe grid does not show the wheel between its rows, so the bound assumes it that smooth.
+  int wheelKnots = 0;
   // With an error the face cannot show, of the size the bound samples, the wheel may stop
   // enveloping the face the pass grinds (a fold of the envelope, fold_margin.h): the margin, and the
   // point where it falls below the check's limit (face_prediction.h).
@@ -108,6 +111,12 @@ struct Correction {
   // 106 of 149 µm, 4 of the 6 samples left part of the face unground, and so did the true machine.
   bool uncertain() const {
     return !keepsRun() && (predictedRmsHigh > before.rms || predictedUngrindable > 0 || predictedFoldAt.has_value());
+  }
+  // An uncertain change with which part of the face may stay unground: some of the errors the bound
+  // samples leave part of it unground, or the wheel may stop enveloping it near a point (the
+  // verdict's "part of it would stay unground").
+  bool mayStayUnground() const {
+    return !coefficients.empty() && uncertain() && (predictedUngrindable > 0 || predictedFoldAt.has_value());
   }
   // The face the pass leaves (`after`, over `points` values) is within twice the probe noise: its
   // rms at most twice the probe's sigma (the verdict's "to within twice the probe noise"). Looser
@@ -132,6 +141,10 @@ struct Correction {
   // re-simulated, without the part no axis makes (known only at the points).
   ProbePoints probes;
   Topography explainedOnGrid, afterOnGrid;
+  // µm rms over the measured values: what the identified error does not explain (the part no axis
+  // makes, noise and all). At probe points the grid's maps and the inspection hold the explained
+  // face alone, so this is how far they may be from the measurement (inspectEvaluation).
+  double unexplainedRms = 0;
   bool atProbes() const { return !probes.empty(); }
 };
 

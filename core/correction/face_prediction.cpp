@@ -88,6 +88,18 @@ RightSingular rightSingularOf(const Eigen::MatrixXd& S) {
 
 }  // namespace
 
+std::string predictionCondition(const Correction& c) {
+  std::string axes;
+  if (c.predictedUnseenPart > 0)
+    axes = c.predictedWheelAlike
+               ? "if the error the face cannot show, or cannot tell from the wheel's shape, is no larger than the one it shows"
+               : "if the error the face cannot show is no larger than the one it shows";
+  if (c.wheelKnots == 0) return axes;
+  const std::string wheel = "if the wheel's shape between the probe rows is one a smooth curve through its " +
+                            std::to_string(c.wheelKnots) + " points makes (the probe grid does not show the wheel between its rows)";
+  return axes.empty() ? wheel : axes + ", and " + wheel;
+}
+
 std::string predictionText(const Correction& c) {
   std::ostringstream leaves;
   leaves.precision(3);
@@ -100,10 +112,8 @@ std::string predictionText(const Correction& c) {
   const bool belowFloor = c.resolutionFloor > c.predictedRmsHigh;
   leaves << "the face measured " << c.before.rms << " µm rms will be left at most " << c.predictedRmsHigh << " µm rms"
          << (belowFloor ? " with the exact axes" : "");
-  if (c.predictedUnseenPart > 0)
-    leaves << (c.predictedWheelAlike ? " if the error the face cannot show, or cannot tell from the wheel's shape, is no "
-                                       "larger than the one it shows"
-                                     : " if the error the face cannot show is no larger than the one it shows");
+  const std::string condition = predictionCondition(c);
+  if (!condition.empty()) leaves << " " << condition;
   if (belowFloor)
     leaves << "; quantising each axis position to the machine's resolution sets a floor of about " << c.resolutionFloor
            << " µm rms, which no pass goes below";

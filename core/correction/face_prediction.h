@@ -90,6 +90,11 @@ struct UnseenSampling {
 // resolution sets a floor of about 0.03 µm rms, which no pass goes below]": the bound, never the
 // model's figure below it, and the pass's floor (c.resolutionFloor) where the bound lies below it.
 std::string predictionText(const Correction& c);
+// What c's bound (predictedRmsHigh) assumes, in the verdict's words: "if the error the face cannot
+// show is no larger than the one it shows" (or "..., or cannot tell from the wheel's shape, ..."),
+// with the wheel's correction also "if the wheel's shape between the probe rows is one a smooth
+// curve through its 5 points makes (...)"; "" where it assumes nothing.
+std::string predictionCondition(const Correction& c);
 
 FacePrediction predictFace(const SharpeningSetup& measuredSetup, const SharpeningSetup& passSetup,
                            const AxisPolynomials& run, const GroundFace& runFace, const Correction& c,

@@ -230,6 +230,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
     atRunMade = est.atRun;
     errorCoefficients = est.coefficientError;
   }
+  c.unexplainedRms = unexplained.size() > 0 ? std::sqrt(unexplained.squaredNorm() / static_cast<double>(unexplained.size())) : 0.0;
   const SharpeningSetup& grinding = dressed ? *dressed : setup;  // the wheel the predicted faces are ground with
   auto after = predictedFace(grinding, runFace, c.axes, c.identifiedError, unexplained, at, !dressed);
   if (!after) return after.error();

@@ -91,6 +91,7 @@ Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup
   if (!axes) return axes.error();
 
   AxesAndWheelCorrection out{std::move(axes).value(), {}};
+  out.correction.wheelKnots = K;  // the bound's condition says the wheel is taken that smooth
   const Correction& c = out.correction;
   WheelCorrection& w = out.wheel;
   w.knots = *knots;

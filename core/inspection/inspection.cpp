@@ -31,6 +31,11 @@ Conformity conformityTo(double magnitude, double tolerance, double u) {
   return Conformity::Undecided;
 }
 
+// The reading a grade compares: |value| to 1e-6 µm (or µm per 100 mm). A reading computed at a
+// tolerance (25 µm as 34.7 - 16.0 x 24.25 / 40) carries rounding of about 1e-14 µm, which must not
+// move it into the next class.
+double gradedMagnitude(double value) { return std::round(std::abs(value) * 1e6) / 1e6; }
+
 }  // namespace
 
 MeasurementUncertainty MeasurementUncertainty::of(double deviation, double axialLength) {
@@ -48,13 +53,14 @@ const CheckResult* Inspection::find(Check check) const {
 }
 
 Inspection inspect(const FaceChecks& face, const std::optional<GashSpacing>& spacing, const ToleranceTable& table,
-                   double normalModule, const MeasurementUncertainty& uncertainty) {
+                   double normalModule, const MeasurementUncertainty& uncertainty, const std::string& faceNotGraded) {
   Inspection out;
+  out.faceNotGraded = faceNotGraded;
   out.band = moduleBand(table, normalModule);
   out.face = face;
   out.spacing = spacing;
   out.uncertainty = uncertainty;
-  auto add = [&](Check check, double value) {
+  auto add = [&](Check check, double value, bool graded = true) {
     CheckResult c;
     c.check = check;
     c.value = value;
@@ -67,8 +73,8 @@ Inspection inspect(const FaceChecks& face, const std::optional<GashSpacing>& spa
         }
       }
       c.loosest = table.loosest(check, *out.band);
-      const double magnitude = std::abs(value);
-      c.grade = gradeOf(table, check, *out.band, magnitude);
+      const double magnitude = gradedMagnitude(value);
+      c.grade = graded ? gradeOf(table, check, *out.band, magnitude) : Grade::NotGraded;
       if (c.grade != Grade::NotGraded) {
         const ToleranceClass rests = c.grade == Grade::OutsideD ? *c.loosest : static_cast<ToleranceClass>(c.grade);
         c.confidence = table.confidenceAt(check, rests, *out.band);
@@ -85,9 +91,10 @@ Inspection inspect(const FaceChecks& face, const std::optional<GashSpacing>& spa
     }
     out.checks.push_back(c);
   };
-  add(Check::CuttingFaceForm, face.cuttingFaceForm);
-  add(Check::RadialAlignment, face.radialAlignment);
-  if (face.gashLead) add(Check::GashLead, *face.gashLead);
+  const bool faceGraded = faceNotGraded.empty();
+  add(Check::CuttingFaceForm, face.cuttingFaceForm, faceGraded);
+  add(Check::RadialAlignment, face.radialAlignment, faceGraded);
+  if (face.gashLead) add(Check::GashLead, *face.gashLead, faceGraded);
   if (spacing) {
     add(Check::AdjacentSpacing, spacing->adjacentLargest);
     add(Check::PitchJump, spacing->pitchJumpLargest);
@@ -109,7 +116,7 @@ Inspection inspect(const FaceChecks& face, const std::optional<GashSpacing>& spa
       if (c.grade == Grade::NotGraded) continue;
       bool has = false;
       for (ToleranceClass k : c.classes) has = has || gradeOf(k) == out.grade;
-      const Conformity k = has ? conformityTo(std::abs(c.value), toleranceOf(c, out.grade), c.uncertainty) : c.conformity;
+      const Conformity k = has ? conformityTo(gradedMagnitude(c.value), toleranceOf(c, out.grade), c.uncertainty) : c.conformity;
       if (k == Conformity::DoesNotConform) out.conformity = k;
       else if (k == Conformity::Undecided && out.conformity == Conformity::Conforms) out.conformity = k;
     }

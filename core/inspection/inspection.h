@@ -49,12 +49,16 @@ struct Inspection {
   Conformity conformity = Conformity::NotGraded;  // of every graded check to the class `grade`
   MeasurementUncertainty uncertainty;
   std::vector<Check> uncertaintyAboveTenth;  // graded checks whose U exceeds a tenth of their tolerance
+  // Why the face's checks (form, alignment, lead) carry their readings but no grade ("" when they
+  // are graded as the table allows): the face inspected does not stand for the one measured.
+  std::string faceNotGraded;
 
   const CheckResult* find(Check check) const;
 };
 
+// `faceNotGraded`: a reason to leave the face's checks ungraded (Inspection::faceNotGraded).
 Inspection inspect(const FaceChecks& face, const std::optional<GashSpacing>& spacing, const ToleranceTable& table,
-                   double normalModule, const MeasurementUncertainty& uncertainty);
+                   double normalModule, const MeasurementUncertainty& uncertainty, const std::string& faceNotGraded = {});
 
 // A grade in words: "AA" .. "D", "outside D" ("outside B" where the table stops at B), "not graded".
 std::string gradeText(Grade grade, std::optional<ToleranceClass> loosest);

@@ -9,6 +9,7 @@
 
 #include "case_json.h"
 #include "default_tolerances.h"
+#include "face_prediction.h"
 #include "inspection_input.h"
 #include "units.h"
 
@@ -195,6 +196,8 @@ void verdict(ResultVisitor& v, const Inspection& in, const std::string& prefix, 
   for (Check c : in.uncertaintyAboveTenth) warning += (warning.empty() ? "" : ", ") + std::string(checkName(c));
   v.text({"inspection.uncertaintyWarning", "", "the graded checks whose uncertainty U exceeds a tenth of the tolerance they are graded by (\"\" when none): their class rests on a measurement too coarse for it"},
          warning);
+  v.text({"inspection.faceNotGraded", "", "why the face's checks (form, radial alignment, gash lead) have readings but no grade, before and after the correction (\"\" when they are graded): measured points the face the identified error grinds on the grid does not explain to twice the probe noise"},
+         in.faceNotGraded);
 }
 
 // A correction at measuredPoints off the grid (docs/measured-points.md): per point [r, x, µm],
@@ -284,13 +287,22 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
       numbers(v, {"inspection.perGash.gashLead", "µm per 100 mm", "per gash: its gash lead deviation (helical gash only)", kWithGashTopographies}, lead);
   }
   verdict(v, in, "inspection.", "", true);
-  std::string notGraded;
-  for (const CheckResult& c : in.checks)
-    if (c.grade == Grade::NotGraded) notGraded += (notGraded.empty() ? "" : ", ") + std::string(checkWords(c.check));
+  // The face's checks left ungraded for their face (Inspection::faceNotGraded), then those the
+  // table has no tolerance for.
+  std::string faceChecks, notGraded;
+  for (const CheckResult& c : in.checks) {
+    if (c.grade != Grade::NotGraded) continue;
+    const bool face = !in.faceNotGraded.empty() && c.check != Check::AdjacentSpacing && c.check != Check::PitchJump &&
+                      !c.tolerances.empty();
+    std::string& list = face ? faceChecks : notGraded;
+    list += (list.empty() ? "" : ", ") + std::string(checkWords(c.check));
+  }
   if (!notGraded.empty())
     notGraded = "Not graded: " + notGraded + " (the tolerance table has no value for " +
                 (in.band ? "the module band " + band : std::string("this module: it is outside the table's module bands")) +
                 "). Enter the hob maker's tolerances in the tolerance table; the case keeps them.";
+  if (!faceChecks.empty())
+    notGraded = "Not graded: " + faceChecks + ": " + in.faceNotGraded + "." + (notGraded.empty() ? "" : " " + notGraded);
   v.text({"inspection.notGraded", "", "the checks without a tolerance in the module band and what to enter (\"\" when every check is graded)"},
          notGraded);
   const bool ownTable = e.job.inspection.ownTable.has_value();
@@ -668,6 +680,10 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
              c.predictedRms);
     v.number({"correction.predictedRmsHigh", "µm", "at most this rms on the probe grid: the misfit, the probe noise through the identified directions and the error the face cannot show (assumed no larger than the one it shows); a bound that can be exceeded: on each of 30 random campaign seeds the face a pass left lay within it in 93 to 97 % of the noise-free and 98 to 100 % of the noisy passes (docs/validation.md)", kWithMeasured},
              c.predictedRmsHigh);
+    v.text({"correction.boundCondition", "", "what correction.predictedRmsHigh assumes, in the verdict's words (\"if the error the face cannot show is no larger than the one it shows\"); \"\" where it assumes nothing", kWithMeasured},
+           predictionCondition(c));
+    v.flag({"correction.mayStayUnground", "", "the change is uncertain and, with some of the errors the face cannot show, part of the face would stay unground (the wheel would not reach it, or may stop enveloping it near a point): the verdict says where", kWithMeasured},
+           c.mayStayUnground());
     v.flag({"correction.stop", "", "the measured face is within the probe noise: another pass would only move noise", kWithMeasured},
            c.stop);
     v.flag({"correction.linearisedAtNominal", "", "the axes run alone grind no face the wheel envelops: the correction was linearised at the nominal axes, from the face measured", kWithMeasured},

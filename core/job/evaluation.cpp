@@ -1,10 +1,23 @@
 #include "evaluation.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "wheel_profile_turn.h"
 
 namespace hobsharp {
+
+std::string unexplainedPointsText(const Correction& c, double probeNoise) {
+  if (!(c.unexplainedRms > 2 * probeNoise)) return "";
+  std::ostringstream t;
+  t.precision(2);
+  t << "the face is known only at the measured points, and the face the identified machine error grinds on the "
+       "grid, which would be graded in their place, leaves "
+    << c.unexplainedRms << " \u00b5m rms of the points unexplained (more than twice the probe noise, sigma "
+    << probeNoise << " \u00b5m): its readings would be a model's, not the indicator's. Measure the face on the grid "
+       "(Polynomials and measuring grid) to grade it";
+  return t.str();
+}
 
 InspectedFace inspectedFace(const Evaluation& e) {
   const MeasuredFace& measured = e.job.measured;
@@ -28,6 +41,11 @@ void inspectEvaluation(Evaluation& e) {
   const MeasurementUncertainty& u = plan.uncertainty;
   // One topography per gash: their deviations at the pitch radius, and the worst gash's face checks.
   FaceChecks faceChecks = checkFace(face, lines, helical);
+  // At probe points off the grid the face inspected is the one the identified error explains: it
+  // stands for the measurement only where that explains the points to within twice the probe noise
+  // (the verdict's own test, Correction::leavesWithinNoise). Beyond, its readings are a model's,
+  // not the indicator's, and the face's checks are not graded (docs/measured-points.md).
+  const std::string faceNotGraded = points && !job.measured.grid ? unexplainedPointsText(*e.correction, job.correction.probeNoise) : "";
   std::vector<double> deviations = plan.gashDeviations;
   if (!plan.gashTopographies.empty()) {
     e.gashFaces = inspectGashFaces(plan.gashTopographies, lines, helical, job.setup.face.pitchRadius);
@@ -40,7 +58,7 @@ void inspectEvaluation(Evaluation& e) {
     const double perRadian = deviationPerIndexAngle(job.setup, job.setup.face.pitchRadius, 0.0);
     e.indexCorrection = indexCorrection(deviations, perRadian, job.correction.resolution.inAxisUnit(Axis::A));
   }
-  e.inspection = inspect(faceChecks, spacing, table, module, u);
+  e.inspection = inspect(faceChecks, spacing, table, module, u, faceNotGraded);
   if (!e.correction && !e.indexCorrection) return;
   // After: the corrected face's checks (on the grid, for points off it), or (only the gashes
   // re-indexed) the faces as they are.
@@ -49,7 +67,7 @@ void inspectEvaluation(Evaluation& e) {
                                           : faceChecks;
   std::optional<GashSpacing> spacingAfter;
   if (e.indexCorrection) spacingAfter = gashSpacing(e.indexCorrection->after);
-  e.inspectionAfter = inspect(after, spacingAfter, table, module, u);
+  e.inspectionAfter = inspect(after, spacingAfter, table, module, u, faceNotGraded);
 }
 
 namespace {

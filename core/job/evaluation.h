@@ -73,5 +73,9 @@ struct InspectedFace {
   FaceSource source;
 };
 InspectedFace inspectedFace(const Evaluation& e);
+// For measuredPoints off the grid: why the face explained on the grid does not stand for the
+// measurement (it leaves more than twice the probe noise of the points unexplained, rms), in words
+// that follow "Not graded: ..."; "" where it does.
+std::string unexplainedPointsText(const Correction& c, double probeNoise);
 
 }  // namespace hobsharp

@@ -24,6 +24,14 @@ void gearEvaluation(Evaluation& e) {
   // The face inspected (inspectEvaluation): the measured grid, else the simulated topography.
   const Eigen::MatrixXd& face = inspectedFace(e).normal;
   const BasicRack& rack = job.gear.rack;
+  // Measured points the face on the grid does not explain: no gear effect of a model's face.
+  const std::string unexplained =
+      e.correction && e.correction->atProbes() && !e.job.measured.grid
+          ? unexplainedPointsText(*e.correction, job.correction.probeNoise) : "";
+  if (!unexplained.empty()) {
+    e.gearEffectReason = "No gear effect: " + unexplained + ".";
+    return;
+  }
   auto g = gearEffect(job.setup.face, job.setup.normalSign, job.grid.r, job.grid.x, face, rack, *k.value);
   if (!g) {
     e.gearEffectReason = "No gear effect: " + g.error().message.substr(g.error().field.size() + 2);

@@ -131,6 +131,35 @@ test('nothing measured: the simulated face\'s class, with no conformity and no p
   await page.context().close();
 });
 
+// Measured points the axes' model does not explain (two waves of 28 µm along the radius, a shape
+// no axis makes): the face's checks keep their readings, are not graded, and the page says why and
+// what to measure; the gear effect says so too (the review of 2026-12-07 found class AA, conforms,
+// read off the model's face, where the same face on a grid is class A).
+test('measured points the axes do not explain: the face is not graded from their model, and the page says why', async () => {
+  const points = [];
+  for (let i = 0; i < 21; i += 1) {
+    for (let k = 0; k < 11; k += 1) {
+      const r = 19.1 + 20.8 * i / 20;
+      points.push([r, -68 + 136 * k / 10, 28 * Math.sin(4 * Math.PI * (r - 19) / 21)]);
+    }
+  }
+  const c = { ...paper, hob: { ...paper.hob, gashes: 12, relief: 4.5 }, measuredPoints: points, correction: { probeNoise: 0.5 } };
+  const page = await openPage(link(c), { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
+  const lead = await page.textContent('#inspection-lead');
+  assert.match(lead, /^Not graded/);
+  assert.match(lead, /radial alignment, gash lead: the face is known only at the measured points, .* leaves 18 µm rms of the points unexplained \(more than twice the probe noise, sigma 0\.5 µm\): its readings would be a model's, not the indicator's\. Measure the face on the grid \(Polynomials and measuring grid\) to grade it\./);
+  // The reading stays in the table, with no grade.
+  const row = await page.$eval('#inspection-table tr[data-check="radialAlignment"]', (r) => [...r.children].map((td) => td.textContent));
+  assert.match(row[1], /^\d+\.\d{3} µm$/);
+  assert.equal(row[2], 'not graded');
+  assert.match(await page.textContent('#report-inspection'), /^Rake face \(DIN 3968\): Not graded: radial alignment, gash lead: /);
+  assert.match(await page.textContent('#inspection-verdict'), /measured points\): not graded \(the axes' model of the face does not explain the measured points: see the checks\)/);
+  assert.equal(await page.textContent('#inspection-rake'), 'Rake error: not read, as the face\'s checks are not graded (see the checks).');
+  await shot(page, '#inspection', 'inspection-points-unexplained.png');
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
 test('a class on a series value: the lead and the report\'s page 1 carry the * and its caveat, as the table does', async () => {
   const page = await openPage(base, { viewport: { width: 1366, height: 900 }, open: ON_DEMAND });
   await afterResult(page, () => page.setInputFiles('#load-case', dataCase('unground-sample-pass.json')));

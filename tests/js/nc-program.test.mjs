@@ -308,6 +308,13 @@ test('the header names the job from the case\'s job, in plain ASCII; the file is
   // A derived case's module: 4 significant digits in the name (a review found HOBSHARP_M8_110317242852).
   const derived = programFor(result, { ...paper, hob: { ...paper.hob, normalModule: 8.11031724285288 } }, 'sinumerik', { digits, date: new Date('2026-11-26T08:00:00Z') });
   assert.equal(derived.fileName, 'HOBSHARP_M8_11_20261126.mpf');
+  // A job number too long for the date beside it in 24 characters: the date left out whole, never
+  // cut to "202611" (the review of 2026-12-07 found HOBSHARP_J_4711_A_202612).
+  const long = programFor(result, { ...paper, job: { number: 'J-4711-A' } }, 'sinumerik', { digits, date: new Date('2026-11-26T08:00:00Z') });
+  assert.equal(long.fileName, 'HOBSHARP_J_4711_A.mpf');
+  const longer = programFor(result, { ...paper, job: { number: 'ORDER-2026-000123456' } }, 'heidenhain', { digits, date: new Date('2026-11-26T08:00:00Z') });
+  assert.equal(longer.fileName, 'HOBSHARP_ORDER_2026_0001.h');
+  assert.ok(longer.fileName.length <= 24 + 2);
   assert.match(programNote(none), /^1 POLY block of degree 5 at most; largest deviation from the axes [\d.e-]+ µm \(X, Y, Z\), [\d.e-]+° \(A, B\)\.$/);
 });
 

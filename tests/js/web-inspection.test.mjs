@@ -97,6 +97,29 @@ test('the warning names the checks whose U95 exceeds a tenth of their tolerance'
   assert.equal(uncertaintyWarningText({ ...i, uncertaintyWarning: '' }), '');
 });
 
+// Measured points the axes' model of the face does not explain (a shape no axis makes): the verdict,
+// the rake error and the rows say that the face's checks are not graded, and give no figure after the
+// correction read off that model; a gash spacing is still graded, and the sentence says the rest is not.
+test('points the axes do not explain: not graded in the verdict, no rake error, no figures after', () => {
+  const points = [];
+  for (let i = 0; i < 21; i += 1) {
+    for (let k = 0; k < 11; k += 1) {
+      const r = 19.1 + 20.8 * i / 20;
+      points.push([r, -68 + 136 * k / 10, 28 * Math.sin(4 * Math.PI * (r - 19) / 21)]);
+    }
+  }
+  const r = hobsharp.evaluate({ ...paper, measuredPoints: points, correction: { probeNoise: 0.5 } });
+  assert.match(r.inspection.faceNotGraded, /leaves 18 µm rms of the points unexplained/);
+  assert.equal(verdictSentence(r.inspection), 'Rake face (DIN 3968, module band over 6.3 to 10 mm, measured points): not graded (the axes\' model of the face does not explain the measured points: see the checks); '
+    + 'after the correction, if the identified error is all of the machine\'s: not graded (the axes\' model of the face does not explain the measured points: see the checks).');
+  assert.equal(rakeText(r.inspection, r.gearEffect), 'Rake error: not read, as the face\'s checks are not graded (see the checks).');
+  const rows = inspectionRows(r.inspection);
+  assert.ok(rows.filter((x) => x.check !== 'cuttingFaceForm').every((x) => x.grade === 'not graded' && x.value !== null && x.after === null), JSON.stringify(rows));
+  const spaced = hobsharp.evaluate({ ...paper, measuredPoints: points, correction: { probeNoise: 0.5 }, inspection: { gashDeviations: [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1] } });
+  assert.match(verdictSentence(spaced.inspection), /: class \w+ \(limited by the (pitch jump|single pitch \(adjacent spacing\))\), the face's checks not graded \(see the checks\)/);
+  assert.equal(hobsharp.evaluate({ ...paper, measured: grid(() => 30) }).inspection.faceNotGraded, '');
+});
+
 test('the rake error in a line: hook or drag, the offset, and the gear effect with the relief', () => {
   const hook = hobsharp.evaluate({ ...paper, measured: grid(() => -30), correction: { probeNoise: 1e-4 } });
   const text = rakeText(hook.inspection, hook.gearEffect);

@@ -89,6 +89,15 @@ test('the wheel profile CSV has its 41 points, r, R and Z in mm', () => {
   assert.equal(lines.length, 2 + 41);
   assert.deepEqual(lines[2].split(',').map(Number), [r.wheelProfile.r[0], r.wheelProfile.R[0], r.wheelProfile.Z[0]]);
   assert.ok(Math.abs(r.wheelProfile.R[0] - 49.999828) < 1e-5);
+  assert.match(lines[0], /conjugate wheel/);
+  // A dressed wheel's profile beside the conjugate one (the review of 2026-12-07: the CSV gave the
+  // conjugate wheel alone, headed as the wheel's).
+  const d = hobsharp.evaluate({ ...paper, wheel: { ...paper.wheel, profileOffset: { R: [30, 40, 50], offset: [2, -3, 4] } } });
+  const dl = profileCsv(d).trim().split('\n');
+  assert.equal(dl[1], 'r_mm,R_mm,Z_mm,R_dressed_mm,Z_dressed_mm');
+  assert.equal(dl.length, 2 + 41);
+  assert.deepEqual(dl[2].split(',').map(Number), [d.wheelProfile.r[0], d.wheelProfile.R[0], d.wheelProfile.Z[0], d.wheelProfile.dressedR[0], d.wheelProfile.dressedZ[0]]);
+  assert.ok(d.wheelProfile.dressedR.some((v, i) => v !== d.wheelProfile.R[i]), 'the dressed wheel differs');
 });
 
 // The effect on the gear in the record (docs/gear-effect.md): with the hob's relief,

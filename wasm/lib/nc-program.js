@@ -310,13 +310,15 @@ export function ncProgram(o) {
 
 // The program's name, also its file's: letters, digits and underscores, from the job number or
 // the hob's module (to 4 significant digits: M8_11, not a derived case's M8_110317242852) and the
-// date (HOBSHARP_M7_20261126).
+// date (HOBSHARP_M7_20261126), at most 24 characters (SINUMERIK's limit; HEIDENHAIN's name is
+// kept the same). The date is whole or left out: a long job number cut it to "202612", which
+// reads as another date.
+const NAME_MOST = 24;
 export function programName(header = {}, dialect = 'sinumerik') {
   const job = header && header.job && header.job.number !== undefined ? String(header.job.number) : '';
   const date = header && header.date ? String(header.date).replace(/[^0-9]/g, '') : '';
   const module = header && Number.isFinite(header.module) ? `M${String(Number(header.module.toPrecision(4))).replace('.', '_')}` : '';
-  const parts = ['HOBSHARP', job ? commentText(job, 20) : module, date].filter(Boolean);
-  let name = parts.join('_').toUpperCase().replace(/[^A-Z0-9_]/g, '_').replace(/_+/g, '_').slice(0, dialect === 'heidenhain' ? 24 : 24);
-  name = name.replace(/_$/, '');
-  return name;
+  const clean = (t) => t.toUpperCase().replace(/[^A-Z0-9_]/g, '_').replace(/_+/g, '_');
+  const base = clean(['HOBSHARP', job ? commentText(job, 20) : module].filter(Boolean).join('_')).slice(0, NAME_MOST).replace(/_$/, '');
+  return date && base.length + 1 + date.length <= NAME_MOST ? `${base}_${date}` : base;
 }

@@ -80,9 +80,13 @@ export function classLead(inspection, unitOf = unitText, rows = inspectionRows(i
 // pitch jump); after the correction, if the identified error is all of the machine's: class AA." A class that is not graded says why.
 export function verdictSentence(inspection) {
   if (!inspection) return '';
+  // The face's checks left ungraded (inspection.faceNotGraded): measured points the axes' model of
+  // the face does not explain; the table's gaps otherwise.
+  const faceNot = Boolean(inspection.faceNotGraded);
   const klass = (c, limiting) => (c === 'not graded'
-    ? 'not graded (the tolerance table has no value for this module on any check computed)'
-    : `class ${c}${limiting ? ` (limited by the ${label(limiting)})` : ''}`);
+    ? faceNot ? 'not graded (the axes\' model of the face does not explain the measured points: see the checks)'
+      : 'not graded (the tolerance table has no value for this module on any check computed)'
+    : `class ${c}${limiting ? ` (limited by the ${label(limiting)})` : ''}${faceNot ? ', the face\'s checks not graded (see the checks)' : ''}`);
   const source = { gashTopographies: 'the worst of the gash topographies', measuredPoints: 'measured points' }[inspection.source] || `${inspection.source} face`;
   let text = `Rake face (DIN 3968, module band ${inspection.moduleBand}, ${source}): ${klass(inspection.class, inspection.limitingCheck)}`;
   if (inspection.after && inspection.after.class) text += `; after the correction, if the identified error is all of the machine's: ${klass(inspection.after.class, inspection.after.limitingCheck)}`;
@@ -113,6 +117,8 @@ export function uncertaintyWarningText(inspection, unitOf = unitText) {
 // "Rake error: hook 2.1′ (0.050 mm into the tooth); the gear's pressure angle changes by −0.19′
 // (−4.8′ per degree of hook)." Null when the result has no rake error.
 export function rakeText(inspection, gearEffect, unitOf = unitText) {
+  // Read off a face that does not stand for the measurement (inspection.faceNotGraded): not given.
+  if (inspection && inspection.faceNotGraded) return 'Rake error: not read, as the face\'s checks are not graded (see the checks).';
   const angle = num(inspection && inspection.rakeAngle), offset = num(inspection && inspection.rakeOffset);
   if (angle === null || offset === null) return null;
   const angleUnit = unitOf('inspection.rakeAngle'), offsetUnit = unitOf('inspection.rakeOffset');
@@ -171,7 +177,9 @@ export function inspectionRows(inspection, { unitOf = unitText, confidenceOf = n
       confidence: c.confidence || '', series,
       source: c.source || '', uncertainty: num(c.uncertainty),
       tolerances: (c.classes || []).map((name, i) => `${name} ${fmt(c.tolerances[i], 4)}${star(name)}`).join(' · ') || 'none in the table',
-      after: k in a || afterChecks[k] ? { value: num(a[k]), grade: afterChecks[k] ? afterChecks[k].grade : '' } : null,
+      // After the correction: not where the face's checks rest on a model that does not explain the points.
+      after: (k in a || afterChecks[k]) && !(inspection.faceNotGraded && !CHECK_WORDS[k].spacing)
+        ? { value: num(a[k]), grade: afterChecks[k] ? afterChecks[k].grade : '' } : null,
     };
   });
 }

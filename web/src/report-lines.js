@@ -38,11 +38,6 @@ export function verdictWord(verdict) {
   const m = /^([^:.]{1,80}):/.exec(String(verdict || ''));
   return m ? m[1] : '';
 }
-// What the bound holds on, in the verdict's own words (the module's, face_prediction.cpp), and
-// its warning that part of the face may stay unground (an error it cannot show, a fold, the edge
-// of the wheel's envelope).
-const CONDITION = / if the error the face cannot show[^.;]*? is no larger than the one it shows/;
-const UNGROUND = /\bunground\b/;
 
 // "Class A — conforms; Correctable: face 12.3 µm rms measured, at most 0.11 µm rms after the
 // correction": the rake face's class with its conformity (ISO 14253-1), the verdict's lead word
@@ -68,13 +63,15 @@ export function verdictLine(result, unitOf, rows) {
     if (c.runKept === true) return `${head}; ${measured}: no change proposed, keep the axes run.`;
     const verdict = String(c.verdict || '');
     const word = verdictWord(verdict);
-    const warning = UNGROUND.test(verdict) ? '; part of the face may stay unground' : '';
+    // Where some errors the face cannot show leave part of it unground (correction.mayStayUnground).
+    const warning = c.mayStayUnground === true ? '; part of the face may stay unground' : '';
     // What the pass leaves by its bound alone (words.js, predictionText): the model's figure below
     // it is what the pass leaves only if the identified error is all of the machine's.
     const high = num(c.predictedRmsHigh);
     const lead = `${head}; ${word ? `${word}: ` : ''}${measured}`;
     if (high === null) return `${lead}${warning}.`;
-    const condition = (CONDITION.exec(verdict) || [''])[0];
+    // What the bound assumes, in the verdict's words (correction.boundCondition).
+    const condition = typeof c.boundCondition === 'string' && c.boundCondition ? ` ${c.boundCondition}` : '';
     return `${lead}, at most ${figure(Math.max(high, LEAST_RMS), unitOf('correction.predictedRmsHigh'))} rms after the correction${condition}${floorNote(c, unitOf)}${warning}.`;
   }
   const simulated = num(result && result.topography && result.topography.rms);

@@ -103,10 +103,17 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   return BOM + lines.join('\n') + '\n';
 }
 
+// The conjugate wheel's profile (it grinds the nominal face), and where the case gives the wheel a
+// profile offset or a measured profile, that wheel's beside it (wheelProfile.dressedR, dressedZ):
+// read back (wasm/lib/wheel-csv.js), R and Z are the conjugate wheel's, the dressed columns left out.
 export function profileCsv(r) {
   const p = r.wheelProfile;
-  const rows = ['# wheel axial profile: tooth-face radius r, wheel radius R, axial position Z (mm)', 'r_mm,R_mm,Z_mm'];
-  p.r.forEach((radius, i) => rows.push(`${radius},${p.R[i]},${p.Z[i]}`));
+  const dressed = Array.isArray(p.dressedR) && Array.isArray(p.dressedZ) && p.dressedR.length === p.r.length && p.dressedZ.length === p.r.length;
+  const rows = dressed
+    ? ['# wheel axial profile (mm): tooth-face radius r; the conjugate wheel, which grinds the nominal face: wheel radius R, axial position Z; '
+      + 'the case\'s dressed (or measured) wheel: R_dressed, Z_dressed', 'r_mm,R_mm,Z_mm,R_dressed_mm,Z_dressed_mm']
+    : ['# wheel axial profile of the conjugate wheel, which grinds the nominal face: tooth-face radius r, wheel radius R, axial position Z (mm)', 'r_mm,R_mm,Z_mm'];
+  p.r.forEach((radius, i) => rows.push(dressed ? `${radius},${p.R[i]},${p.Z[i]},${p.dressedR[i]},${p.dressedZ[i]}` : `${radius},${p.R[i]},${p.Z[i]}`));
   return rows.join('\n') + '\n';
 }
 
