@@ -7,7 +7,11 @@
 
 namespace hobsharp {
 
-std::string unexplainedPointsText(const Correction& c, double probeNoise) {
+std::string unexplainedPointsText(const Evaluation& e) {
+  // Only measuredPoints off the grid are inspected on a model's face (inspectedFace).
+  if (!e.correction || !e.correction->atProbes() || e.job.measured.grid) return "";
+  const Correction& c = *e.correction;
+  const double probeNoise = e.job.correction.probeNoise;
   if (!(c.unexplainedRms > 2 * probeNoise)) return "";
   std::ostringstream t;
   t.precision(2);
@@ -45,7 +49,7 @@ void inspectEvaluation(Evaluation& e) {
   // stands for the measurement only where that explains the points to within twice the probe noise
   // (the verdict's own test, Correction::leavesWithinNoise). Beyond, its readings are a model's,
   // not the indicator's, and the face's checks are not graded (docs/measured-points.md).
-  const std::string faceNotGraded = points && !job.measured.grid ? unexplainedPointsText(*e.correction, job.correction.probeNoise) : "";
+  const std::string faceNotGraded = unexplainedPointsText(e);
   std::vector<double> deviations = plan.gashDeviations;
   if (!plan.gashTopographies.empty()) {
     e.gashFaces = inspectGashFaces(plan.gashTopographies, lines, helical, job.setup.face.pitchRadius);

@@ -73,9 +73,10 @@ struct InspectedFace {
   FaceSource source;
 };
 InspectedFace inspectedFace(const Evaluation& e);
-// For measuredPoints off the grid: why the face explained on the grid does not stand for the
-// measurement (it leaves more than twice the probe noise of the points unexplained, rms), in words
-// that follow "Not graded: ..."; "" where it does.
-std::string unexplainedPointsText(const Correction& c, double probeNoise);
+// Why the face inspectedFace() gives does not stand for the measurement, in words that follow
+// "Not graded: ...": for measuredPoints off the grid, where the face the identified error explains
+// on the grid leaves more than twice the probe noise of the points unexplained (rms); "" where it
+// stands for it (and for every other source).
+std::string unexplainedPointsText(const Evaluation& e);
 
 }  // namespace hobsharp

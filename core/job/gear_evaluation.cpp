@@ -21,13 +21,11 @@ void gearEvaluation(Evaluation& e) {
   e.pressureAnglePerRake.reset();
   e.gearEffectReason = k.missing;
   if (!k.value) return;
-  // The face inspected (inspectEvaluation): the measured grid, else the simulated topography.
+  // The face inspected (inspectEvaluation, inspectedFace).
   const Eigen::MatrixXd& face = inspectedFace(e).normal;
   const BasicRack& rack = job.gear.rack;
   // Measured points the face on the grid does not explain: no gear effect of a model's face.
-  const std::string unexplained =
-      e.correction && e.correction->atProbes() && !e.job.measured.grid
-          ? unexplainedPointsText(*e.correction, job.correction.probeNoise) : "";
+  const std::string unexplained = unexplainedPointsText(e);
   if (!unexplained.empty()) {
     e.gearEffectReason = "No gear effect: " + unexplained + ".";
     return;
