@@ -163,6 +163,23 @@ TEST(PassHistory, AThirdStartJoinsFacesTheTwoDidNot) {
   EXPECT_LT(rms(groundOnMachine(p, k.axes)), 2.0);
 }
 
+// A pass joined with the history and linearised at the nominal axes (its axes alone grind no face):
+// the bound samples what this face alone does not show too (face_prediction.cpp). Seed 9005,
+// scenario 164 (helical gash, 150 µm rms), second pass: one error explains both faces to the probe
+// noise, yet the machine's own error is another one, and the proposal leaves 1.26 µm rms on the
+// probe grid. The bound sampling only what the joined faces do not show was 0.00654 µm, with
+// "Correctable" (an independent review, 2026-12-07); now it holds, and the verdict says "Uncertain".
+TEST(PassHistory, AJoinedPassLinearisedAtTheNominalAxesBoundsWhatItsOwnFaceDoesNotShow) {
+  const Passes p = twoPasses(164, 9005);
+  const Correction k = corrected(secondCase(p, true));
+  ASSERT_EQ(k.passesJoined, 1) << k.verdict;
+  ASSERT_TRUE(k.linearisedAtNominal);
+  const double left = rms(groundOnMachine(p, k.axes));
+  EXPECT_GT(left, 1.0);
+  EXPECT_LE(left, k.predictedRmsHigh);
+  EXPECT_EQ(k.verdict.rfind("Uncertain:", 0), 0u) << k.verdict;
+}
+
 // Where no start explains the faces, the note says how much the nearest left. Seed 3, scenario 578
 // (straight gash, 150 µm rms), second pass: no start explains both faces; the nearest leaves 5.9 µm
 // rms over them. (Seed 99's scenario 92 was this test's case, 0.2 µm rms left, 0.15 µm after two
