@@ -284,6 +284,32 @@ TEST(Correction, TheVerdictSaysWhichNoiseItMeans) {
   EXPECT_EQ(c.verdict.find("down to the probe noise"), std::string::npos);
 }
 
+// The same checkerboard alone (0.95 µm, no machine error): no axis direction stands above the
+// noise and nothing is changed, so the verdict says no change is proposed, not "Correctable" (an
+// independent review, 2026-12-07, found "Correctable … to within twice the probe noise" here,
+// which sends the engineer to grind the same face again).
+TEST(Correction, AShapeNoAxisMakesWithinTwiceTheNoiseProposesNoChange) {
+  constexpr double kSigma = 0.5;  // µm
+  const SharpeningJob nominalJob = jobOf(paperCase());
+  const FaceGrid& g = nominalJob.grid;
+  Eigen::MatrixXd shape(g.rows(), g.cols());
+  for (int i = 0; i < g.rows(); ++i)
+    for (int j = 0; j < g.cols(); ++j) shape(i, j) = (i + j) % 2 ? -0.95 : 0.95;
+  CaseInput in = paperCase();
+  in.measured = shape;
+  in.correction.probeNoise = kSigma;
+  auto e = evaluate(jobOf(in));
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  const Correction& c = *e->correction;
+  EXPECT_FALSE(c.stop);
+  EXPECT_EQ(c.change.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(c.verdict.rfind("No change proposed: no axis direction in the face measured (0.95 µm rms) stands above the "
+                            "probe noise (sigma 0.5 µm)", 0),
+            0u)
+      << c.verdict;
+  EXPECT_EQ(c.verdict.find("Correctable"), std::string::npos) << c.verdict;
+}
+
 TEST(Correction, EvaluationWithMeasuredGivesTheCorrection) {
   CaseInput in = paperCase();
   const SharpeningJob nominalJob = jobOf(in);

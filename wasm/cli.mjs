@@ -67,7 +67,10 @@ if (pointsFile) {
     process.exit(1);
   }
   try {
-    const { points } = readPoints(csv);
+    const { points, warnings, skippedText } = readPoints(csv);
+    // What the page shows beside the points: a unit that looks wrong, the lines skipped.
+    for (const w of warnings) process.stderr.write(`${pointsFile}: warning: ${w.text}\n`);
+    if (skippedText) process.stderr.write(`${pointsFile}: ${skippedText}\n`);
     if (caseObject && typeof caseObject === 'object') {
       delete caseObject.measured;
       caseObject.measuredPoints = points;
@@ -84,12 +87,14 @@ try {
   const json = hobsharp.evaluateToJson(caseText);
   if (pointsOut) {
     const c = JSON.parse(json).correction;
+    // Points at the grid's positions are the grid (docs/measured-points.md): the result stands,
+    // and there are no points of their own to write.
     if (!c || !c.pointMeasured) {
-      process.stderr.write('--points-out: the case has no measured points off the grid to write.\n');
-      process.exit(1);
+      process.stderr.write(`--points-out: nothing written: ${c ? 'the points lie on the grid, and the result is the grid\'s' : 'the case has no measured face'}.\n`);
+    } else {
+      writeFileSync(`${pointsOut}-measured.csv`, pointsToCsv(c.pointMeasured));
+      writeFileSync(`${pointsOut}-predicted.csv`, pointsToCsv(c.pointResidual));
     }
-    writeFileSync(`${pointsOut}-measured.csv`, pointsToCsv(c.pointMeasured));
-    writeFileSync(`${pointsOut}-predicted.csv`, pointsToCsv(c.pointResidual));
   }
   writeResultX3p(JSON.parse(json), caseText, x3p, hobsharp.resultFields()).forEach((f) => process.stderr.write(`wrote ${f}\n`));
   if (nc) {

@@ -87,6 +87,14 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
            "explains this face and the next together.";
   } else if (unfinished) {
     v << "Identification " << how << "; the best estimate is proposed: " << leaves << ". " << c.summary.reason;
+  } else if (withinNoise && c.uncorrectableShare > o.correctableShare &&
+             (c.change.size() == 0 || c.change.cwiseAbs().maxCoeff() == 0.0)) {
+    // Nothing to cancel: no axis direction stands above the noise, and the shape left is none an
+    // axis makes; "Correctable" would send the engineer to grind the same face again.
+    v << "No change proposed: no axis direction in the face measured (" << c.before.rms
+      << " µm rms) stands above the probe noise (sigma " << o.probeNoise
+      << " µm); its shape is one no axis polynomial produces, within twice the probe noise (rms). The axes run stay "
+         "as they are: another pass with them grinds the same face.";
   } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
     v << "Correctable: the axes can cancel the measured deviation"
       << (withinNoise && c.uncorrectableShare > o.correctableShare ? " to within twice the probe noise (rms)" : "")

@@ -72,9 +72,37 @@ test('malformed points files and refused points are named on stderr', () => {
   run = cli(paperFile, '--points', bad);
   assert.match(run.stderr, /Measured points: 10 points are too few for the 25 free coefficients/);
   assert.equal(cli(paperFile, '--points').status, 2, 'a usage error');
+  // Nothing to write is no reason to lose the result (an independent review, 2026-12-07).
   run = cli(paperFile, '--points-out', path.join(dir, 'none'));
-  assert.equal(run.status, 1);
-  assert.match(run.stderr, /no measured points off the grid/);
+  assert.equal(run.status, 0);
+  assert.ok(JSON.parse(run.stdout).topography);
+  assert.equal(run.stderr, '--points-out: nothing written: the case has no measured face.\n');
+});
+
+// What the page shows beside a points file, the CLI says on stderr; points on the grid give the
+// grid's result, and --points-out says it writes nothing (an independent review, 2026-12-07: the
+// CLI kept the points alone, so deviations in mm under a µm header read as a face within the
+// noise without a word, and lines before the header were dropped silently).
+test('the CLI says what the points reader warns of, and points on the grid keep their result', async () => {
+  const hobsharp = await loadHobSharp();
+  const paper = JSON.parse(readFileSync(paperFile, 'utf8'));
+  const { r, x } = hobsharp.evaluate(paper).topography;
+  const rows = [];
+  r.forEach((ri, i) => x.forEach((xj, j) => rows.push(`${ri},${xj},${(Math.sin(i + 2 * j) * 0.004).toPrecision(3)}`)));
+  const header = 'r (mm),x (mm),deviation (µm)';
+  const small = path.join(dir, 'small.csv');
+  writeFileSync(small, [header, ...rows].join('\n'));
+  let run = cli(paperFile, '--points', small, '--points-out', path.join(dir, 'grid'));
+  assert.equal(run.status, 0, run.stderr);
+  assert.match(run.stderr, /small\.csv: warning: The largest \|deviation\| is 0\.004 µm, below what a probe resolves: these look like mm/);
+  assert.match(run.stderr, /--points-out: nothing written: the points lie on the grid, and the result is the grid's\.\n$/);
+  assert.equal(JSON.parse(run.stdout).inspection.source, 'measuredPoints');
+  assert.ok(JSON.parse(run.stdout).correction.verdict);
+  const before = path.join(dir, 'before.csv');
+  writeFileSync(before, ['19.5,-65,1', '20,-61.7,0.5', header, ...rows.map((l) => l.replace(/,[^,]*$/, ',1.5'))].join('\n'));
+  run = cli(paperFile, '--points', before);
+  assert.equal(run.status, 0, run.stderr);
+  assert.match(run.stderr, /before\.csv: Skipped 2 lines/);
 });
 
 test("the results CSV's point blocks read back as points CSVs, in either style", async () => {
