@@ -377,6 +377,15 @@ TEST(GearEffect, BadReliefIsRefusedNamingTheField) {
   EXPECT_TRUE(parseCase(j.dump()).ok());
   j["hob"].erase("gashes");
   expectRefused(j, "hob.gashes", "needed to check");
+  // The relief and the gashes alone are held to the side relief angle's limit too (an independent
+  // review, 2026-12-07: 39 mm, a slipped digit for 3.9, was taken as a side relief of 39.2 deg).
+  j["hob"].erase("sideReliefAngle");
+  j["hob"]["gashes"] = 12;
+  j["hob"]["relief"] = 39;
+  expectRefused(j, "hob.relief", "with 12 gashes gives a side relief angle of 39.2 deg at the pitch diameter, more than "
+                                 "the 30 deg a hob has");
+  j["hob"]["relief"] = 3.9;
+  EXPECT_TRUE(parseCase(j.dump()).ok());
 }
 
 }  // namespace

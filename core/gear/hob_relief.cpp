@@ -19,6 +19,19 @@ Outcome<void> checkRelief(const HobReliefInput& out, double outerDiameter, doubl
   if (out.sideReliefAngle && (*out.sideReliefAngle <= 0 || *out.sideReliefAngle > kMaxSideReliefAngle))
     return refuse("hob.sideReliefAngle", "must lie over 0 up to " + numberText(kMaxSideReliefAngle) + " deg; got " +
                                              exactText(*out.sideReliefAngle) + " deg.");
+  // The relief and the gashes give a side relief angle: held to the same limit as one given (a
+  // slipped digit, 39 for 3.9 mm, is a side relief of 39 deg on a module-4.5 hob).
+  if (out.relief && out.gashes && !out.sideReliefAngle) {
+    const double alpha = normalPressureAngle * kRadPerDeg, rp = pitchDiameter / 2;
+    if (alpha > 0 && rp > 0) {
+      const double implied = sideReliefAngleAt(reliefPerRadianFromCam(*out.relief, *out.gashes), rp, alpha) * kDegPerRad;
+      if (implied > kMaxSideReliefAngle)
+        return refuse("hob.relief", "with " + std::to_string(*out.gashes) + " gashes gives a side relief angle of " +
+                                        numberText(std::round(implied * 10) / 10) + " deg at the pitch diameter, more than the " +
+                                        numberText(kMaxSideReliefAngle) + " deg a hob has; got " +
+                                        exactText(*out.relief) + " mm (the cam rise over one gash pitch).");
+    }
+  }
   if (out.relief && out.sideReliefAngle) {
     if (!out.gashes)
       return refuse("hob.gashes", "is needed to check hob.relief against hob.sideReliefAngle.");
