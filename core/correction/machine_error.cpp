@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string>
 
+#include "correction.h"
 #include "face_vectors.h"
 #include "identification.h"
 #include "sensitivity_matrix.h"
@@ -233,7 +234,15 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
     misfit.precision(2);
     if (found) misfit << " (" << misfitOf(j) << " µm rms left)";
     const SolveStatus st = found ? found->summary.status : SolveStatus::Failed;
-    if (st == SolveStatus::AboveNoise)
+    // Locked axes are not sought: their error stays in every face, and no error over the free ones
+    // may explain them together, with nothing changed on the machine.
+    const std::string locked = lockedText(run.degree(), o);
+    if (st == SolveStatus::AboveNoise && !locked.empty())
+      m.historyNote = "No one error of the axes left free (" + locked + " locked) explains " + these +
+                      " to the probe noise" + misfit.str() + left +
+                      ": identified from this face alone. A locked axis's error stays in every face; unlock " + locked +
+                      " to seek one error over them all.";
+    else if (st == SolveStatus::AboveNoise)
       m.historyNote = "No one machine error explains " + these + " to the probe noise" + misfit.str() + left +
                       ": identified from this face alone (has the machine or the setup changed?).";
     else if (st == SolveStatus::NoConvergence)
