@@ -310,6 +310,37 @@ TEST(Correction, AShapeNoAxisMakesWithinTwiceTheNoiseProposesNoChange) {
   EXPECT_EQ(c.verdict.find("Correctable"), std::string::npos) << c.verdict;
 }
 
+// A face within the whole-face chi-square ceiling is not told to stop when a shape the axes make
+// stands out of the noise in it (measured_face_correction.cpp, kStopDeviations): a Y a0 shape of
+// 0.6 µm rms at sigma 0.5 µm, about 8 sigma along its one direction on Tab. 1's 45 points (an
+// independent review, 2026-12-07, had it told to stop). Scaled to half of that, about 4 sigma, it is
+// within the noise and is told to stop.
+TEST(Correction, AShapeTheAxesMakeAboveTheNoiseIsNotToldToStop) {
+  constexpr double kSigma = 0.5;  // µm
+  const SharpeningJob nominalJob = jobOf(paperCase());
+  AxisPolynomials shifted = nominalJob.nominalAxes;
+  shifted[Axis::Y].a[0] += 0.001;  // 1 µm
+  const Eigen::MatrixXd unit = topographyFor(nominalJob, shifted).normal;
+  const double unitRms = std::sqrt(unit.squaredNorm() / static_cast<double>(unit.size()));
+  for (const double rms : {0.6, 0.3}) {
+    CaseInput in = paperCase();
+    in.measured = unit * (rms / unitRms);
+    in.correction.probeNoise = kSigma;
+    auto e = evaluate(jobOf(in));
+    ASSERT_TRUE(e.ok()) << e.error().message;
+    const Correction& c = *e->correction;
+    // Both are within the whole-face ceiling (45 sigma² (1 + 3 sqrt(2/45)), 0.64 µm rms).
+    ASSERT_LT(c.before.rms, 0.64);
+    if (rms == 0.6) {
+      EXPECT_FALSE(c.stop) << c.verdict;
+      EXPECT_EQ(c.verdict.rfind("Correctable:", 0), 0u) << c.verdict;
+      EXPECT_LT(c.predictedRmsHigh, 0.3);
+    } else {
+      EXPECT_TRUE(c.stop) << c.verdict;
+    }
+  }
+}
+
 TEST(Correction, EvaluationWithMeasuredGivesTheCorrection) {
   CaseInput in = paperCase();
   const SharpeningJob nominalJob = jobOf(in);

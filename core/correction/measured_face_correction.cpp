@@ -7,6 +7,8 @@
 #include <sstream>
 #include <vector>
 
+#include <Eigen/QR>
+
 #include "correction.h"
 #include "face_prediction.h"
 #include "earlier_passes.h"
@@ -15,10 +17,30 @@
 #include "machine_error.h"
 #include "structural_null_space.h"
 #include "number_text.h"
+#include "sensitivity_matrix.h"
 #include "solve_report.h"
 
 namespace hobsharp {
 namespace {
+
+// A shape the axes make stands out of the noise when the face's sum of squares in the span of the
+// run face's sensitivities over the free coefficients (k directions) exceeds the chi-square's mean
+// by this many of its standard deviations, sigma² (k + kStopDeviations sqrt(2k)). Pure noise
+// reaches it with a probability of about 1e-4 (k = 25); a single such shape is found from about 6
+// sigma along its direction, which a whole-face sum of squares within the chi-square ceiling
+// (noiseCeiling) can hide: an independent review (2026-12-07) had a Y a0 shape of 0.6 µm rms at
+// sigma 0.5 µm (8 sigma along its direction on Tab. 1's 45 points) told to stop.
+constexpr double kStopDeviations = 5;
+
+// True when the measured face holds a shape the free coefficients make above the probe noise.
+bool axisShapeAboveNoise(const GroundFace& runFace, const Eigen::MatrixXd& measured, const std::vector<Coefficient>& cs,
+                         double sigma) {
+  if (cs.empty() || !(sigma > 0)) return false;
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(sensitivityMatrix(runFace, cs).normal);
+  const double k = qr.rank();
+  const Eigen::MatrixXd Q = Eigen::MatrixXd(qr.householderQ()).leftCols(qr.rank());
+  return (Q.transpose() * flat(measured)).squaredNorm() > sigma * sigma * (k + kStopDeviations * std::sqrt(2 * k));
+}
 
 // The face's normal deviations (µm) as a grid, or one column at probe points.
 Eigen::MatrixXd normalOf(const GroundFace& f) { return gridOf(faceNormal(f), f.rows(), f.cols()); }
@@ -247,7 +269,8 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   // Within the noise: the measured sum of squares is what the probe's noise alone gives
   // (noiseCeiling). Then the verdict says to stop, and the axes run are kept: a change would only
   // move noise.
-  c.stop = c.before.sse <= noiseCeiling(runFace.size(), o.probeNoise);
+  c.stop = c.before.sse <= noiseCeiling(runFace.size(), o.probeNoise) &&
+           !axisShapeAboveNoise(runFace, measured, c.coefficients, o.probeNoise);
   if (c.stop) {
     c.axes = run;
     c.change.setZero();
