@@ -91,6 +91,9 @@ test("the report's verdict line: the class with its conformity, the face's rms b
   assert.equal(verdictLine(r, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; Correctable: face ${f(c.rmsBefore)} µm rms measured, at most ${
     f(c.predictedRmsHigh)} µm rms after the correction if the error the face cannot show is no larger than the one it shows.`);
   assert.equal(verdictLine({ ...r, correction: { ...c, runKept: true } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured: no change proposed, keep the axes run.`);
+  // Nothing changed (no axis direction above the noise: every change 0): the same, not "at most … after".
+  const unchanged = { ...c, change: c.change.map(() => 0) };
+  assert.equal(verdictLine({ ...r, correction: unchanged }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured: no change proposed, keep the axes run.`);
   assert.equal(verdictLine({ ...r, correction: { ...c, predictedRmsHigh: NaN } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; Correctable: face ${f(c.rmsBefore)} µm rms measured.`);
   // Within the probe noise: stop, the axes run stay.
   const quiet = hobsharp.evaluate({ ...paper, measured: measured.map((row) => row.map(() => 0.01)), correction: { probeNoise: 0.5 } });
@@ -117,6 +120,7 @@ test("the answer's rms line: after the pass the prediction's bound, never the id
   // A proposal not to be run: nothing after it; a bound below a nanometre reads as 0.001, not 0.000.
   assert.equal(rmsText({ ...r, correction: { ...c, usable: false } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured.`);
   assert.equal(rmsText({ ...r, correction: { ...c, runKept: true } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured: no change proposed, the axes run stay.`);
+  assert.equal(rmsText({ ...r, correction: { ...c, change: c.change.map(() => 0) } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured: no change proposed, the axes run stay.`);
   // ... and below the pass's floor (the position resolution's), the floor follows it.
   assert.ok(c.resolutionFloor > 2e-4 && c.resolutionFloor < c.predictedRmsHigh, `floor ${c.resolutionFloor} µm`);
   assert.match(rmsText({ ...r, correction: { ...c, predictedRmsHigh: 2e-4 } }, fieldUnit),

@@ -3,8 +3,17 @@
 // kept (no change proposed), a proposal that is not to be used, or no finite bound. Shared by the
 // page's sentences and files and the CLI's X3P (pure, with Node tests).
 export function passBound(c) {
-  if (!c || c.stop === true || c.runKept === true || c.usable === false) return null;
+  if (!c || c.stop === true || changesNothing(c) || c.usable === false) return null;
   return Number.isFinite(c.predictedRmsHigh) ? c.predictedRmsHigh : null;
+}
+
+// True where the correction proposes no change of the axes run: a run kept (the correction found
+// would leave more), every axis locked, or no axis direction above the probe noise (every
+// correction.change 0; the verdict then starts "No change proposed:"). A stop also keeps the axes,
+// and says so in its own words.
+export function changesNothing(c) {
+  if (!c) return false;
+  return c.runKept === true || (Array.isArray(c.change) && c.change.every((v) => v === 0));
 }
 
 // The pass's floor (correction.resolutionFloor, µm rms on the probe grid: what quantising each axis

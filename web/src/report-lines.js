@@ -7,6 +7,7 @@ import { classLead } from './inspection-table.js';
 import { LEAST_RMS, faceFigure, fmt } from './format.js';
 import { inputRows } from './io/input-rows.js';
 import { floorNote } from './words.js';
+import { changesNothing } from '../../wasm/lib/pass-bound.js';
 
 const num = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
 // An rms to 3 significant digits; below a nanometre, what no measurement tells apart from zero, as
@@ -60,7 +61,7 @@ export function verdictLine(result, unitOf, rows) {
     const unit = unitOf('correction.rmsBefore');
     const measured = `face ${figure(before, unit)} rms measured`;
     if (c.stop === true) return `${head}; ${measured}: within the probe noise, keep the axes run.`;
-    if (c.runKept === true) return `${head}; ${measured}: no change proposed, keep the axes run.`;
+    if (changesNothing(c)) return `${head}; ${measured}: no change proposed, keep the axes run.`;
     const verdict = String(c.verdict || '');
     const word = verdictWord(verdict);
     // Where some errors the face cannot show leave part of it unground (correction.mayStayUnground).

@@ -7,6 +7,7 @@
 import { LEAST_RMS, rmsFixed } from '../format.js';
 import { fieldUnit } from '../result-fields.js';
 import { floorNote } from '../words.js';
+import { changesNothing } from '../../../wasm/lib/pass-bound.js';
 
 const $ = (selector) => document.querySelector(selector);
 
@@ -42,8 +43,9 @@ export function rmsText(result, unitOf = fieldUnit) {
     if (c.stop === true) return `${measured}: within the probe noise, the axes run stay.`;
     // A proposal that is not to be run: nothing after it either.
     if (c.usable === false) return `${measured}.`;
-    // No change proposed (the correction found would leave more): the axes run stay.
-    if (c.runKept === true) return `${measured}: no change proposed, the axes run stay.`;
+    // No change proposed (the correction found would leave more, or nothing stands above the
+    // noise): the axes run stay.
+    if (changesNothing(c)) return `${measured}: no change proposed, the axes run stay.`;
     if (high && Number.isFinite(c.predictedRmsHigh))
       // A bound below the least rms written reads "at most 0.001", not 0.000.
       return `${measured} → at most ${rmsFixed(Math.max(c.predictedRmsHigh, LEAST_RMS))} ${high} after the pass${floorNote(c, unitOf)}.`;
