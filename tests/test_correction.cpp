@@ -259,16 +259,19 @@ TEST(Correction, MeasuredOfTheWrongShapeIsRefused) {
 // "to within twice the probe noise", never "down to the probe noise", which the status's
 // chi-square ceiling (1.28 sigma on Tab. 1's 45 points) could deny beside it ("ended above the
 // probe noise").
+// A checkerboard of `amplitude` µm on g: + and - from point to point, which no smooth axis motion grinds.
+Eigen::MatrixXd checkerboard(const FaceGrid& g, double amplitude) {
+  Eigen::MatrixXd shape(g.rows(), g.cols());
+  for (int i = 0; i < g.rows(); ++i)
+    for (int j = 0; j < g.cols(); ++j) shape(i, j) = (i + j) % 2 ? -amplitude : amplitude;
+  return shape;
+}
+
 TEST(Correction, TheVerdictSaysWhichNoiseItMeans) {
   constexpr double kSigma = 0.5;  // µm
   const SharpeningJob nominalJob = jobOf(paperCase());
-  const FaceGrid& g = nominalJob.grid;
-  // A checkerboard of 0.9 µm: + and - from point to point, which no smooth axis motion grinds.
-  Eigen::MatrixXd shape(g.rows(), g.cols());
-  for (int i = 0; i < g.rows(); ++i)
-    for (int j = 0; j < g.cols(); ++j) shape(i, j) = (i + j) % 2 ? -0.9 : 0.9;
   CaseInput in = paperCase();
-  in.measured = topographyFor(nominalJob, machineError(nominalJob.nominalAxes)).normal + shape;
+  in.measured = topographyFor(nominalJob, machineError(nominalJob.nominalAxes)).normal + checkerboard(nominalJob.grid, 0.9);
   in.correction.probeNoise = kSigma;
   auto e = evaluate(jobOf(in));
   ASSERT_TRUE(e.ok()) << e.error().message;
@@ -290,13 +293,8 @@ TEST(Correction, TheVerdictSaysWhichNoiseItMeans) {
 // which sends the engineer to grind the same face again).
 TEST(Correction, AShapeNoAxisMakesWithinTwiceTheNoiseProposesNoChange) {
   constexpr double kSigma = 0.5;  // µm
-  const SharpeningJob nominalJob = jobOf(paperCase());
-  const FaceGrid& g = nominalJob.grid;
-  Eigen::MatrixXd shape(g.rows(), g.cols());
-  for (int i = 0; i < g.rows(); ++i)
-    for (int j = 0; j < g.cols(); ++j) shape(i, j) = (i + j) % 2 ? -0.95 : 0.95;
   CaseInput in = paperCase();
-  in.measured = shape;
+  in.measured = checkerboard(jobOf(in).grid, 0.95);
   in.correction.probeNoise = kSigma;
   auto e = evaluate(jobOf(in));
   ASSERT_TRUE(e.ok()) << e.error().message;
