@@ -301,8 +301,9 @@ TEST(Correction, AShapeNoAxisMakesWithinTwiceTheNoiseProposesNoChange) {
   const Correction& c = *e->correction;
   EXPECT_FALSE(c.stop);
   EXPECT_EQ(c.change.cwiseAbs().maxCoeff(), 0.0);
-  EXPECT_EQ(c.verdict.rfind("No change proposed: no axis direction in the face measured (0.95 µm rms) stands above the "
-                            "probe noise (sigma 0.5 µm)", 0),
+  EXPECT_EQ(c.verdict.rfind("No change proposed: no shape the axes make stands out of the probe noise (sigma 0.5 µm) in "
+                            "the face measured (0.95 µm rms); what is left is a shape they do not produce",
+                            0),
             0u)
       << c.verdict;
   EXPECT_EQ(c.verdict.find("Correctable"), std::string::npos) << c.verdict;
@@ -310,9 +311,9 @@ TEST(Correction, AShapeNoAxisMakesWithinTwiceTheNoiseProposesNoChange) {
 
 // A face within the whole-face chi-square ceiling is not told to stop when a shape the axes make
 // stands out of the noise in it (measured_face_correction.cpp, kStopDeviations): a Y a0 shape of
-// 0.6 µm rms at sigma 0.5 µm, about 8 sigma along its one direction on Tab. 1's 45 points (an
-// independent review, 2026-12-07, had it told to stop). Scaled to half of that, about 4 sigma, it is
-// within the noise and is told to stop.
+// 0.6 µm rms at sigma 0.5 µm, about 8 sigma along its one direction on Tab. 1's 45 points, and
+// 0.53 µm, about 7 sigma (an independent review, 2026-12-07, had both told to stop). At 0.3 µm,
+// about 4 sigma, it is within the noise and is told to stop.
 TEST(Correction, AShapeTheAxesMakeAboveTheNoiseIsNotToldToStop) {
   constexpr double kSigma = 0.5;  // µm
   const SharpeningJob nominalJob = jobOf(paperCase());
@@ -320,7 +321,7 @@ TEST(Correction, AShapeTheAxesMakeAboveTheNoiseIsNotToldToStop) {
   shifted[Axis::Y].a[0] += 0.001;  // 1 µm
   const Eigen::MatrixXd unit = topographyFor(nominalJob, shifted).normal;
   const double unitRms = std::sqrt(unit.squaredNorm() / static_cast<double>(unit.size()));
-  for (const double rms : {0.6, 0.3}) {
+  for (const double rms : {0.6, 0.53, 0.3}) {
     CaseInput in = paperCase();
     in.measured = unit * (rms / unitRms);
     in.correction.probeNoise = kSigma;
@@ -329,7 +330,7 @@ TEST(Correction, AShapeTheAxesMakeAboveTheNoiseIsNotToldToStop) {
     const Correction& c = *e->correction;
     // Both are within the whole-face ceiling (45 sigma² (1 + 3 sqrt(2/45)), 0.64 µm rms).
     ASSERT_LT(c.before.rms, 0.64);
-    if (rms == 0.6) {
+    if (rms > 0.5) {
       EXPECT_FALSE(c.stop) << c.verdict;
       EXPECT_EQ(c.verdict.rfind("Correctable:", 0), 0u) << c.verdict;
       EXPECT_LT(c.predictedRmsHigh, 0.3);

@@ -382,7 +382,7 @@ TEST(GearEffect, BadReliefIsRefusedNamingTheField) {
   j["hob"].erase("sideReliefAngle");
   j["hob"]["gashes"] = 12;
   j["hob"]["relief"] = 39;
-  expectRefused(j, "hob.relief", "with 12 gashes gives a side relief angle of 39.2 deg at the pitch diameter, more than "
+  expectRefused(j, "hob.relief", "with 12 gashes gives a side relief angle of 39.19 deg at the pitch diameter, more than "
                                  "the 30 deg a hob has");
   j["hob"]["relief"] = 3.9;
   EXPECT_TRUE(parseCase(j.dump()).ok());

@@ -299,6 +299,30 @@ TEST(WheelCorrection, WithProbeNoiseTheFaceStaysWithinTheNoise) {
   }
 }
 
+// A checkerboard of 0.95 µm at sigma 0.5 µm, with the wheel's correction asked for: no axis shape
+// and no wheel shape stands out of the noise, nothing is changed and nothing dressed, and the
+// verdict says so (the axes' "No change proposed"), not "Correctable with the axes alone" (an
+// independent review, 2026-12-07).
+TEST(WheelCorrection, NothingToChangeOrDressIsSaidSo) {
+  CaseInput in = paperCase();
+  in.correction.wheel = true;
+  in.correction.probeNoise = 0.5;
+  const SharpeningJob nominal = jobOf(in);
+  Eigen::MatrixXd shape(nominal.grid.rows(), nominal.grid.cols());
+  for (int i = 0; i < shape.rows(); ++i)
+    for (int j = 0; j < shape.cols(); ++j) shape(i, j) = (i + j) % 2 ? -0.95 : 0.95;
+  in.measured = shape;
+  auto e = evaluate(jobOf(in));
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  ASSERT_TRUE(e->wheelCorrection.has_value());
+  EXPECT_EQ(e->correction->change.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_LT(largestOffset(*e->wheelCorrection), 0.1);
+  const std::string& v = e->correction->verdict;
+  EXPECT_EQ(v.rfind("No change proposed:", 0), 0u) << v;
+  EXPECT_NE(v.find("And the wheel needs no dressing"), std::string::npos) << v;
+  EXPECT_EQ(v.find("Correctable"), std::string::npos) << v;
+}
+
 // A wheel the case records as dressed (wheel.profileOffset: say an earlier pass's dressing O, at
 // the correction's points) is dressed back to the conjugate wheel, which grinds the nominal face:
 // the dressing takes O away with the identified deviation W, and the face after the pass is as

@@ -90,7 +90,10 @@ try {
     // Points at the grid's positions are the grid (docs/measured-points.md): the result stands,
     // and there are no points of their own to write.
     if (!c || !c.pointMeasured) {
-      process.stderr.write(`--points-out: nothing written: ${c ? 'the points lie on the grid, and the result is the grid\'s' : 'the case has no measured face'}.\n`);
+      const points = Array.isArray(JSON.parse(caseText).measuredPoints);
+      const why = !c ? 'the case has no measured face' : points ? 'the points lie on the grid, and the result is the grid\'s'
+        : 'the measurement is a grid, not points';
+      process.stderr.write(`--points-out: nothing written: ${why}.\n`);
     } else {
       writeFileSync(`${pointsOut}-measured.csv`, pointsToCsv(c.pointMeasured));
       writeFileSync(`${pointsOut}-predicted.csv`, pointsToCsv(c.pointResidual));

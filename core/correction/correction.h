@@ -26,6 +26,17 @@
 
 namespace hobsharp {
 
+// What a measured face holds of the shapes the free coefficients make, against the probe noise
+// (measured_face_correction.cpp, the stop's test): along the strongest single direction of the run
+// face's sensitivities, and in their span together.
+struct AxisShapes {
+  double largestSigmas = 0;   // the largest component along one direction, in sigma
+  double togetherSigmas = 0;  // the span's sum of squares above its chi-square mean, in its standard deviations
+  bool single = false;        // one direction stands out of the noise
+  bool together = false;      // the span does, no direction need alone
+  bool aboveNoise() const { return single || together; }
+};
+
 struct Correction {
   AxisPolynomials axes;                  // the proposal: run + change (linear), nominal - E (nonlinear)
   std::vector<Coefficient> coefficients; // the free coefficients
@@ -102,6 +113,9 @@ struct Correction {
   std::optional<GridPoint> predictedFoldAt;
   // The measured face is within the probe noise: another pass would only move noise.
   bool stop = false;
+  // The stop's test of the shapes the axes make, where it was taken (a face within the whole-face
+  // ceiling, or a correction that changes nothing).
+  std::optional<AxisShapes> axisShapes;
   // The axes run are proposed unchanged (run kept, or stop): so is the wheel, with no dressing.
   bool keepsRun() const { return runKept || stop; }
   // A change is proposed whose bound is above the face measured, or with which some of the errors

@@ -201,8 +201,9 @@ FacePrediction predictFace(const SharpeningSetup& measuredSetup, const Sharpenin
     // Joined, and linearised at the nominal axes (the axes run alone grind no face): the earlier
     // face shows the directions this face does not only through a model run far from any face the
     // wheel grinds, and one error explaining both faces need not be the machine's (seeds 9001 to
-    // 9005, 3,000 scenarios: the face left exceeded a bound sampling only what the joined faces do
-    // not show in 19 of 70 such passes, by 193 times on seed 9005's scenario 164). What this face
+    // 9005, 3,000 scenarios: the face left exceeded the bound in 25 of 70 such passes when it
+    // sampled what the joined faces do not show at 1e-6 of the strongest, in 19 with the weak
+    // directions above as well, by 193 times on seed 9005's scenario 164). What this face
     // alone does not show is sampled as well: no such pass exceeds its bound, and 69 of the 70
     // bounds are more than 10 times the face left (docs/method.md, "What the pass will leave").
     if (all && sampling.passes && c.linearisedAtNominal && !ownUnseen.empty()) {

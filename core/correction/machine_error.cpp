@@ -234,14 +234,16 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
     misfit.precision(2);
     if (found) misfit << " (" << misfitOf(j) << " µm rms left)";
     const SolveStatus st = found ? found->summary.status : SolveStatus::Failed;
-    // Locked axes are not sought: their error stays in every face, and no error over the free ones
-    // may explain them together, with nothing changed on the machine.
+    // Locked coefficients are not sought: their error stays in every face, and no error over the
+    // free ones may explain them together with nothing changed on the machine; or the machine
+    // changed. The note names both.
     const std::string locked = lockedText(run.degree(), o);
     if (st == SolveStatus::AboveNoise && !locked.empty())
-      m.historyNote = "No one error of the axes left free (" + locked + " locked) explains " + these +
+      m.historyNote = "No one error of the free coefficients (" + locked + " locked) explains " + these +
                       " to the probe noise" + misfit.str() + left +
-                      ": identified from this face alone. A locked axis's error stays in every face; unlock " + locked +
-                      " to seek one error over them all.";
+                      ": identified from this face alone. A locked coefficient's error stays in every face: unlock " +
+                      locked + " to seek one error over them all; if that does not join them, has the machine or the "
+                      "setup changed?";
     else if (st == SolveStatus::AboveNoise)
       m.historyNote = "No one machine error explains " + these + " to the probe noise" + misfit.str() + left +
                       ": identified from this face alone (has the machine or the setup changed?).";

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <vector>
 
-#include <Eigen/QR>
+#include <Eigen/SVD>
 
 #include "correction.h"
 #include "face_prediction.h"
@@ -23,23 +23,40 @@
 namespace hobsharp {
 namespace {
 
-// A shape the axes make stands out of the noise when the face's sum of squares in the span of the
-// run face's sensitivities over the free coefficients (k directions) exceeds the chi-square's mean
-// by this many of its standard deviations, sigma² (k + kStopDeviations sqrt(2k)). Pure noise
-// reaches it with a probability of about 1e-4 (k = 25); a single such shape is found from about 6
-// sigma along its direction, which a whole-face sum of squares within the chi-square ceiling
-// (noiseCeiling) can hide: an independent review (2026-12-07) had a Y a0 shape of 0.6 µm rms at
-// sigma 0.5 µm (8 sigma along its direction on Tab. 1's 45 points) told to stop.
+// A shape the axes make stands out of the probe noise in the face when either
+//   - its component along one of the run face's directions exceeds kStopDirectionSigmas sigma: a
+//     free coefficient's own shape (a column of the sensitivities, a single axis term's error), or
+//     a left singular vector of the sensitivities (a combination's); pure noise does so along one
+//     of 2 x 25 directions about once in 3,000 draws; or
+//   - its sum of squares in their span (k directions) exceeds sigma² (k + kStopDeviations sqrt(2k)),
+//     the chi-square's mean plus 5 of its standard deviations: pure noise exceeds it about once
+//     in 10,000 draws at k = 25 (several shapes, none alone above the first test).
+// The whole-face chi-square ceiling (noiseCeiling) alone let a shape an axis makes through: an
+// independent review (2026-12-07) had a Y a0 shape of 0.6 µm rms at sigma 0.5 µm (8 sigma along its
+// direction on Tab. 1's 45 points) told to stop.
+constexpr double kStopDirectionSigmas = 4.5;
 constexpr double kStopDeviations = 5;
 
-// True when the measured face holds a shape the free coefficients make above the probe noise.
-bool axisShapeAboveNoise(const GroundFace& runFace, const Eigen::MatrixXd& measured, const std::vector<Coefficient>& cs,
-                         double sigma) {
-  if (cs.empty() || !(sigma > 0)) return false;
-  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(sensitivityMatrix(runFace, cs).normal);
-  const double k = qr.rank();
-  const Eigen::MatrixXd Q = Eigen::MatrixXd(qr.householderQ()).leftCols(qr.rank());
-  return (Q.transpose() * flat(measured)).squaredNorm() > sigma * sigma * (k + kStopDeviations * std::sqrt(2 * k));
+AxisShapes axisShapesIn(const GroundFace& runFace, const Eigen::MatrixXd& measured, const std::vector<Coefficient>& cs,
+                        double sigma) {
+  AxisShapes out;
+  if (cs.empty() || !(sigma > 0)) return out;
+  const Eigen::MatrixXd S = sensitivityMatrix(runFace, cs).normal;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(S, Eigen::ComputeThinU);
+  const Eigen::VectorXd& s = svd.singularValues();
+  int k = 0;
+  while (k < s.size() && s(k) > 1e-12 * s(0)) ++k;
+  if (k == 0) return out;
+  const Eigen::VectorXd m = flat(measured);
+  const Eigen::VectorXd c = svd.matrixU().leftCols(k).transpose() * m;
+  double largest = c.cwiseAbs().maxCoeff();
+  for (int j = 0; j < S.cols(); ++j)
+    if (const double norm = S.col(j).norm(); norm > 1e-12 * s(0)) largest = std::max(largest, std::abs(S.col(j).dot(m)) / norm);
+  out.largestSigmas = largest / sigma;
+  out.togetherSigmas = (c.squaredNorm() / (sigma * sigma) - k) / std::sqrt(2.0 * k);
+  out.single = out.largestSigmas > kStopDirectionSigmas;
+  out.together = out.togetherSigmas > kStopDeviations;
+  return out;
 }
 
 // The face's normal deviations (µm) as a grid, or one column at probe points.
@@ -109,14 +126,23 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
            "explains this face and the next together.";
   } else if (unfinished) {
     v << "Identification " << how << "; the best estimate is proposed: " << leaves << ". " << c.summary.reason;
-  } else if (withinNoise && c.uncorrectableShare > o.correctableShare &&
+  } else if (withinNoise && c.uncorrectableShare > o.correctableShare && c.axisShapes &&
              (c.change.size() == 0 || c.change.cwiseAbs().maxCoeff() == 0.0)) {
-    // Nothing to cancel: no axis direction stands above the noise, and the shape left is none an
-    // axis makes; "Correctable" would send the engineer to grind the same face again.
-    v << "No change proposed: no axis direction in the face measured (" << c.before.rms
-      << " µm rms) stands above the probe noise (sigma " << o.probeNoise
-      << " µm); its shape is one no axis polynomial produces, within twice the probe noise (rms). The axes run stay "
-         "as they are: another pass with them grinds the same face.";
+    // Nothing changed while the face is within twice the noise: "Correctable" would send the
+    // engineer to grind the same face again. Why, as the stop's test of the axes' shapes found it.
+    const AxisShapes& a = *c.axisShapes;
+    const std::string free = locked.empty() ? "the axes" : "the free axes (" + locked + " locked)";
+    v << "No change proposed: ";
+    if (a.aboveNoise())
+      v << "the shapes " << free << " make stand out of the probe noise (sigma " << o.probeNoise
+        << " µm) in the face measured (" << c.before.rms << " µm rms) only together, none clearly enough on its own "
+        << "for the identification to take it. The axes run stay as they are; measure the face again, on more points "
+           "or with a probe of less noise, to tell which.";
+    else
+      v << "no shape " << free << " make stands out of the probe noise (sigma " << o.probeNoise
+        << " µm) in the face measured (" << c.before.rms << " µm rms); what is left is a shape they do not produce, "
+           "within twice the probe noise (rms). The axes run stay as they are: another pass with them grinds the same "
+           "face.";
   } else if (c.uncorrectableShare <= o.correctableShare || withinNoise) {
     v << "Correctable: the axes can cancel the measured deviation"
       << (withinNoise && c.uncorrectableShare > o.correctableShare ? " to within twice the probe noise (rms)" : "")
@@ -269,8 +295,13 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   // Within the noise: the measured sum of squares is what the probe's noise alone gives
   // (noiseCeiling). Then the verdict says to stop, and the axes run are kept: a change would only
   // move noise.
-  c.stop = c.before.sse <= noiseCeiling(runFace.size(), o.probeNoise) &&
-           !axisShapeAboveNoise(runFace, measured, c.coefficients, o.probeNoise);
+  const bool withinCeiling = c.before.sse <= noiseCeiling(runFace.size(), o.probeNoise);
+  if (withinCeiling) c.axisShapes = axisShapesIn(runFace, measured, c.coefficients, o.probeNoise);
+  c.stop = withinCeiling && !c.axisShapes->aboveNoise();
+  // A correction that changes nothing says why in the verdict (verdictOf): what the face holds of
+  // the axes' shapes.
+  if (!c.stop && !c.axisShapes && (c.change.size() == 0 || c.change.cwiseAbs().maxCoeff() == 0.0))
+    c.axisShapes = axisShapesIn(runFace, measured, c.coefficients, o.probeNoise);
   if (c.stop) {
     c.axes = run;
     c.change.setZero();

@@ -43,7 +43,12 @@ std::string verdictOf(const Correction& c, const WheelCorrection& w, const Corre
   const double step = o.resolution.inAxisUnit(Axis::X) * kMicrometresPerMm;
   const bool dressing = largest >= step;
   const bool correctable = c.uncorrectableShare <= o.correctableShare || withinNoise;
-  if (c.uncertain()) {
+  const bool axesUnchanged = c.change.size() == 0 || c.change.cwiseAbs().maxCoeff() == 0.0;
+  if (axesUnchanged && !dressing) {
+    // Nothing to run: the axes' own sentence says why (measured_face_correction.cpp), not
+    // "Correctable" (an independent review, 2026-12-07).
+    v << c.verdict << " And " << noDressingText(largest, step) << "; " << split << ".";
+  } else if (c.uncertain()) {
     v << c.verdict;
     if (dressing) v << " The wheel's dressing proposed with it is at most " << largest << " µm (the dresser path; ";
     else v << " With it, " << noDressingText(largest, step) << " (";

@@ -27,7 +27,7 @@ Outcome<void> checkRelief(const HobReliefInput& out, double outerDiameter, doubl
       const double implied = sideReliefAngleAt(reliefPerRadianFromCam(*out.relief, *out.gashes), rp, alpha) * kDegPerRad;
       if (implied > kMaxSideReliefAngle)
         return refuse("hob.relief", "with " + std::to_string(*out.gashes) + " gashes gives a side relief angle of " +
-                                        numberText(std::round(implied * 10) / 10) + " deg at the pitch diameter, more than the " +
+                                        numberText(std::ceil(implied * 100) / 100) + " deg at the pitch diameter, more than the " +
                                         numberText(kMaxSideReliefAngle) + " deg a hob has; got " +
                                         exactText(*out.relief) + " mm (the cam rise over one gash pitch).");
     }

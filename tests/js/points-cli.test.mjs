@@ -98,6 +98,11 @@ test('the CLI says what the points reader warns of, and points on the grid keep 
   assert.match(run.stderr, /--points-out: nothing written: the points lie on the grid, and the result is the grid's\.\n$/);
   assert.equal(JSON.parse(run.stdout).inspection.source, 'measuredPoints');
   assert.ok(JSON.parse(run.stdout).correction.verdict);
+  const gridCase = path.join(dir, 'grid.json');
+  writeFileSync(gridCase, JSON.stringify({ ...paper, measured: r.map((_, i) => x.map((_, j) => 0.5 * Math.sin(i + j))) }));
+  run = cli(gridCase, '--points-out', path.join(dir, 'grid'));
+  assert.equal(run.status, 0, run.stderr);
+  assert.equal(run.stderr, '--points-out: nothing written: the measurement is a grid, not points.\n');
   const before = path.join(dir, 'before.csv');
   writeFileSync(before, ['19.5,-65,1', '20,-61.7,0.5', header, ...rows.map((l) => l.replace(/,[^,]*$/, ',1.5'))].join('\n'));
   run = cli(paperFile, '--points', before);

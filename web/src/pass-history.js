@@ -15,7 +15,8 @@
 // per pass, the probe noise its correction assumed (correction.probeNoise, sigma, µm rms): what
 // noise alone measures. The stop (correction.stop) takes the same chi-square test as the
 // identification's status, up to 3 of its standard deviations above n sigma² (1.28 sigma in rms
-// on 45 points), so a face a little above the drawn floor may be told to stop. When the correction says stop (the face
+// on 45 points), so a face a little above the drawn floor may be told to stop, unless a shape the
+// axes make stands out of the noise in it (docs/method.md). When the correction says stop (the face
 // measured is within the probe noise), no next pass is predicted or offered.
 import { LEAST_RMS, faceFigure } from './format.js';
 import { caseOf } from './store.js';
