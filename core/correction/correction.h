@@ -118,6 +118,9 @@ struct Correction {
   std::optional<AxisShapes> axisShapes;
   // The axes run are proposed unchanged (run kept, or stop): so is the wheel, with no dressing.
   bool keepsRun() const { return runKept || stop; }
+  // No coefficient is changed (every change 0, or none free): also where the identification took
+  // no direction (wasm/lib/pass-bound.js, changesNothing, reads the same from correction.change).
+  bool changesNothing() const { return change.size() == 0 || change.cwiseAbs().maxCoeff() == 0.0; }
   // A change is proposed whose bound is above the face measured, or with which some of the errors
   // the face cannot show leave part of the face unground: the face does not show enough of the
   // machine's error to say that the pass improves it (the verdicts lead with "Uncertain:"). A bound

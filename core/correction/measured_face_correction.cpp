@@ -126,8 +126,7 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
            "explains this face and the next together.";
   } else if (unfinished) {
     v << "Identification " << how << "; the best estimate is proposed: " << leaves << ". " << c.summary.reason;
-  } else if (withinNoise && c.uncorrectableShare > o.correctableShare && c.axisShapes &&
-             (c.change.size() == 0 || c.change.cwiseAbs().maxCoeff() == 0.0)) {
+  } else if (withinNoise && c.uncorrectableShare > o.correctableShare && c.axisShapes && c.changesNothing()) {
     // Nothing changed while the face is within twice the noise: "Correctable" would send the
     // engineer to grind the same face again. Why, as the stop's test of the axes' shapes found it.
     const AxisShapes& a = *c.axisShapes;
@@ -300,7 +299,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   c.stop = withinCeiling && !c.axisShapes->aboveNoise();
   // A correction that changes nothing says why in the verdict (verdictOf): what the face holds of
   // the axes' shapes.
-  if (!c.stop && !c.axisShapes && (c.change.size() == 0 || c.change.cwiseAbs().maxCoeff() == 0.0))
+  if (!c.stop && !c.axisShapes && c.changesNothing())
     c.axisShapes = axisShapesIn(runFace, measured, c.coefficients, o.probeNoise);
   if (c.stop) {
     c.axes = run;

@@ -43,8 +43,7 @@ std::string verdictOf(const Correction& c, const WheelCorrection& w, const Corre
   const double step = o.resolution.inAxisUnit(Axis::X) * kMicrometresPerMm;
   const bool dressing = largest >= step;
   const bool correctable = c.uncorrectableShare <= o.correctableShare || withinNoise;
-  const bool axesUnchanged = c.change.size() == 0 || c.change.cwiseAbs().maxCoeff() == 0.0;
-  if (axesUnchanged && !dressing) {
+  if (c.changesNothing() && !dressing) {
     // Nothing to run: the axes' own sentence says why (measured_face_correction.cpp), not
     // "Correctable" (an independent review, 2026-12-07).
     v << c.verdict << " And " << noDressingText(largest, step) << "; " << split << ".";
