@@ -123,6 +123,36 @@ test('a face measured within the probe noise: Stop, set apart; nothing predicted
   await page.context().close();
 });
 
+// A face of a shape no axis makes, within twice the probe noise (a checkerboard of 0.95 µm at sigma
+// 0.5 µm): nothing is changed, and the verdict, the rms line and the printed report's line say so;
+// an independent review (2026-12-07) had "Correctable" and "at most 0.9 µm rms after the pass" here.
+test('a face nothing in the axes explains, within twice the noise: No change proposed, the axes run stay', async () => {
+  const checker = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (__, j) => ((i + j) % 2 ? -0.95 : 0.95)));
+  const c = { ...paper(), measured: checker, correction: { probeNoise: 0.5 } };
+  const expected = hobsharp.evaluate(c).correction;
+  assert.equal(expected.stop, false);
+  assert.ok(expected.change.every((v) => v === 0));
+  const page = await openPage(link(c), desk);
+  await page.waitForFunction(() => /^No change proposed/.test(document.querySelector('#verdict').textContent), null, { timeout: 20000 });
+  const verdict = await page.textContent('#verdict');
+  assert.match(verdict, /^No change proposed: no shape the axes make stands out of the probe noise \(sigma 0\.5 µm\) in the face measured \(0\.95 µm rms\); what is left is a shape they do not produce, within twice the probe noise \(rms\)\. The axes run stay as they are/);
+  assert.doesNotMatch(verdict, /Correctable/);
+  assert.match(await page.textContent('#summary-rms'), /^Face rms: 0\.950 µm measured: no change proposed, the axes run stay\.$/);
+  assert.equal(await page.isHidden('#prediction'), true, 'no pass to predict');
+  assert.match(verdict, /Measured: RMS 0\.950 µm; /, 'the figures measured, nothing "after"');
+  assert.equal(await page.textContent('#first-step'), 'No change is proposed: there is no pass to run (the verdict says why).');
+  assert.equal(await page.isDisabled('#next-run'), true);
+  assert.match(await page.textContent('#next-run-why'), /^No change proposed: another pass with the axes run grinds the same face/);
+  assert.equal(await page.textContent('#machine-axes-source'), '(the axes run: keep them; no change proposed)');
+  assert.equal(await page.textContent('#machine-axes-figures'), '', 'no proposal to speak of');
+  assert.doesNotMatch(await page.textContent('#measured-section'), /NaN|undefined|Infinity/);
+  await page.locator('#summary-rms').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: path.join(shots, 'prediction-no-change.png') });
+  await page.locator('#verdict').screenshot({ path: path.join(shots, 'prediction-no-change-verdict.png') });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});
+
 // A proposal with which some of the errors the face cannot show leave part of the face unground says
 // "Uncertain:" with that warning, although its bound lies below the face measured (correction.h,
 // uncertain()): seed 7005's scenario 344 of the campaign (tests/data/unground-sample-pass.json, a

@@ -5,6 +5,7 @@
 // The calculator's polynomials are of phi in rad with A and B in rad (docs/conventions.md).
 import { AXES, isRotary } from './limits.js';
 import { ncProgram } from './nc-program.js';
+import { changesNothing } from './pass-bound.js';
 
 const DEG = 180 / Math.PI;
 
@@ -21,13 +22,18 @@ export function machineCoefficients(axes, helical) {
 
 // The axes shown under "Axes to run" and written to the NC program, chosen alike by the page and
 // the CLI: with a correction its proposal as the program carries it (correction.roundedAxes);
-// when the correction says stop (the face measured is within the probe noise) the axes run stay;
+// when the correction says stop (the face measured is within the probe noise), or proposes no change,
+// the axes run stay;
 // else the case's axes (the axes run) or the nominal ones. caseAxes: the case's `axes`, if any.
 export function axesToRun(result, caseAxes) {
   const c = result.correction;
   if (c && c.stop === true) {
     return { axes: result.runAxes || caseAxes || result.axes, kind: 'run',
       words: 'the axes run: keep them; the face measured is within the probe noise' };
+  }
+  // No change proposed (a run kept, or nothing above the noise): the axes run stay too.
+  if (c && changesNothing(c)) {
+    return { axes: result.runAxes || caseAxes || result.axes, kind: 'run', words: 'the axes run: keep them; no change proposed' };
   }
   if (c && c.roundedAxes) return { axes: c.roundedAxes, kind: 'corrected', words: 'the corrected proposal, as the NC program carries it' };
   if (caseAxes) return { axes: caseAxes, kind: 'run', words: 'the axes run; no correction' };
@@ -64,7 +70,7 @@ export function programFor(result, caseObject, dialect, { date = new Date(), dig
       module: caseObject && caseObject.hob && caseObject.hob.normalModule,
       axesWords: words,
       date: date.toISOString().slice(0, 10),
-      rounding: c && c.roundedAxes && c.stop !== true ? { rmsRounded: c.rmsRounded, resolutionFloor: c.resolutionFloor } : null,
+      rounding: c && c.roundedAxes && c.stop !== true && !changesNothing(c) ? { rmsRounded: c.rmsRounded, resolutionFloor: c.resolutionFloor } : null,
     },
   });
 }

@@ -8,6 +8,7 @@ import { AXES, isRotary } from './limits.js';
 import { fmt } from './format.js';
 import { polynomialAt } from '../../wasm/lib/polynomial.js';
 import { machineCoefficients } from '../../wasm/lib/axes-to-run.js';
+import { changesNothing } from '../../wasm/lib/pass-bound.js';
 
 const DEG = 180 / Math.PI;
 
@@ -77,7 +78,8 @@ export function coefficientsText(m, helical, digits) {
 // error, the measurement's misfit kept, noise and all; what the pass leaves is the verdict's bound) and the pass's floor the position resolution sets, in
 // words with the units `unitOf(path)` gives (the module's resultFields()); '' without them.
 export function roundedFiguresText(c, unitOf) {
-  if (!c || !c.roundedAxes) return '';
+  // The axes shown are the axes run where the correction stops or changes nothing: no proposal to speak of.
+  if (!c || !c.roundedAxes || c.stop === true || changesNothing(c)) return '';
   const v = (path) => {
     const x = c[path.slice('correction.'.length)];
     return `${fmt(x, 3)}${Number.isFinite(x) ? ` ${unitOf(path)}` : ''}`;

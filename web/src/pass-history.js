@@ -20,12 +20,14 @@
 // measured is within the probe noise), no next pass is predicted or offered.
 import { LEAST_RMS, faceFigure } from './format.js';
 import { caseOf } from './store.js';
+import { changesNothing } from '../../wasm/lib/pass-bound.js';
 
 const finiteOr = (v) => (typeof v === 'number' && Number.isFinite(v) ? v : null);
 const figures = (rms, sse, max, thickness) => ({ rms: finiteOr(rms), sse: finiteOr(sse), max: finiteOr(max), thickness: finiteOr(thickness) });
 
 // Why no next pass is offered when the correction says stop.
 export const STOP_WHY = 'Stop: the face measured is within the probe noise; another pass would only move noise. Keep the axes run.';
+export const NO_CHANGE_WHY = 'No change proposed: another pass with the axes run grinds the same face (the verdict says why). Keep the axes run.';
 
 // A result's figures: the face measured, the one predicted after its correction (with the rms's
 // bound, rmsHigh), and the one simulated for the axes run (with a measurement, at its points and
@@ -82,6 +84,7 @@ export function nextRunInputs(state) {
   const c = state.result.correction;
   if (!c || !c.axes) return { why: 'There is no correction to run.' };
   if (c.stop === true) return { why: STOP_WHY };
+  if (changesNothing(c)) return { why: NO_CHANGE_WHY };
   const measurement = state.measured ? { measured: structuredClone(state.measured) } : { measuredPoints: structuredClone(measuredPoints) };
   const pass = { axes: structuredClone(state.axes || state.result.axes), ...measurement,
     correction: structuredClone(caseOf(state).correction) };

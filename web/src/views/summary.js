@@ -22,9 +22,9 @@ export function firstStepText(result, caseObject = null) {
     return 'First type the hob\'s data at the left (or load a case); then load the measured face in step 2 below, ' +
       'and the verdict, the class and the axes to run show here.';
   }
-  return result.correction.stop === true
-    ? 'The face is within the probe noise: there is no pass to run.'
-    : 'Run the axes below, measure the face and load it in step 2; "Use as next run" keeps this pass in the history first.';
+  if (result.correction.stop === true) return 'The face is within the probe noise: there is no pass to run.';
+  if (changesNothing(result.correction)) return 'No change is proposed: there is no pass to run (the verdict says why).';
+  return 'Run the axes below, measure the face and load it in step 2; "Use as next run" keeps this pass in the history first.';
 }
 
 // The face's rms before (measured, or simulated for the axes run) and after the pass, with the
