@@ -5,7 +5,7 @@
 // The calculator's polynomials are of phi in rad with A and B in rad (docs/conventions.md).
 import { AXES, isRotary } from './limits.js';
 import { ncProgram } from './nc-program.js';
-import { changesNothing } from './pass-bound.js';
+import { changesNothing, keepsAxesRun } from './pass-bound.js';
 
 const DEG = 180 / Math.PI;
 
@@ -70,7 +70,7 @@ export function programFor(result, caseObject, dialect, { date = new Date(), dig
       module: caseObject && caseObject.hob && caseObject.hob.normalModule,
       axesWords: words,
       date: date.toISOString().slice(0, 10),
-      rounding: c && c.roundedAxes && c.stop !== true && !changesNothing(c) ? { rmsRounded: c.rmsRounded, resolutionFloor: c.resolutionFloor } : null,
+      rounding: c && c.roundedAxes && !keepsAxesRun(c) ? { rmsRounded: c.rmsRounded, resolutionFloor: c.resolutionFloor } : null,
     },
   });
 }

@@ -1,9 +1,9 @@
 // The bound on what the proposed pass leaves (correction.predictedRmsHigh, µm rms on the probe
-// grid), or null where no pass is proposed: a stop (the face is within the probe noise), a run
-// kept (no change proposed), a proposal that is not to be used, or no finite bound. Shared by the
+// grid), or null where no pass is proposed (keepsAxesRun: a stop, or no change proposed), a
+// proposal that is not to be used, or no finite bound. Shared by the
 // page's sentences and files and the CLI's X3P (pure, with Node tests).
 export function passBound(c) {
-  if (!c || c.stop === true || changesNothing(c) || c.usable === false) return null;
+  if (!c || keepsAxesRun(c) || c.usable === false) return null;
   return Number.isFinite(c.predictedRmsHigh) ? c.predictedRmsHigh : null;
 }
 
@@ -14,6 +14,12 @@ export function passBound(c) {
 export function changesNothing(c) {
   if (!c) return false;
   return c.runKept === true || (Array.isArray(c.change) && c.change.every((v) => v === 0));
+}
+
+// True where the axes run stay: a stop (the face is within the probe noise) or no change proposed.
+// (The core's Correction::keepsRun() is a stop or a run kept.)
+export function keepsAxesRun(c) {
+  return Boolean(c) && (c.stop === true || changesNothing(c));
 }
 
 // The pass's floor (correction.resolutionFloor, µm rms on the probe grid: what quantising each axis

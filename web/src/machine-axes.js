@@ -8,7 +8,7 @@ import { AXES, isRotary } from './limits.js';
 import { fmt } from './format.js';
 import { polynomialAt } from '../../wasm/lib/polynomial.js';
 import { machineCoefficients } from '../../wasm/lib/axes-to-run.js';
-import { changesNothing } from '../../wasm/lib/pass-bound.js';
+import { keepsAxesRun } from '../../wasm/lib/pass-bound.js';
 
 const DEG = 180 / Math.PI;
 
@@ -79,7 +79,7 @@ export function coefficientsText(m, helical, digits) {
 // words with the units `unitOf(path)` gives (the module's resultFields()); '' without them.
 export function roundedFiguresText(c, unitOf) {
   // The axes shown are the axes run where the correction stops or changes nothing: no proposal to speak of.
-  if (!c || !c.roundedAxes || c.stop === true || changesNothing(c)) return '';
+  if (!c || !c.roundedAxes || keepsAxesRun(c)) return '';
   const v = (path) => {
     const x = c[path.slice('correction.'.length)];
     return `${fmt(x, 3)}${Number.isFinite(x) ? ` ${unitOf(path)}` : ''}`;

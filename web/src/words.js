@@ -3,7 +3,7 @@
 // correction's verdict.
 import { fixed, fmt, signed, withUnit } from './format.js';
 import { fieldUnit, unitText } from './result-fields.js';
-import { changesNothing, floorAboveBound, passBound } from '../../wasm/lib/pass-bound.js';
+import { floorAboveBound, keepsAxesRun, passBound } from '../../wasm/lib/pass-bound.js';
 
 
 // The status line once the newest inputs are computed.
@@ -33,7 +33,7 @@ export function verdictText(c, unitOf = unitText) {
   // Stop (correction.stop): the measured face is within the probe noise; or no change proposed.
   // Its figures as measured, and nothing predicted: another pass would only move noise, or grind
   // the same face.
-  if (c.stop === true || changesNothing(c)) {
+  if (keepsAxesRun(c)) {
     const rms = Number.isFinite(c.rmsBefore) ? `RMS ${withUnit(fixed(c.rmsBefore, 3), u('rms'))}; ` : '';
     return `${c.verdict} Measured: ${rms}sum of squares ${withUnit(fmt(c.sseBefore, 6), u('sse'))}; ` +
       `thickness ${withUnit(signed(c.thicknessBefore, 3), u('thickness'))}.`;
