@@ -386,6 +386,13 @@ TEST(GearEffect, BadReliefIsRefusedNamingTheField) {
                                  "the 30 deg a hob has");
   j["hob"]["relief"] = 3.9;
   EXPECT_TRUE(parseCase(j.dump()).ok());
+  // With the side relief angle given too, the relief is held to the same limit: a relief of 30.005
+  // deg beside a side relief angle of 30 agrees to 0.01 deg and was accepted (2026-12-07).
+  j["hob"]["relief"] = reliefPerRadianFromSideAngle(30.005 * kRadPerDeg, 31.25, kAlpha) * 2 * kPi / 12;
+  j["hob"]["sideReliefAngle"] = 30.0;
+  expectRefused(j, "hob.relief", "with 12 gashes gives a side relief angle of 30.01 deg at the pitch diameter");
+  j["hob"]["relief"] = reliefPerRadianFromSideAngle(29.995 * kRadPerDeg, 31.25, kAlpha) * 2 * kPi / 12;
+  EXPECT_TRUE(parseCase(j.dump()).ok());
 }
 
 }  // namespace

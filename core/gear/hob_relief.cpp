@@ -20,8 +20,9 @@ Outcome<void> checkRelief(const HobReliefInput& out, double outerDiameter, doubl
     return refuse("hob.sideReliefAngle", "must lie over 0 up to " + numberText(kMaxSideReliefAngle) + " deg; got " +
                                              exactText(*out.sideReliefAngle) + " deg.");
   // The relief and the gashes give a side relief angle: held to the same limit as one given (a
-  // slipped digit, 39 for 3.9 mm, is a side relief of 39 deg on a module-4.5 hob).
-  if (out.relief && out.gashes && !out.sideReliefAngle) {
+  // slipped digit, 39 for 3.9 mm, is a side relief of 39 deg on a module-4.5 hob), whether or not
+  // the side relief angle is given too (the two agree only to kSideReliefAgreement).
+  if (out.relief && out.gashes) {
     const double alpha = normalPressureAngle * kRadPerDeg, rp = pitchDiameter / 2;
     if (alpha > 0 && rp > 0) {
       const double implied = sideReliefAngleAt(reliefPerRadianFromCam(*out.relief, *out.gashes), rp, alpha) * kDegPerRad;
