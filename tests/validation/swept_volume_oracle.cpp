@@ -342,6 +342,30 @@ std::optional<SweptVolumeOracle::Crossing> SweptVolumeOracle::reachAt(const Line
   const double dir = o_.bodyAlongNormal ? 1.0 : -1.0;  // the search runs from the material into the wheel
   const Vector3d q0 = toWheel(l.p, axes, phi);
   const Vector3d d = toWheel(l.p + dir * l.n, axes, phi) - q0;
+  if (o_.intersectPieces && pieces_.size() > 1) {
+    // The first point of the window inside every piece that covers it: a scan, then bisection.
+    const auto in = [&](double t) {
+      const Vector3d q = q0 + t * d;
+      return inside(std::hypot(q.x(), q.y()), q.z());
+    };
+    constexpr int kScan = 4000;
+    double prev = -o_.window;
+    if (in(prev)) return Crossing{prev, false};
+    for (int i = 1; i <= kScan; ++i) {
+      const double t = -o_.window + 2 * o_.window * i / kScan;
+      if (in(t)) {
+        double a = prev, b = t;
+        while (b - a > 1e-13) {
+          const double m = 0.5 * (a + b);
+          if (in(m)) b = m; else a = m;
+        }
+        if (piece) *piece = -1;
+        return Crossing{b, false};
+      }
+      prev = t;
+    }
+    return std::nullopt;
+  }
   std::optional<Crossing> best;
   for (std::size_t k = 0; k < pieces_.size(); ++k) {
     auto c = crossing(pieces_[k], q0, d);
@@ -362,6 +386,16 @@ std::optional<double> SweptVolumeOracle::reach(const Line& l, const AxisPolynomi
 
 bool SweptVolumeOracle::inside(double rho, double z) const {
   if (o_.cutAtRim && rho > in_.wheelRadius) return false;
+  if (o_.intersectPieces && pieces_.size() > 1) {
+    bool covered = false;
+    for (const Piece& p : pieces_) {
+      auto v = evaluate(p, rho);
+      if (!v) continue;
+      covered = true;
+      if (!((z - v->Z) * p.side > 0)) return false;
+    }
+    return covered;
+  }
   for (const Piece& p : pieces_) {
     auto v = evaluate(p, rho);
     if (v && (z - v->Z) * p.side > 0) return true;

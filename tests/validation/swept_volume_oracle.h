@@ -56,6 +56,10 @@ struct OracleOptions {
   // turns back, with an edge there). Off, every piece of the continued conjugate meridian is part of
   // the wheel (its sheets past a turn too): the analytic wheel, for diagnosis.
   bool mainPieceOnly = true;
+  // With every piece (mainPieceOnly off): the wheel is the intersection of the pieces' solids (what a
+  // dresser tracing the whole profile leaves: it removes whatever lies outside any branch) instead of
+  // their union (the analytic surface taken as solid on every sheet).
+  bool intersectPieces = false;
 };
 
 // The inputs, taken from a job (swept_volume_oracle.cpp: fromSetup).
