@@ -70,7 +70,7 @@ build_native() {
 build_sanitize() {
   cmake -S "$ROOT" -B "$BUILD_SANITIZE" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
         -DHOBSHARP_SANITIZE=ON -DHOBSHARP_FUZZ=ON >/dev/null
-  cmake --build "$BUILD_SANITIZE" -j"$JOBS" --target hobsharp_tests hobsharp_validation_tests fuzz_case
+  cmake --build "$BUILD_SANITIZE" -j"$JOBS" --target hobsharp_tests hobsharp_validation_tests hobsharp_oracle_tests fuzz_case
 }
 
 # Halt at the first report of either sanitizer, with a stack; leaks count too.
