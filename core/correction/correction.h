@@ -17,6 +17,7 @@
 #include "axis_polynomials.h"
 #include "correction_options.h"
 #include "ground_face.h"
+#include "history_sign.h"
 #include "identified_axes.h"
 #include "outcome.h"
 #include "sensitivity_matrix.h"
@@ -150,6 +151,10 @@ struct Correction {
   // The earlier passes whose measured faces the identified error explains together with this one
   // (machine_error.h); 0 when identified from this face alone.
   int passesJoined = 0;
+  // The faces measured against the pass history's last one, as the change of the axes moves the
+  // face (history_sign.h); nothing without a history or where the axes moved the face too little.
+  std::optional<HistorySign> historySign;
+  bool signReversed() const { return historySign && historySign->reversed; }
 
   // With a measurement at probe points (correctMeasuredPoints, docs/measured-points.md): `before`,
   // `after` and `afterRounded` hold one column, a value per point in the points' order, and their

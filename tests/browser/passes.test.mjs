@@ -200,3 +200,41 @@ test('points measured, used as next run: the pass keeps its points', async () =>
   assert.deepEqual(page.problems, []);
   await page.context().close();
 });
+
+// A measuring machine that signs deviations the other way round (docs/conventions.md §Sign): the
+// first pass's correction adds to the error, and the second pass, measured the same way, moves the
+// face against the change of the axes. The verdict says so first (core/correction/history_sign.h).
+test('faces measured with the other sign: the second pass says to check the sign', async () => {
+  const page = await openPage(base, desk);
+  for (const [k, v] of Object.entries(machineError)) {
+    await page.fill(`[data-offset="${k}"]`, v);
+    await page.dispatchEvent(`[data-offset="${k}"]`, 'change');
+  }
+  // The face the machine grinds, as such a measuring machine reports it: every value negated.
+  const measureNegated = async () => {
+    await afterResult(page, () => page.click('#generate-error'));
+    const csv = await page.inputValue('#measured-csv');
+    const negated = csv.replace(/-?\d+(\.\d+)?(e[-+]?\d+)?/gi, (v) => (v.startsWith('-') ? v.slice(1) : `-${v}`));
+    assert.notEqual(negated, csv);
+    await afterResult(page, () => page.click('#clear-measured'));
+    await page.fill('#measured-csv', negated);
+    await afterResult(page, () => page.click('#use-measured'));
+  };
+  await measureNegated();
+  assert.doesNotMatch(await page.textContent('#verdict'), /Check the sign/, 'a first pass has nothing to check against');
+  await afterResult(page, () => page.click('#next-run'));
+  await measureNegated();
+  const verdict = await page.textContent('#verdict');
+  assert.match(verdict, /^Check the sign: from the last pass measured on the grid to this one the axes changed by what moves the face by [\d.]+ µm rms as this calculator signs deviations \(plus = excess material\), and the faces measured moved the opposite way \(−?-?[\d.]+ times that\)\./);
+  assert.doesNotMatch(verdict, /NaN|undefined|Infinity/);
+  // No figure after the pass stands, and the first thing to do is the sign.
+  assert.match(await page.textContent('#first-step'), /^First check how the measuring machine signs deviations/);
+  assert.match(await page.textContent('#summary-rms'), /; nothing is predicted after the pass until the measuring machine's sign is checked\.$/);
+  const rows = await table(page);
+  assert.deepEqual(rows.map((r) => r[0]), ['1', '2 (under way)', '3 (next, predicted)']);
+  assert.match(rows[2][9], /^nothing predicted: the faces measured moved against the change of the axes/);
+  await page.locator('#verdict').screenshot({ path: path.join(shots, 'passes-sign-reversed.png') });
+  await page.locator('#summary').screenshot({ path: path.join(shots, 'passes-sign-reversed-summary.png') });
+  assert.deepEqual(page.problems, []);
+  await page.context().close();
+});

@@ -7,8 +7,8 @@ import { changesNothing, floorAboveBound, keepsAxesRun, passBound } from '../../
 test('the bound of the pass proposed, and none where no pass is proposed', () => {
   const c = { predictedRmsHigh: 0.446, predictedRms: 0.012 };
   assert.equal(passBound(c), 0.446);
-  assert.equal(passBound({ ...c, usable: true, stop: false, runKept: false }), 0.446);
-  for (const none of [{ stop: true }, { runKept: true }, { change: [0, 0] }, { change: [] }, { usable: false }, { predictedRmsHigh: NaN }, { predictedRmsHigh: undefined }]) {
+  assert.equal(passBound({ ...c, usable: true, stop: false, runKept: false, signReversed: false }), 0.446);
+  for (const none of [{ stop: true }, { runKept: true }, { change: [0, 0] }, { change: [] }, { usable: false }, { signReversed: true }, { predictedRmsHigh: NaN }, { predictedRmsHigh: undefined }]) {
     assert.equal(passBound({ ...c, ...none }), null, JSON.stringify(none));
   }
   assert.equal(passBound(null), null);

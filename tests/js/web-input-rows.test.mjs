@@ -94,6 +94,9 @@ test("the report's verdict line: the class with its conformity, the face's rms b
   // Nothing changed (no axis direction above the noise: every change 0): the same, not "at most … after".
   const unchanged = { ...c, change: c.change.map(() => 0) };
   assert.equal(verdictLine({ ...r, correction: unchanged }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured: no change proposed, keep the axes run.`);
+  // Faces that moved against the change of the axes (correction.signReversed): no figure after.
+  assert.equal(verdictLine({ ...r, correction: { ...c, signReversed: true } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; Check the sign: face ${f(c.rmsBefore)} µm rms measured, moved against the change of the axes since the last pass; no figure after the correction until the measuring machine's sign is checked.`);
+  assert.equal(c.signReversed, false, 'a first pass has no history to check against');
   assert.equal(verdictLine({ ...r, correction: { ...c, predictedRmsHigh: NaN } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; Correctable: face ${f(c.rmsBefore)} µm rms measured.`);
   // Within the probe noise: stop, the axes run stay.
   const quiet = hobsharp.evaluate({ ...paper, measured: measured.map((row) => row.map(() => 0.01)), correction: { probeNoise: 0.5 } });
@@ -120,6 +123,8 @@ test("the answer's rms line: after the pass the prediction's bound, never the id
   // A proposal not to be run: nothing after it; a bound below a nanometre reads as 0.001, not 0.000.
   assert.equal(rmsText({ ...r, correction: { ...c, usable: false } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured.`);
   assert.equal(rmsText({ ...r, correction: { ...c, runKept: true } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured: no change proposed, the axes run stay.`);
+  // Faces that moved against the change of the axes (correction.signReversed): nothing after.
+  assert.equal(rmsText({ ...r, correction: { ...c, signReversed: true } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured; nothing is predicted after the pass until the measuring machine's sign is checked.`);
   assert.equal(rmsText({ ...r, correction: { ...c, change: c.change.map(() => 0) } }, fieldUnit), `Face rms: ${fixed(c.rmsBefore, 3)} µm measured: no change proposed, the axes run stay.`);
   // ... and below the pass's floor (the position resolution's), the floor follows it.
   assert.ok(c.resolutionFloor > 2e-4 && c.resolutionFloor < c.predictedRmsHigh, `floor ${c.resolutionFloor} µm`);
@@ -143,6 +148,9 @@ test("the answer's first line: what to do next, by where the job is", () => {
   assert.doesNotMatch(text, /type the hob/);
   // A correction: run its axes.
   assert.match(firstStepText(first, { ...paper, measured }), /^Run the axes below, measure the face and load it in step 2/);
+  // Faces that moved against the change of the axes: the sign first.
+  assert.match(firstStepText({ ...first, correction: { ...first.correction, signReversed: true } }, { ...paper, measured }),
+    /^First check how the measuring machine signs deviations \(the verdict says why\); only then run the axes below/);
 });
 
 test("the report's first line names the day and what was measured: a grid, the machine's points, or nothing", () => {

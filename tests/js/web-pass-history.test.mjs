@@ -111,6 +111,11 @@ test('figures: measured, predicted next (the rms with its bound) and simulated, 
   assert.deepEqual(resultFigures({ topography }).measured, null);
   assert.equal(resultFigures({ topography }).sigma, null);
   assert.equal(resultFigures({ topography, correction: { ...correction, stop: true } }).stop, true);
+  // Faces that moved against the change of the axes (correction.signReversed): no prediction stands.
+  const reversed = resultFigures({ topography, correction: { ...correction, predictedRms: 0.01, predictedRmsHigh: 0.2, signReversed: true } });
+  assert.equal(reversed.signReversed, true);
+  assert.deepEqual(reversed.next, { rms: null, rmsHigh: null, sse: null, max: null, thickness: null });
+  assert.equal(f.signReversed, false);
 });
 
 test('a first pass whose axes alone grind no face the wheel envelops is not predicted, and says why', () => {

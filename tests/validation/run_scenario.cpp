@@ -90,7 +90,7 @@ double rmsOfDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 
 }  // namespace
 
-ScenarioOutcome runScenario(const Scenario& s, std::vector<CaseInput>* cases) {
+ScenarioOutcome runScenario(const Scenario& s, std::vector<CaseInput>* cases, bool signReversed) {
   const auto start = std::chrono::steady_clock::now();
   ScenarioOutcome out;
   out.scenario = s;
@@ -149,6 +149,7 @@ ScenarioOutcome runScenario(const Scenario& s, std::vector<CaseInput>* cases) {
     }
     Eigen::MatrixXd measured = topographyOf(*ground).normal;
     for (int i = 0; i < measured.size(); ++i) measured.data()[i] += s.spec.sigma * gauss(noise);
+    if (signReversed) measured = -measured;
     p.measuredRms = std::sqrt(measured.squaredNorm() / static_cast<double>(measured.size()));
 
     CaseInput c = s.input;
@@ -175,6 +176,8 @@ ScenarioOutcome runScenario(const Scenario& s, std::vector<CaseInput>* cases) {
     p.stopAdvised = k.stop;
     p.linearisedAtNominal = k.linearisedAtNominal;
     p.passesJoined = k.passesJoined;
+    if (k.historySign) p.signAlong = k.historySign->along;
+    p.signReversed = k.signReversed();
     p.unsolvableTrials = k.summary.unsolvableFaces;
     p.rank = k.rank;
     p.withinNoise = k.withinNoise;

@@ -35,6 +35,11 @@ struct PassOutcome {
   bool stopAdvised = false;
   bool linearisedAtNominal = false;  // the axes run alone could not be simulated
   int passesJoined = 0;              // correction.passesJoined: earlier passes identified with
+  // correction.historySign (history_sign.h): the measured face change along the one the axes'
+  // change makes, per that (+1 as simulated; 2: no check), and whether the sign was called reversed
+  // (the campaign's faces are signed as the calculator signs them: every one is a false alarm).
+  double signAlong = 2;
+  bool signReversed = false;
   int unsolvableTrials = 0;          // trial faces the wheel could not grind (rejected steps)
   // The twin machine: the one whose error is the identified one (correction.identifiedError), on a
   // pass without a wheel correction. twinMisfit: its face against the measurement, on the probe
@@ -64,6 +69,9 @@ struct ScenarioOutcome {
 };
 
 // cases: where given, each pass's case as the calculator evaluated it is appended (case_file.h).
-ScenarioOutcome runScenario(const Scenario& scenario, std::vector<CaseInput>* cases = nullptr);
+// `signReversed`: every face measured with the other sign (a measuring machine that signs deviations
+// the other way round; validate --sign-reversed), to measure how often the history's sign check
+// (history_sign.h) catches it.
+ScenarioOutcome runScenario(const Scenario& scenario, std::vector<CaseInput>* cases = nullptr, bool signReversed = false);
 
 }  // namespace hobsharp::validation

@@ -387,5 +387,63 @@ TEST(PassHistory, WhatIsReadOfTheAxesRestsOnEveryFace) {
   for (int i = 0; i < kAxisCount; ++i) EXPECT_LT(joined.changePerNoise[i], atMost[i]) << "XYZAB"[i];
 }
 
+
+// The sign against the history (history_sign.h). A measuring machine that signs deviations the
+// other way round: its first face is minus the one the machine grinds, the first pass's correction
+// from it adds to the error, and the second face (minus the one that proposal grinds) moves against
+// the change of the axes. The second pass says so before anything else; with the faces signed as
+// the calculator signs them the same two passes agree with it. On the first scenarios of the
+// small, medium and large classes (two of each), straight and helical gashes.
+TEST(PassHistory, FacesSignedTheOtherWayRoundAreCaughtOnTheSecondPass) {
+  int checked = 0;
+  for (int index : {0, 1, 2, 6, 7, 8}) {
+    SCOPED_TRACE("scenario " + std::to_string(index));
+    Passes p;
+    CaseInput first = firstCase(p, index);
+    // As signed: the second pass agrees with the history.
+    {
+      const Passes same = twoPasses(index);
+      const Correction k = corrected(secondCase(same, true));
+      ASSERT_TRUE(k.historySign.has_value()) << k.verdict;
+      EXPECT_FALSE(k.signReversed());
+      EXPECT_GT(k.historySign->along, 0.8);
+      EXPECT_LT(k.historySign->along, 1.2);
+      EXPECT_EQ(k.verdict.find("Check the sign"), std::string::npos) << k.verdict;
+    }
+    // Signed the other way round.
+    first.measured = -p.firstMeasured;
+    auto e = evaluate(*resolveJob(first));
+    ASSERT_TRUE(e.ok() && e->correction);
+    EXPECT_FALSE(e->correction->historySign.has_value());  // a first pass has nothing to check against
+    const AxisPolynomials secondRun = e->correction->axes;
+    CaseInput second = p.s.input;
+    second.axes = secondRun;
+    second.measured = -groundOnMachine(p, secondRun);
+    second.correction.probeNoise = 0.01;
+    second.passes.push_back(PassInput{p.firstRun, -p.firstMeasured, {}, {}});
+    auto f = evaluate(*resolveJob(second));
+    ASSERT_TRUE(f.ok() && f->correction) << (f ? "" : f.error().message);
+    const Correction& k = *f->correction;
+    ASSERT_TRUE(k.historySign.has_value()) << k.verdict;
+    EXPECT_TRUE(k.signReversed());
+    EXPECT_LT(k.historySign->along, -0.8);
+    EXPECT_GT(k.historySign->along, -1.2);
+    EXPECT_EQ(k.verdict.rfind("Check the sign: from the last pass measured on the grid to this one", 0), 0u) << k.verdict;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 6);
+}
+
+// An earlier pass run with the same axes (as after a pass told to stop, which keeps them) gives the
+// check nothing to read, even with its face of the opposite sign: no sign is claimed either way.
+TEST(PassHistory, NoSignIsClaimedWhereTheAxesDidNotChange) {
+  Passes p;
+  CaseInput c = firstCase(p, 0);
+  c.passes.push_back(PassInput{p.firstRun, -p.firstMeasured, {}, {}});
+  const Correction k = corrected(c);
+  EXPECT_FALSE(k.historySign.has_value());
+  EXPECT_FALSE(k.signReversed());
+}
+
 }  // namespace
 }  // namespace hobsharp::validation

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   std::string out = "build/validation";
   int index = -1;
   bool calibration = false;
+  bool signReversed = false;  // every face measured with the other sign (run_scenario.h)
   std::string cases;  // --cases DIR: with --index, each pass's case file written there
   int hobs = CalibrationOptions{}.hobs;
   double errorScale = 1;
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
     else if (a == "--out" && hasValue) out = argv[++i];
     else if (a == "--index" && hasValue) index = std::atoi(argv[++i]);
     else if (a == "--calibration") calibration = true;
+    else if (a == "--sign-reversed") signReversed = true;
     else if (a == "--cases" && hasValue) cases = argv[++i];
     else if (a == "--hobs" && hasValue) hobs = std::atoi(argv[++i]);
     else if (a == "--error-scale" && hasValue) errorScale = std::atof(argv[++i]);
@@ -46,7 +48,7 @@ int main(int argc, char** argv) {
     else if (a == "--bootstrap" && hasValue) bootstrap = std::atoi(argv[++i]);
     else if (a == "--threads" && hasValue) threads = static_cast<unsigned>(std::max(1, std::atoi(argv[++i])));
     else {
-      std::cerr << "usage: validate [--scenarios N] [--seed S] [--out DIR] [--threads T] [--index I [--cases DIR]]\n"
+      std::cerr << "usage: validate [--scenarios N] [--seed S] [--out DIR] [--threads T] [--sign-reversed] [--index I [--cases DIR]]\n"
                    "       validate --calibration [--hobs H] [--error-scale K] [--offsets-only] [--bootstrap B] [--seed S] [--out DIR] [--threads T]\n";
       return 2;
     }
@@ -77,7 +79,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     std::vector<hobsharp::CaseInput> passCases;
-    std::vector<ScenarioOutcome> one{runScenario(*s, cases.empty() ? nullptr : &passCases)};
+    std::vector<ScenarioOutcome> one{runScenario(*s, cases.empty() ? nullptr : &passCases, signReversed)};
     if (!cases.empty()) {
       std::filesystem::create_directories(cases);
       for (size_t k = 0; k < passCases.size(); ++k) {
@@ -99,7 +101,7 @@ int main(int argc, char** argv) {
       for (int i = next++; i < count; i = next++) {
         auto s = makeScenario(seed, i);
         if (s) {
-          outcomes[static_cast<size_t>(i)] = runScenario(*s);
+          outcomes[static_cast<size_t>(i)] = runScenario(*s, nullptr, signReversed);
         } else {
           ScenarioOutcome o;
           o.scenario.index = i;

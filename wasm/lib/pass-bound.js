@@ -1,9 +1,11 @@
 // The bound on what the proposed pass leaves (correction.predictedRmsHigh, µm rms on the probe
 // grid), or null where no pass is proposed (keepsAxesRun: a stop, or no change proposed), a
-// proposal that is not to be used, or no finite bound. Shared by the
+// proposal that is not to be used, faces that moved against the change of the axes since the last
+// pass (correction.signReversed: no figure stands until the measuring machine's sign is checked),
+// or no finite bound. Shared by the
 // page's sentences and files and the CLI's X3P (pure, with Node tests).
 export function passBound(c) {
-  if (!c || keepsAxesRun(c) || c.usable === false) return null;
+  if (!c || keepsAxesRun(c) || c.usable === false || c.signReversed === true) return null;
   return Number.isFinite(c.predictedRmsHigh) ? c.predictedRmsHigh : null;
 }
 

@@ -27,6 +27,8 @@ const figures = (rms, sse, max, thickness) => ({ rms: finiteOr(rms), sse: finite
 
 // Why no next pass is offered when the correction says stop.
 export const STOP_WHY = 'Stop: the face measured is within the probe noise; another pass would only move noise. Keep the axes run.';
+// Why the next pass has no prediction when the faces moved against the change of the axes.
+export const SIGN_WHY = 'nothing predicted: the faces measured moved against the change of the axes; check the measuring machine\'s sign';
 export const NO_CHANGE_WHY = 'No change proposed: another pass with the axes run grinds the same face (the verdict says why). Keep the axes run.';
 
 // A result's figures: the face measured, the one predicted after its correction (with the rms's
@@ -47,11 +49,14 @@ export function resultFigures(result) {
   const c = result.correction, t = result.topography;
   return {
     measured: c ? figures(c.rmsBefore, c.sseBefore, c.maxBefore, c.thicknessBefore) : null,
-    next: c ? { ...figures(c.predictedRms, c.sseAfter, c.maxAfter, c.thicknessAfter), rmsHigh: finiteOr(c.predictedRmsHigh) } : null,
+    // No prediction stands while the faces moved against the change of the axes (correction.signReversed).
+    next: !c ? null : c.signReversed === true ? { ...figures(null, null, null, null), rmsHigh: null }
+      : { ...figures(c.predictedRms, c.sseAfter, c.maxAfter, c.thicknessAfter), rmsHigh: finiteOr(c.predictedRmsHigh) },
     simulated: c ? figures(c.rmsSimulated, c.sseSimulated, c.maxSimulated, c.thicknessSimulated) : figures(t.rms, t.sse, t.max, t.thickness),
     unsimulated: Boolean(c) && c.linearisedAtNominal === true,
     sigma: c ? finiteOr(c.probeNoise) : null,
     stop: Boolean(c) && c.stop === true,
+    signReversed: Boolean(c) && c.signReversed === true,
     points: c ? pointCount(c) : null,
   };
 }
@@ -136,7 +141,8 @@ export function historyRows(kept, current) {
     rows.push({ pass: k + 1, label: `${k + 1} (under way)`, measured: current.measured,
       predicted: p.predicted, sigma: current.sigma, note: join(note, p.note) });
     if (current.next && !current.stop) {
-      rows.push({ pass: k + 2, label: `${k + 2} (next, predicted)`, measured: null, predicted: current.next, sigma: current.sigma, note: '' });
+      rows.push({ pass: k + 2, label: `${k + 2} (next, predicted)`, measured: null, predicted: current.next, sigma: current.sigma,
+        note: current.signReversed ? SIGN_WHY : '' });
     }
   }
   return rows;

@@ -62,6 +62,9 @@ export function verdictLine(result, unitOf, rows) {
     const measured = `face ${figure(before, unit)} rms measured`;
     if (c.stop === true) return `${head}; ${measured}: within the probe noise, keep the axes run.`;
     if (changesNothing(c)) return `${head}; ${measured}: no change proposed, keep the axes run.`;
+    // The faces measured moved against the change of the axes (correction.signReversed): no figure
+    // after the correction stands until the measuring machine's sign is checked.
+    if (c.signReversed === true) return `${head}; Check the sign: ${measured}, moved against the change of the axes since the last pass; no figure after the correction until the measuring machine's sign is checked.`;
     const verdict = String(c.verdict || '');
     const word = verdictWord(verdict);
     // Where some errors the face cannot show leave part of it unground (correction.mayStayUnground).

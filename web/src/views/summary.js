@@ -24,6 +24,10 @@ export function firstStepText(result, caseObject = null) {
   }
   if (result.correction.stop === true) return 'The face is within the probe noise: there is no pass to run.';
   if (changesNothing(result.correction)) return 'No change is proposed: there is no pass to run (the verdict says why).';
+  if (result.correction.signReversed === true) {
+    return 'First check how the measuring machine signs deviations (the verdict says why); only then run the axes below, ' +
+      'measure the face and load it in step 2.';
+  }
   return 'Run the axes below, measure the face and load it in step 2; "Use as next run" keeps this pass in the history first.';
 }
 
@@ -46,6 +50,8 @@ export function rmsText(result, unitOf = fieldUnit) {
     // No change proposed (the correction found would leave more, or nothing stands above the
     // noise): the axes run stay.
     if (changesNothing(c)) return `${measured}: no change proposed, the axes run stay.`;
+    // Faces that moved against the change of the axes (correction.signReversed): nothing after.
+    if (c.signReversed === true) return `${measured}; nothing is predicted after the pass until the measuring machine's sign is checked.`;
     if (high && Number.isFinite(c.predictedRmsHigh))
       // A bound below the least rms written reads "at most 0.001", not 0.000.
       return `${measured} → at most ${rmsFixed(Math.max(c.predictedRmsHigh, LEAST_RMS))} ${high} after the pass${floorNote(c, unitOf)}.`;
