@@ -1,5 +1,6 @@
 #include "envelope.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -197,13 +198,13 @@ Eigen::Matrix3d crossingBlock(const Eigen::Matrix4d& J) {
 
 // Where the wheel at the fixed motion phi = v.phi crosses the normal line of g: Eqs. 5-6 alone,
 // solved for (t, u, w) from v by Newton's method; nothing when it does not settle.
-std::optional<double> crossingAt(const PointEquations& q, EnvelopeGuess v) {
+std::optional<EnvelopeGuess> crossingAt(const PointEquations& q, EnvelopeGuess v) {
   for (int it = 0; it < 30; ++it) {
     const Linearisation L = linearise(q, v);
     const Eigen::Vector3d step = crossingBlock(L.J).partialPivLu().solve(L.F.head<3>());
     if (!step.allFinite()) return std::nullopt;
     v.t -= step(0), v.u -= step(1), v.w -= step(2);
-    if (step.cwiseAbs().maxCoeff() < 1e-13) return v.t;
+    if (step.cwiseAbs().maxCoeff() < 1e-13) return v;
   }
   return std::nullopt;
 }
@@ -214,27 +215,42 @@ std::optional<double> crossingAt(const PointEquations& q, EnvelopeGuess v) {
 // no new Jacobian; the same root, ended by the same 1e-13 as a Newton step). Where they do not
 // contract by half a step (a Jacobian that does not hold so far), Newton's method from the moved
 // point, as crossingAt.
+//
+// Only a crossing of the same sheet of the wheel's surface counts: one within kLocal times the
+// first-order move of (t, u, w) from the predicted crossing. Newton's method from the moved point
+// can land on another sheet: on seed 20261125's scenario 287 (a dressed wheel, the grid's tip
+// corner) a crossing 42 mm along the normal line made a regular envelope point (t'' = -619
+// mm/rad², the swept volume's) read as past the edge (docs/validation.md, the swept volume).
 std::optional<double> crossingNear(const PointEquations& q, const EnvelopeGuess& v, double dphi,
                                    const Eigen::Matrix4d& envelopeJacobian) {
+  constexpr double kLocal = 10;
   EnvelopeGuess moved = v;
   moved.phi += dphi;
   const Eigen::Matrix4d& E = envelopeJacobian;
   const Eigen::PartialPivLU<Eigen::Matrix3d> lu(crossingBlock(E));
   const Eigen::Vector3d predicted = lu.solve(E.block<3, 1>(0, 1) * dphi);
-  if (E.allFinite() && predicted.allFinite()) {
-    EnvelopeGuess c = moved;
-    c.t -= predicted(0), c.u -= predicted(1), c.w -= predicted(2);
-    double last = 0;
-    for (int it = 0; it < 12; ++it) {
-      const Eigen::Vector3d step = lu.solve(residualAt(q, c).head<3>());
-      const double size = step.cwiseAbs().maxCoeff();
-      if (!step.allFinite() || (it > 0 && !(size < 0.5 * last))) break;
-      c.t -= step(0), c.u -= step(1), c.w -= step(2);
-      if (size < 1e-13) return c.t;
-      last = size;
-    }
+  if (!E.allFinite() || !predicted.allFinite()) {
+    const std::optional<EnvelopeGuess> c = crossingAt(q, moved);
+    return c ? std::optional<double>(c->t) : std::nullopt;
   }
-  return crossingAt(q, moved);
+  EnvelopeGuess c = moved;
+  c.t -= predicted(0), c.u -= predicted(1), c.w -= predicted(2);
+  const EnvelopeGuess expected = c;
+  const auto local = [&](const EnvelopeGuess& x) {
+    const double off = std::max({std::abs(x.t - expected.t), std::abs(x.u - expected.u), std::abs(x.w - expected.w)});
+    return off <= kLocal * predicted.cwiseAbs().maxCoeff() + 1e-9;
+  };
+  double last = 0;
+  for (int it = 0; it < 12; ++it) {
+    const Eigen::Vector3d step = lu.solve(residualAt(q, c).head<3>());
+    const double size = step.cwiseAbs().maxCoeff();
+    if (!step.allFinite() || (it > 0 && !(size < 0.5 * last))) break;
+    c.t -= step(0), c.u -= step(1), c.w -= step(2);
+    if (size < 1e-13) return local(c) ? std::optional<double>(c.t) : std::nullopt;
+    last = size;
+  }
+  const std::optional<EnvelopeGuess> n = crossingAt(q, moved);
+  return n && local(*n) ? std::optional<double>(n->t) : std::nullopt;
 }
 
 // The second-order condition of the envelope for a dressed wheel. Along the motion the wheel's

@@ -249,6 +249,32 @@ TEST(SweptVolumeOracle, LibraryAgreesOnCampaignHobs) {
   }
 }
 
+// A regular envelope point is not taken for the edge of the envelope (envelope.cpp, crossingNear):
+// seed 20261125's scenario 287 (wheel class, a dressed wheel, helical, left hand), its machine face
+// at the grid's tip row, where the contact lies past the profile's tip. The edge check's Newton
+// step from the moved motion landed on another sheet of the wheel's surface, 42 mm along the normal
+// line, and the face was refused ("curves too sharply"); the swept volume finds one maximum of the
+// wheel's reach there (t'' about -619 mm/rad²) and agrees with the library's face.
+TEST(SweptVolumeOracle, ARegularPointPastTheProfilesTipIsNotTakenForTheEdge) {
+  auto s = validation::makeScenario(20261125, 287);
+  ASSERT_TRUE(s.ok());
+  CaseInput machineCase = s->input;
+  ASSERT_TRUE(s->wheelError.has_value());
+  machineCase.wheelProfileOffset = *s->wheelError;
+  auto job = resolveJob(machineCase);
+  ASSERT_TRUE(job.ok());
+  const AxisPolynomials machine = plusError(job->runAxes, s->error);
+  const FaceGrid& g = job->grid;
+  const FaceGrid tip = FaceGrid::even(1, g.cols(), g.r.back(), g.r.back(), g.x.front(), g.x.back());
+  const Eigen::MatrixXd lib = libraryFace(*job, machine, tip);
+  OracleOptions opt = physical();
+  opt.motionSamples = 31;
+  auto o = SweptVolumeOracle::make(oracleInput(*job), opt);
+  ASSERT_TRUE(o);
+  const Eigen::MatrixXd t = oracleFace(*o, tip, machine, 0.1);
+  EXPECT_LT((lib - t).cwiseAbs().maxCoeff() * 1000, 1e-6);  // µm
+}
+
 }  // namespace
 }  // namespace hobsharp::oracle
 
