@@ -214,6 +214,10 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
                                         const AxisPolynomials* linearisedAt = nullptr,
                                         const PassHistory* history = nullptr);
 
+// The sign check's finding (history_sign.h) into `c`: where the faces moved against the change of
+// the axes, the verdict leads with "Check the sign:" (not after a stop: grinding ends there).
+void leadWithSign(Correction& c, std::optional<HistorySign> sign);
+
 // The same for a measurement at a measuring machine's probe points (µm, one per point): the
 // correction's rows are exactly those points (the run face simulated there, its sensitivities
 // there; nothing interpolated), and the grid views are filled (measured_points_correction.cpp).
@@ -221,6 +225,6 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
 Outcome<Correction> correctMeasuredPoints(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                           const AxisPolynomials& run, const FaceGrid& grid,
                                           const ProbePoints& probes, const Eigen::VectorXd& measured,
-                                          const CorrectionOptions& options);
+                                          const CorrectionOptions& options, const PassHistory* history = nullptr);
 
 }  // namespace hobsharp

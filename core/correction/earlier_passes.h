@@ -6,11 +6,13 @@
 // operating point only, structural_null_space.h).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "axis_polynomials.h"
+#include "probe_points.h"
 
 namespace hobsharp {
 
@@ -25,8 +27,14 @@ struct PassHistory {
   // A pass in the case, or the case, corrects the wheel: no pass joins (joinsLaterPasses), this
   // one's face neither, as the next case keeps that pass.
   bool wheelCorrected = false;
+  // The last pass measured at the measuring machine's own points (its deviations one column, in
+  // the points' order), with its points: no identification joins it, but the sign check
+  // (history_sign.h) reads it against a face measured now at the same points. None where the
+  // wheel may have changed (wheelCorrected).
+  std::optional<EarlierPass> lastAtPoints;
+  ProbePoints lastPoints;
 
-  bool empty() const { return passes.empty(); }
+  bool empty() const { return passes.empty(); }  // no pass measured on the grid
 };
 
 // Whether a pass's face is in the history later passes are identified with (identifyMachineError):

@@ -13,6 +13,8 @@ namespace {
 // Reversed: the measured change is at most minus half the predicted one along it (as simulated it
 // is +1 up to what the identification missed; reversed, -1 up to the same).
 constexpr double kReversedAlong = -0.5;
+// ... and the two changes point nearly opposite ways (the measured one is mostly minus the predicted).
+constexpr double kReversedCosine = 0.8;
 // Both the predicted change and the measured component along it exceed this many sigma sqrt 2 (the
 // noise of a difference of two faces along one direction): pure noise does so about once in 1.7
 // million draws.
@@ -23,10 +25,8 @@ constexpr double kSignFloor = 0.01;
 }  // namespace
 
 std::optional<HistorySign> historySign(const GroundFace& runFace, const AxisPolynomials& run,
-                                       const Eigen::MatrixXd& measured, const PassHistory& history, double probeNoise,
+                                       const Eigen::MatrixXd& measured, const EarlierPass& last, double probeNoise,
                                        bool joined) {
-  if (history.empty() || runFace.atProbes()) return std::nullopt;
-  const EarlierPass& last = history.passes.back();
   if (last.measured.rows() != measured.rows() || last.measured.cols() != measured.cols() ||
       measured.size() != runFace.size())
     return std::nullopt;
@@ -45,8 +45,18 @@ std::optional<HistorySign> historySign(const GroundFace& runFace, const AxisPoly
   const double component = moved.dot(predicted) / size;
   s.along = component / size;
   s.alongSigmas = component / noise;
-  s.reversed = !joined && s.along <= kReversedAlong && -s.alongSigmas > kSignSigmas;
+  const double movedSize = moved.norm();
+  s.cosine = movedSize > 0 ? component / movedSize : 0.0;
+  s.reversed = !joined && s.along <= kReversedAlong && s.cosine <= -kReversedCosine && -s.alongSigmas > kSignSigmas;
   return s;
+}
+
+const EarlierPass* earlierAtSamePoints(const PassHistory& history, const ProbePoints& probes) {
+  if (!history.lastAtPoints || history.lastPoints.size() != probes.size()) return nullptr;
+  for (size_t k = 0; k < probes.size(); ++k)
+    if (std::abs(history.lastPoints[k].r - probes[k].r) > 1e-9 || std::abs(history.lastPoints[k].x - probes[k].x) > 1e-9)
+      return nullptr;
+  return &*history.lastAtPoints;
 }
 
 }  // namespace hobsharp

@@ -154,6 +154,25 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
 
 }  // namespace
 
+void leadWithSign(Correction& c, std::optional<HistorySign> sign) {
+  c.historySign = sign;
+  // A stop is the whole instruction (grinding ends); otherwise a sign the history contradicts leads.
+  if (!c.signReversed() || c.stop) return;
+  std::ostringstream v;
+  v.precision(3);
+  v << "Check the sign: from the last pass measured " << (c.probes.empty() ? "on the grid" : "at these points")
+    << " to this one the axes changed by what moves the face by " << c.historySign->predictedRms
+    << " µm rms as this calculator signs deviations (plus = excess material), and the faces measured moved the opposite "
+       "way ("
+    << std::fixed << std::setprecision(2) << c.historySign->along
+    << " times that). Faces signed the other way round make every correction add to the error instead of cancelling it: "
+       "do not grind this proposal, which takes them as this calculator does, before checking how the measuring "
+       "machine signs deviations (the manual, Conventions, Sign); if it signs them the other way round, load every "
+       "face again with their sign changed, the earlier passes' too. Were the sign right, the verdict would read: "
+    << c.verdict;
+  c.verdict = v.str();
+}
+
 std::array<double, kAxisCount> axisChangeOver(const AxisPolynomials& proposed, const AxisPolynomials& run,
                                               const MotionRange& range) {
   std::array<double, kAxisCount> out{};
@@ -412,22 +431,7 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   if (c.linearisedAtNominal)
     c.verdict += " The face the axes run grind without the machine's error cannot be simulated (the wheel would not "
                  "envelop it): the correction was linearised at the nominal axes, from the face measured.";
-  if (history) c.historySign = historySign(runFace, run, measured, *history, o.probeNoise, c.passesJoined > 0);
-  // A stop is the whole instruction (grinding ends); otherwise a sign the history contradicts leads.
-  if (c.signReversed() && !c.stop) {
-    std::ostringstream v;
-    v.precision(3);
-    v << "Check the sign: from the last pass measured on the grid to this one the axes changed by what moves the "
-         "face by "
-      << c.historySign->predictedRms << " µm rms as this calculator signs deviations (plus = excess material), and the "
-      << "faces measured moved the opposite way (" << std::fixed << std::setprecision(2) << c.historySign->along
-      << " times that). Faces signed the other way round make every correction add to the error instead of "
-         "cancelling it: check how the measuring machine signs deviations before grinding this proposal, which "
-         "takes them as this calculator does (the manual, Conventions, Sign). Were the sign right, the verdict would "
-         "read: "
-      << c.verdict;
-    c.verdict = v.str();
-  }
+  if (history) leadWithSign(c, historySign(runFace, run, measured, history->passes.back(), o.probeNoise, c.passesJoined > 0));
   return c;
 }
 

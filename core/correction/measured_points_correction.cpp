@@ -3,6 +3,7 @@
 #include <string>
 
 #include "correction.h"
+#include "earlier_passes.h"
 #include "face_vectors.h"
 #include "probe_points.h"
 
@@ -20,7 +21,7 @@ Outcome<Topography> onGrid(const SharpeningSetup& setup, const AxisPolynomials& 
 Outcome<Correction> correctMeasuredPoints(const SharpeningSetup& setup, const AxisPolynomials& nominal,
                                           const AxisPolynomials& run, const FaceGrid& grid,
                                           const ProbePoints& probes, const Eigen::VectorXd& measured,
-                                          const CorrectionOptions& o) {
+                                          const CorrectionOptions& o, const PassHistory* history) {
   if (measured.size() != static_cast<Eigen::Index>(probes.size()))
     return refusePoints("measuredPoints", std::to_string(probes.size()) + " points but " +
                                         std::to_string(measured.size()) + " deviations.", ErrorCode::Internal);
@@ -41,6 +42,10 @@ Outcome<Correction> correctMeasuredPoints(const SharpeningSetup& setup, const Ax
   if (!corrected) return corrected.error();
   Correction c = std::move(corrected).value();
   c.probes = probes;
+  // The sign against the last pass measured at the same points (history_sign.h); no identification
+  // joins points passes.
+  if (const EarlierPass* last = history ? earlierAtSamePoints(*history, probes) : nullptr)
+    leadWithSign(c, historySign(*runFace, run, measured, *last, o.probeNoise, false));
   auto explained = onGrid(setup, plusError(run, c.identifiedError), grid);
   if (!explained) return explained.error();
   c.explainedOnGrid = std::move(explained).value();

@@ -690,7 +690,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
            c.linearisedAtNominal);
     v.count({"correction.passesJoined", "", "the earlier passes (the case's passes measured on the grid) whose faces the identified machine error explains together with this one; 0: identified from this face alone", kWithMeasured},
             c.passesJoined);
-    v.flag({"correction.signReversed", "", "from the last pass measured on the grid to this one the faces measured moved against the change the axes' change makes as this calculator signs deviations: the measuring machine's sign and the calculator's disagree, and the verdict leads with \"Check the sign:\"", kWithMeasured},
+    v.flag({"correction.signReversed", "", "from the last pass measured on the grid (or at the same points) to this one the faces measured moved against the change the axes' change makes as this calculator signs deviations: the measuring machine's sign and the calculator's disagree, and the verdict leads with \"Check the sign:\" (unless it says stop: the face is within the probe noise and grinding ends)", kWithMeasured},
            c.signReversed());
     v.number({"correction.peakToValleyBefore", "µm", "largest minus smallest deviation, measured", kWithMeasured, "peak-to-valley"},
              c.before.peakToValley);

@@ -113,7 +113,7 @@ Outcome<Evaluation> evaluateJob(const SharpeningJob& job) {
   }
   if (measured.atPoints()) {  // docs/measured-points.md
     auto c = correctMeasuredPoints(s, job.nominalAxes, job.runAxes, job.grid, measured.probes, measured.deviations,
-                                   job.correction);
+                                   job.correction, &job.history);
     if (!c) return c.error();
     e.correction = std::move(c).value();
     // The program runs over the grid's motion range, which the points may not span: the change

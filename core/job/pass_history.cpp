@@ -32,6 +32,18 @@ PassHistory passHistory(const std::vector<PassInput>& passes, const AxisPolynomi
   for (const PassInput& p : passes)
     if (joinsLaterPasses(!p.measuredPoints && p.measured.size() > 0, wheelCorrected))
       h.passes.push_back({p.axes, p.measured});
+  if (wheelCorrected) return h;
+  for (auto p = passes.rbegin(); p != passes.rend(); ++p)
+    if (p->measuredPoints && !p->measuredPoints->empty()) {
+      Eigen::MatrixXd values(static_cast<Eigen::Index>(p->measuredPoints->size()), 1);
+      for (size_t k = 0; k < p->measuredPoints->size(); ++k) {
+        const MeasuredPoint& m = (*p->measuredPoints)[k];
+        values(static_cast<Eigen::Index>(k), 0) = m.deviation;
+        h.lastPoints.push_back(ProbePoint{m.r, m.x});
+      }
+      h.lastAtPoints = EarlierPass{p->axes, values};
+      break;
+    }
   return h;
 }
 

@@ -228,7 +228,7 @@ test('faces measured with the other sign: the second pass says to check the sign
   assert.match(verdict, /^Check the sign: from the last pass measured on the grid to this one the axes changed by what moves the face by [\d.]+ µm rms as this calculator signs deviations \(plus = excess material\), and the faces measured moved the opposite way \(−?-?[\d.]+ times that\)\./);
   assert.doesNotMatch(verdict, /NaN|undefined|Infinity/);
   // No figure after the pass stands, and the first thing to do is the sign.
-  assert.match(await page.textContent('#first-step'), /^First check how the measuring machine signs deviations/);
+  assert.match(await page.textContent('#first-step'), /^Do not run the axes below yet: the faces measured moved against the change of the axes/);
   assert.match(await page.textContent('#summary-rms'), /; nothing is predicted after the pass until the measuring machine's sign is checked\.$/);
   const rows = await table(page);
   assert.deepEqual(rows.map((r) => r[0]), ['1', '2 (under way)', '3 (next, predicted)']);

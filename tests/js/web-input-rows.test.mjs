@@ -150,7 +150,7 @@ test("the answer's first line: what to do next, by where the job is", () => {
   assert.match(firstStepText(first, { ...paper, measured }), /^Run the axes below, measure the face and load it in step 2/);
   // Faces that moved against the change of the axes: the sign first.
   assert.match(firstStepText({ ...first, correction: { ...first.correction, signReversed: true } }, { ...paper, measured }),
-    /^First check how the measuring machine signs deviations \(the verdict says why\); only then run the axes below/);
+    /^Do not run the axes below yet: the faces measured moved against the change of the axes .* load every face again with "change sign" \(the earlier passes' too\)/);
 });
 
 test("the report's first line names the day and what was measured: a grid, the machine's points, or nothing", () => {

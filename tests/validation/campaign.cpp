@@ -208,7 +208,7 @@ nlohmann::json toJson(const Campaign& c) {
                           {"withinNoise", p.withinNoise}, {"amplifying", p.amplifying}, {"iterations", p.iterations},
                           {"linearisedAtNominal", p.linearisedAtNominal}, {"passesJoined", p.passesJoined}, {"stop", p.stopAdvised},
                           {"unsolvableTrials", p.unsolvableTrials}, {"twinMisfit", p.twinMisfit}, {"twinGap", p.twinGap},
-                          {"nullPartRms", p.nullPartRms}, {"signAlong", p.signAlong}, {"signReversed", p.signReversed}};
+                          {"nullPartRms", p.nullPartRms}, {"signAlong", p.signAlong}, {"signCosine", p.signCosine}, {"signReversed", p.signReversed}};
       if (!p.message.empty()) q["message"] = p.message;
       s["passes"].push_back(q);
     }

@@ -176,7 +176,7 @@ ScenarioOutcome runScenario(const Scenario& s, std::vector<CaseInput>* cases, bo
     p.stopAdvised = k.stop;
     p.linearisedAtNominal = k.linearisedAtNominal;
     p.passesJoined = k.passesJoined;
-    if (k.historySign) p.signAlong = k.historySign->along;
+    if (k.historySign) p.signAlong = k.historySign->along, p.signCosine = k.historySign->cosine;
     p.signReversed = k.signReversed();
     p.unsolvableTrials = k.summary.unsolvableFaces;
     p.rank = k.rank;

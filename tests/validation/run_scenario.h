@@ -39,6 +39,7 @@ struct PassOutcome {
   // change makes, per that (+1 as simulated; 2: no check), and whether the sign was called reversed
   // (the campaign's faces are signed as the calculator signs them: every one is a false alarm).
   double signAlong = 2;
+  double signCosine = 2;  // correction.historySign's cosine (2: no check)
   bool signReversed = false;
   int unsolvableTrials = 0;          // trial faces the wheel could not grind (rejected steps)
   // The twin machine: the one whose error is the identified one (correction.identifiedError), on a

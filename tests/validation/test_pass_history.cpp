@@ -445,5 +445,90 @@ TEST(PassHistory, NoSignIsClaimedWhereTheAxesDidNotChange) {
   EXPECT_FALSE(k.signReversed());
 }
 
+
+// The same with the faces measured at the measuring machine's own points (here the centres of the
+// grid's cells), which no identification joins: the sign is checked against the last pass
+// measured at the same points. And with the linear method, which never joins the history, or an
+// axis locked, which keeps the faces from being joined: faces signed as the calculator signs them
+// are not called reversed (an independent review, 2026-12-07, found seed 1006's scenario 56 called
+// reversed so before the cosine's test; history_sign.h).
+// The face `axes` grind on the machine at the centres of the grid's cells (off the grid, so that
+// they stay points), µm.
+std::vector<MeasuredPoint> atCellCentres(const Passes& p, const AxisPolynomials& axes, double sign) {
+  const FaceGrid& g = p.job.grid;
+  ProbePoints probes;
+  for (int i = 0; i + 1 < g.rows(); ++i)
+    for (int j = 0; j + 1 < g.cols(); ++j) probes.push_back(ProbePoint{(g.r[i] + g.r[i + 1]) / 2, (g.x[j] + g.x[j + 1]) / 2});
+  auto f = simulateGroundFace(p.job.setup, plusError(axes, p.s.error), probes, g, Sensitivities::Skip);
+  EXPECT_TRUE(f.ok());
+  std::vector<MeasuredPoint> out;
+  if (!f) return out;
+  const Eigen::VectorXd d = faceNormal(*f);
+  for (size_t k = 0; k < probes.size(); ++k) out.push_back(MeasuredPoint{probes[k].r, probes[k].x, sign * d(static_cast<int>(k))});
+  return out;
+}
+
+TEST(PassHistory, TheSignIsCheckedAtTheSamePointsToo) {
+  for (int index : {1, 7}) {
+    SCOPED_TRACE("scenario " + std::to_string(index));
+    for (double sign : {1.0, -1.0}) {
+      Passes p;
+      CaseInput first = firstCase(p, index);
+      first.measured.reset();
+      first.measuredPoints = atCellCentres(p, p.firstRun, sign);
+      auto e = evaluate(*resolveJob(first));
+      ASSERT_TRUE(e.ok() && e->correction);
+      CaseInput second = p.s.input;
+      second.axes = e->correction->axes;
+      second.measuredPoints = atCellCentres(p, *second.axes, sign);
+      second.correction.probeNoise = 0.01;
+      second.passes.push_back(PassInput{p.firstRun, Eigen::MatrixXd(), first.measuredPoints, {}});
+      auto f = evaluate(*resolveJob(second));
+      ASSERT_TRUE(f.ok() && f->correction) << (f ? "" : f.error().message);
+      const Correction& k = *f->correction;
+      ASSERT_TRUE(k.historySign.has_value()) << k.verdict;
+      EXPECT_EQ(k.signReversed(), sign < 0) << k.verdict;
+      EXPECT_EQ(k.verdict.rfind("Check the sign: from the last pass measured at these points", 0) == 0, sign < 0) << k.verdict;
+      // Other points than the last pass's: nothing to check against.
+      second.measuredPoints->pop_back();
+      auto g = evaluate(*resolveJob(second));
+      ASSERT_TRUE(g.ok() && g->correction);
+      EXPECT_FALSE(g->correction->historySign.has_value());
+    }
+  }
+}
+
+TEST(PassHistory, FacesNotJoinedAreNotCalledReversedWhenSignedAsTheCalculatorSigns) {
+  // Seed 1006's scenario 56 (150 µm, helical): its second pass's first-order change reads -4.4 along
+  // the predicted one, at a cosine of -0.4.
+  const Passes p = twoPasses(56, 1006);
+  for (const char* variant : {"linear", "X locked", "B locked"}) {
+    SCOPED_TRACE(variant);
+    CaseInput c = secondCase(p, true);
+    if (std::string(variant) == "linear") c.correction.method = "linear";
+    else c.correction.lockedAxes = {std::string(variant) == "X locked" ? Axis::X : Axis::B};
+    const Correction k = corrected(c);
+    EXPECT_EQ(k.passesJoined, 0);
+    ASSERT_TRUE(k.historySign.has_value());
+    EXPECT_LT(k.historySign->along, -0.5);
+    EXPECT_FALSE(k.signReversed()) << k.verdict;
+  }
+  // The linear method on faces signed the other way round is still caught.
+  Passes q;
+  CaseInput first = firstCase(q, 1);
+  first.measured = -q.firstMeasured;
+  first.correction.method = "linear";
+  auto e = evaluate(*resolveJob(first));
+  ASSERT_TRUE(e.ok() && e->correction);
+  CaseInput second = q.s.input;
+  second.axes = e->correction->axes;
+  second.measured = -groundOnMachine(q, *second.axes);
+  second.correction.probeNoise = 0.01;
+  second.correction.method = "linear";
+  second.passes.push_back(PassInput{q.firstRun, -q.firstMeasured, {}, {}});
+  const Correction k = corrected(second);
+  EXPECT_TRUE(k.signReversed()) << k.verdict;
+}
+
 }  // namespace
 }  // namespace hobsharp::validation

@@ -25,8 +25,9 @@ export function firstStepText(result, caseObject = null) {
   if (result.correction.stop === true) return 'The face is within the probe noise: there is no pass to run.';
   if (changesNothing(result.correction)) return 'No change is proposed: there is no pass to run (the verdict says why).';
   if (result.correction.signReversed === true) {
-    return 'First check how the measuring machine signs deviations (the verdict says why); only then run the axes below, ' +
-      'measure the face and load it in step 2.';
+    return 'Do not run the axes below yet: the faces measured moved against the change of the axes (the verdict says by ' +
+      'how much). If the measuring machine signs deviations the other way round, load every face again with "change sign" ' +
+      '(the earlier passes\' too): the axes below were computed from faces of the wrong sign.';
   }
   return 'Run the axes below, measure the face and load it in step 2; "Use as next run" keeps this pass in the history first.';
 }
