@@ -37,7 +37,7 @@ struct HistorySign {
 // pass measured on the grid, or its last at the same points); nothing where the rows differ, or
 // where the axes did not change enough to move the face out of the noise (a floor of kSignFloor µm
 // of sigma where none is declared). `joined`: the identification explained this face and the
-// earlier ones together (passesJoined > 0).
+// earlier pass together (it was among the faces the identification joined).
 std::optional<HistorySign> historySign(const GroundFace& runFace, const AxisPolynomials& run,
                                        const Eigen::MatrixXd& measured, const EarlierPass& earlier, double probeNoise,
                                        bool joined);

@@ -431,7 +431,11 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
   if (c.linearisedAtNominal)
     c.verdict += " The face the axes run grind without the machine's error cannot be simulated (the wheel would not "
                  "envelop it): the correction was linearised at the nominal axes, from the face measured.";
-  if (history) leadWithSign(c, historySign(runFace, run, measured, history->passes.back(), o.probeNoise, c.passesJoined > 0));
+  // Joined settles the sign only where the pass it is checked against is among the faces joined:
+  // every one (a pass whose face cannot be simulated is left out of the join, machine_error.cpp).
+  if (history)
+    leadWithSign(c, historySign(runFace, run, measured, history->passes.back(), o.probeNoise,
+                                c.passesJoined == static_cast<int>(history->passes.size())));
   return c;
 }
 
