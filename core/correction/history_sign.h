@@ -1,6 +1,6 @@
 // Whether the faces measured run with the calculator's sign, from the pass history (docs/method.md
-// §The sign against the pass history). Between the last earlier pass measured on the grid and this
-// one the machine's error is the same, so the measured face moved by what the change of the axes
+// §The sign against the pass history). Between an earlier pass (the last measured on the grid, or
+// the last at the same points) and this one the machine's error is the same, so the measured face moved by what the change of the axes
 // moves it: S (run - earlier axes), S the run face's sensitivities (Eqs. 13-16), to first order. A
 // measuring machine that signs deviations the other way moves it by minus that, and every
 // correction from its faces adds to the error instead of cancelling it (docs/conventions.md §Sign).
@@ -27,7 +27,7 @@ struct HistorySign {
   // explains the faces together (`joined` false). A joined history is explained to the noise by one
   // error, as signed: that settles it. The first-order prediction alone does not: after a 150 µm
   // error a change along directions the run face barely shows moves the face at second order, and
-  // once it read along -4.4 (cosine -0.1) on a history one error explains (seed 1006, scenario 56),
+  // once it read along -4.4 (cosine -0.42) on a history one error explains (seed 1006, scenario 56),
   // which the linear method or a locked axis would not have joined (an independent review,
   // 2026-12-07; docs/method.md).
   bool reversed = false;
