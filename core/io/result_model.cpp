@@ -563,7 +563,7 @@ void visitResult(const Evaluation& e, ResultVisitor& v) {
   const Topography& t = e.topography;
   numbers(v, {"topography.r", "mm", "grid radii, root to tip"}, t.grid.r);
   numbers(v, {"topography.x", "mm", "grid axial positions, along the gash"}, t.grid.x);
-  matrix(v, {"topography.normal", "µm", "normal deviation for the axes run; plus = excess material"}, t.normal);
+  matrix(v, {"topography.normal", "µm", "normal deviation for the axes run (for the nominal axes where correction.linearisedAtNominal: the axes run alone grind no face the wheel envelops); plus = excess material"}, t.normal);
   matrix(v, {"topography.circular", "µm", "the same along the circle about the hob axis, µm of arc at the mean radius"},
          t.circular);
   v.number({"topography.thickness", "µm", "thickness error at the mean point", "", "thickness error"}, t.thickness);

@@ -86,8 +86,15 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   };
   // The measured grid is the case's: an input, in the case format's µm (docs/case-format.md).
   if (caseObject && caseObject.measured) grid('measured normal deviation (µm)', caseObject.measured);
-  grid(`simulated normal deviation (${unitText('topography.normal')}) for the axes run`, r.topography.normal);
-  grid(`simulated circular deviation (${unitText('topography.circular')} at the mean radius)`, r.topography.circular);
+  // Axes run that alone grind no face the wheel envelops (correction.linearisedAtNominal): the
+  // module's topography is then the nominal axes' face, which the correction was linearised at, not
+  // a face of the axes run: no grid, and no thickness, is written for them.
+  const unsimulated = Boolean(c) && c.linearisedAtNominal === true;
+  if (unsimulated) lines.push('', `# no simulated face for the axes run: ${fieldMeaning('correction.linearisedAtNominal')}`);
+  else {
+    grid(`simulated normal deviation (${unitText('topography.normal')}) for the axes run`, r.topography.normal);
+    grid(`simulated circular deviation (${unitText('topography.circular')} at the mean radius)`, r.topography.circular);
+  }
   if (c) grid(`predicted normal deviation after correction, on the identified machine (${unitText('correction.residual')})`, c.residual);
   // At the measuring machine's points (docs/measured-points.md): each block reads back as a
   // points CSV (wasm/lib/points-csv.js), its title line a comment; its header is that format's.
@@ -99,7 +106,7 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
     points('measured points', c.pointMeasured);
     points('predicted at the measured points after correction, on the identified machine', c.pointResidual);
   }
-  lines.push('', row(`# ${fieldMeaning('topography.thickness')} (${unitText('topography.thickness')})`, r.topography.thickness));
+  if (!unsimulated) lines.push('', row(`# ${fieldMeaning('topography.thickness')} (${unitText('topography.thickness')})`, r.topography.thickness));
   return BOM + lines.join('\n') + '\n';
 }
 
