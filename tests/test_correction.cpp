@@ -247,6 +247,26 @@ TEST(Correction, StraightGash) {
   EXPECT_LT(topographyFor(job, withError(c->axes, nominal, error)).sse, 0.01);
 }
 
+// The precision demand's face per axis error (correction.precision.facePerError): an axis the face
+// does not show to first order (X, Y and B on a straight gash) reads 0, not the rounding of its
+// sensitivities (Y read 5.6e-17 µm per µm beside exact zeros for X and B; an independent review).
+TEST(Correction, AnAxisTheFaceDoesNotShowDemandsNoPrecision) {
+  SharpeningJob job = jobOf(straightGashCase());
+  AxisPolynomials error = job.nominalAxes;
+  error[Axis::Z].a[0] -= 0.006;
+  error[Axis::A].a[1] += 2e-6;  // rad/mm
+  job.measured = MeasuredFace::onGrid(topographyFor(job, error).normal);
+  auto e = evaluate(job);
+  ASSERT_TRUE(e.ok());
+  ASSERT_TRUE(e->correction);
+  const std::array<double, kAxisCount>& f = e->correction->facePerAxisError;
+  EXPECT_EQ(f[static_cast<int>(Axis::X)], 0.0);
+  EXPECT_EQ(f[static_cast<int>(Axis::Y)], 0.0);
+  EXPECT_EQ(f[static_cast<int>(Axis::B)], 0.0);
+  EXPECT_GT(f[static_cast<int>(Axis::Z)], 0.1);  // µm of face per µm of Z
+  EXPECT_GT(f[static_cast<int>(Axis::A)], 1e-3);  // per µrad
+}
+
 TEST(Correction, MeasuredOfTheWrongShapeIsRefused) {
   const SharpeningJob job = jobOf(paperCase());
   auto c = correctionStep(groundFaceOf(job, job.nominalAxes), job.nominalAxes, Eigen::MatrixXd::Zero(4, 9),
