@@ -27,8 +27,8 @@ const LINEAR_AXES = ['X', 'Y', 'Z'];
 
 // The dialects: the highest degree a block takes, the decimals of a position, and the file's extension.
 const DIALECT = {
-  sinumerik: { degree: 5, positionDecimals: 6, extension: 'mpf', title: 'Siemens SINUMERIK 840D sl, polynomial interpolation POLY, degree 5 (X=PO(end,a2,a3,a4,a5))' },
-  'sinumerik-cubic': { degree: 3, positionDecimals: 6, extension: 'mpf', title: 'Siemens SINUMERIK, polynomial interpolation POLY, degree 3 (PO[X]=(end,a2,a3))' },
+  sinumerik: { degree: 5, positionDecimals: 6, extension: 'mpf', title: 'Siemens SINUMERIK 840D sl, polynomial interpolation POLY, up to degree 5 (X=PO(end,a2,a3,a4,a5))' },
+  'sinumerik-cubic': { degree: 3, positionDecimals: 6, extension: 'mpf', title: 'Siemens SINUMERIK, polynomial interpolation POLY, up to degree 3 (PO[X]=(end,a2,a3))' },
   heidenhain: { degree: 3, positionDecimals: 4, extension: 'h', title: 'HEIDENHAIN TNC, spline interpolation SPL (cubic, t from 1 to 0)' },
 };
 // What a piece may deviate from the axes it replaces before the digits are written: far below
