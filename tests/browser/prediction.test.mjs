@@ -1,6 +1,6 @@
 // What a pass will leave (correction.predictedRms, correction.predictedRmsHigh) and the stop verdict
 // (correction.stop) on the page: under the verdict "Predicted after the pass: at most Y µm rms at the
-// probe points (X µm rms if the identified error is all of the machine's)", with the units the module gives; in the grinding passes' table and plot the rms with its
+// probe points (if the identified error is all of the machine's: X µm rms)", with the units the module gives; in the grinding passes' table and plot the rms with its
 // bound and the probe noise's floor; and, for a face measured within the probe noise, a stop
 // verdict set apart, no prediction, no next pass offered and the axes run kept as the axes to run.
 import { test } from 'node:test';
@@ -45,7 +45,7 @@ test('a measured face: the prediction and its bound under the verdict, in µm rm
   await page.waitForSelector('#prediction:not([hidden])');
   const line = await page.textContent('#prediction');
   const model = expected.predictedRms === 0 ? 'within the probe noise' : `${figure(expected.predictedRms)} µm rms`;
-  assert.equal(line, `Predicted after the pass: at most ${figure(expected.predictedRmsHigh)} µm rms at the probe points (${model} if the identified error is all of the machine's).`);
+  assert.equal(line, `Predicted after the pass: at most ${figure(expected.predictedRmsHigh)} µm rms at the probe points (if the identified error is all of the machine's: ${model}).`);
   assert.match(await page.getAttribute('#prediction', 'title'), /on the probe grid.*At most: at most this rms/);
   const verdict = await page.textContent('#verdict');
   assert.match(verdict, /^Correctable: /);
@@ -60,7 +60,7 @@ test('a measured face: the prediction and its bound under the verdict, in µm rm
   assert.equal(current[0], '1 (under way)');
   assert.equal(Number(current[1]), Number(expected.rmsBefore.toPrecision(4)));
   assert.equal(next[0], '2 (next, predicted)');
-  assert.equal(next[5], `at most ${tableFigure(Math.max(expected.predictedRmsHigh, 0.001))} (${expected.predictedRms === 0 ? 'within the probe noise' : tableFigure(expected.predictedRms)} on the identified machine)`);
+  assert.equal(next[5], `at most ${tableFigure(Math.max(expected.predictedRmsHigh, 0.001))} (on the identified machine: ${expected.predictedRms === 0 ? 'within the probe noise' : tableFigure(expected.predictedRms)})`);
   // The plot's rms panel: the noise floor at the correction's sigma, the bound as a bar.
   const traces = await rmsTraces(page);
   assert.deepEqual(traces.map((t) => t.name), ['probe noise σ 0.5 µm', 'measured', 'predicted']);

@@ -194,10 +194,10 @@ test('series: per quantity the passes with a value, measured and predicted apart
 });
 
 test('the rms predicted in the table: the bound first, the identified machine\'s figure with its condition, a 0 in words', () => {
-  assert.equal(predictedRmsText({ rms: 0.012, rmsHigh: 0.446 }), 'at most 0.446 (0.012 on the identified machine)');
+  assert.equal(predictedRmsText({ rms: 0.012, rmsHigh: 0.446 }), 'at most 0.446 (on the identified machine: 0.012)');
   // The noise taken out clips the figure to 0: said in words, not as a certain-looking 0 (a review found "0").
-  assert.equal(predictedRmsText({ rms: 0, rmsHigh: 0.00575 }), 'at most 0.00575 (within the probe noise on the identified machine)');
-  assert.equal(predictedRmsText({ rms: 3e-11, rmsHigh: 2e-4 }), 'at most 0.001 (below 0.001 on the identified machine)');
+  assert.equal(predictedRmsText({ rms: 0, rmsHigh: 0.00575 }), 'at most 0.00575 (on the identified machine: within the probe noise)');
+  assert.equal(predictedRmsText({ rms: 3e-11, rmsHigh: 2e-4 }), 'at most 0.001 (on the identified machine: below 0.001)');
   assert.equal(predictedRmsText({ rms: 1.23456, rmsHigh: null }), '1.235');
   assert.equal(predictedRmsText({ rms: null, rmsHigh: 0.4 }), '—');
 });

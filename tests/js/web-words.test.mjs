@@ -90,19 +90,19 @@ test('the prediction: what the pass will leave and its bound, µm rms at the pro
   assert.equal(c.stop, false);
   const text = predictionText(c, fieldUnit);
   // The bound first; the model's figure only with its condition, never as what the pass leaves.
-  assert.match(text, /^Predicted after the pass: at most [\d.e+-]+ µm rms at the probe points \(([\d.e+-]+ µm rms|within the probe noise) if the identified error is all of the machine's\)(; that is with the exact axes, and the machine's position resolution sets a floor of about [\d.]+ µm rms)?\.$/);
+  assert.match(text, /^Predicted after the pass: at most [\d.e+-]+ µm rms at the probe points \(if the identified error is all of the machine's: ([\d.e+-]+ µm rms|within the probe noise)\)(; that is with the exact axes, and the machine's position resolution sets a floor of about [\d.]+ µm rms)?\.$/);
   // The pass's floor follows a bound below it (the module's verdict says the same), and only then.
   const low = { ...c, predictedRmsHigh: 0.00575, resolutionFloor: 0.0329 };
   assert.match(predictionText(low, fieldUnit), /\); that is with the exact axes, and the machine's position resolution sets a floor of about 0\.0329 µm rms\.$/);
   assert.equal(floorNote({ ...low, predictedRmsHigh: 0.5 }, fieldUnit), '');
   assert.equal(floorNote(low, () => null), '', 'no unit, no figure');
   // A prediction of no shape beyond the noise is said in words, not as a certain-looking 0.
-  assert.match(predictionText({ ...c, predictedRms: 0 }, fieldUnit), /\(within the probe noise if the identified error is all of the machine's\)/);
-  assert.match(predictionText({ ...c, predictedRms: 0.2 }, fieldUnit), /\(0\.2 µm rms if the identified error/);
+  assert.match(predictionText({ ...c, predictedRms: 0 }, fieldUnit), /\(if the identified error is all of the machine's: within the probe noise\)/);
+  assert.match(predictionText({ ...c, predictedRms: 0.2 }, fieldUnit), /\(if the identified error is all of the machine's: 0\.2 µm rms\)/);
   assert.doesNotMatch(predictionText({ ...c, predictedRms: 0.2 }, fieldUnit), /pass: 0\.2/);
   assert.ok(text.includes(`at most ${Number(c.predictedRmsHigh.toPrecision(3))} µm rms`), text);
   // Units are the module's: another unit is shown as given; none given, no line.
-  assert.match(predictionText({ ...c, predictedRms: 0.2 }, (p) => (p.endsWith('High') ? 'mm' : 'µm')), /at most [\d.e+-]+ mm rms at the probe points \(0\.2 µm rms/);
+  assert.match(predictionText({ ...c, predictedRms: 0.2 }, (p) => (p.endsWith('High') ? 'mm' : 'µm')), /at most [\d.e+-]+ mm rms at the probe points \(if the identified error is all of the machine's: 0\.2 µm rms\)/);
   assert.equal(predictionText(c, () => null), null);
   // Nothing that is not a number, nothing for a proposal that is not to be run.
   assert.equal(predictionText({ ...c, predictedRmsHigh: NaN }, fieldUnit), null);

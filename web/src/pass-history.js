@@ -36,13 +36,13 @@ export const NO_CHANGE_WHY = 'No change proposed: another pass with the axes run
 // read as it is: correction.*Simulated; before one, the topography); the probe noise the correction assumed
 // (sigma) and whether it says stop. A number that is not finite becomes null (shown as a dash).
 // The rms predicted, in the table's words: its bound, what the pass leaves, and the identified
-// machine's figure below it with that condition, "at most 0.446 (0.012 on the identified
-// machine)"; a figure the noise takes to 0 (correction.predictedRms: the misfit less the noise,
+// machine's figure below it with that condition, "at most 0.446 (on the identified machine:
+// 0.012)"; a figure the noise takes to 0 (correction.predictedRms: the misfit less the noise,
 // clipped) is said in words, not as a certain-looking 0. Without a bound, the figure alone.
 export function predictedRmsText(f) {
   if (f.rms === null || typeof f.rmsHigh !== 'number') return faceFigure(f.rms, LEAST_RMS, 4);
   const model = f.rms === 0 ? 'within the probe noise' : faceFigure(f.rms, LEAST_RMS);
-  return `at most ${faceFigure(Math.max(f.rmsHigh, LEAST_RMS), LEAST_RMS)} (${model} on the identified machine)`;  // "at most 0.001", not "at most below 0.001"
+  return `at most ${faceFigure(Math.max(f.rmsHigh, LEAST_RMS), LEAST_RMS)} (on the identified machine: ${model})`;  // "at most 0.001", not "at most below 0.001"
 }
 
 export function resultFigures(result) {

@@ -61,8 +61,10 @@ const rmsFigure = (v) => fmt(v, 3);
 // the model's figure (correction.predictedRms) said for what it is, the face left if the identified
 // error is all of the machine's, never as what the pass leaves (the pass can leave more, up to the
 // bound); with the units the module gives its fields (unitOf: a path to its unit, null for a field
-// it does not describe): "Predicted after the pass: at most 0.446 µm rms at the probe points (0.012
-// µm rms if the identified error is all of the machine's)." Null when there is nothing to run
+// it does not describe): "Predicted after the pass: at most 0.446 µm rms at the probe points (if
+// the identified error is all of the machine's: 0.012 µm rms)." (the condition first: after
+// a bound far above it, "at most 118 µm rms (within the probe noise if ...)" read as a contradiction,
+// an independent review). Null when there is nothing to run
 // (correction.stop, a run kept, or a proposal that is not usable), when a figure is not a finite number, or
 // when the module gives no unit.
 // After a bound below the pass's floor (floorAboveBound), the floor in words, with the module's unit:
@@ -84,5 +86,5 @@ export function predictionText(c, unitOf) {
   if (!unit || !highUnit) return null;
   // No shape left beyond the probe's noise: say so rather than print a certain-looking 0.
   const model = rms === 0 ? 'within the probe noise' : `${rmsFigure(rms)} ${unit} rms`;
-  return `Predicted after the pass: at most ${rmsFigure(high)} ${highUnit} rms at the probe points (${model} if the identified error is all of the machine's)${floorNote(c, unitOf)}.`;
+  return `Predicted after the pass: at most ${rmsFigure(high)} ${highUnit} rms at the probe points (if the identified error is all of the machine's: ${model})${floorNote(c, unitOf)}.`;
 }
