@@ -108,6 +108,9 @@ const Rule kRules[] = {
     {"PressureAngle", [](Json& j) { j["hob"]["normalPressureAngle"] = 50; }, "hob.normalPressureAngle", "between 0 and 45"},
     {"NoLeadNorAngle", [](Json& j) { j["hob"].erase("gashLead"); }, "hob.gashLead", "needs hob.gashLead or hob.gashHelixAngle"},
     {"LeadAndAngleDisagree", [](Json& j) { j["hob"]["gashHelixAngle"] = 14.0; }, "hob.gashHelixAngle", "disagrees with hob.gashLead"},
+    // A straight gash ignores a lead or helix angle left from a helical case, but not whatever its value.
+    {"StraightWithNegativeLead", [](Json& j) { j["hob"]["gash"] = "straight"; j["hob"]["gashLead"] = -3; }, "hob.gashLead", "must be positive"},
+    {"StraightWithWildAngle", [](Json& j) { j["hob"]["gash"] = "straight"; j["hob"].erase("gashLead"); j["hob"]["gashHelixAngle"] = -500; }, "hob.gashHelixAngle", "between 0 and 90"},
     {"TiltOutOfRange", [](Json& j) { j["setup"]["tilt"] = 95; }, "setup.tilt", "between -90 and 90"},
     // |rakeOffset| >= r_p.
     {"RakeOffsetAtPitch", [](Json& j) { j["hob"]["rakeOffset"] = 31.25; }, "hob.rakeOffset", "less than the pitch radius"},

@@ -36,13 +36,16 @@ Outcome<void> checkHob(const HobInput& h) {
   if (std::abs(h.rakeOffset) >= ra - h.gashDepth)
     return refuse("hob.rakeOffset", "|e| must be less than the gash root radius (" +
                                         numberText(ra - h.gashDepth) + " mm); got " + exactText(h.rakeOffset) + " mm.");
+  // A lead or helix angle given with a straight gash is ignored (docs/case-format.md), as a case made
+  // from a helical one by changing the gash keeps them; but not whatever its value (a helix angle
+  // of -500 deg went through unremarked; an independent review).
+  if (h.gashLead)
+    if (auto r = positive("hob.gashLead", *h.gashLead, "mm"); !r) return r;
+  if (h.gashHelixAngle && !(*h.gashHelixAngle > 0 && *h.gashHelixAngle < 90))
+    return refuse("hob.gashHelixAngle", "must lie between 0 and 90 deg; got " + exactText(*h.gashHelixAngle) + " deg.");
   if (h.gash == GashKind::Helical) {
     if (!h.gashLead && !h.gashHelixAngle)
       return refuse("hob.gashLead", "a helical gash needs hob.gashLead or hob.gashHelixAngle.");
-    if (h.gashLead)
-      if (auto r = positive("hob.gashLead", *h.gashLead, "mm"); !r) return r;
-    if (h.gashHelixAngle && !(*h.gashHelixAngle > 0 && *h.gashHelixAngle < 90))
-      return refuse("hob.gashHelixAngle", "must lie between 0 and 90 deg; got " + exactText(*h.gashHelixAngle) + " deg.");
     if (h.gashLead && h.gashHelixAngle) {
       const double fromLead = helixAngleFromLead(*h.gashLead, rp) * kDegPerRad;
       if (std::abs(fromLead - *h.gashHelixAngle) > kHelixAngleAgreement)
