@@ -484,6 +484,15 @@ TEST(WheelCase, MeasuredProfileIsCheckedForCoverage) {
   far["wheel"]["measuredProfile"]["Z"][4] = m.values[4] + 500;
   const Error e = firstError(far);
   EXPECT_EQ(e.field.rfind("wheel.measuredProfile", 0), 0u) << e.message;
+  // A point with no foot on the profile: the radii searched, and beside them the face's own (the
+  // search reaches past root and tip; the two ranges read as a contradiction, an independent review).
+  Json nowhere = j;
+  nowhere["wheel"]["measuredProfile"]["R"][m.R.size() - 1] = 80.0;
+  nowhere["wheel"]["measuredProfile"]["Z"][m.R.size() - 1] = 0.0;
+  const Error n = firstError(nowhere);
+  EXPECT_NE(n.message.find("has no foot on the wheel's conjugate profile"), std::string::npos) << n.message;
+  EXPECT_NE(n.message.find("(The face runs from r = 19 to 40 mm; a wheel point is sought a quarter of its depth past either end.)"),
+            std::string::npos) << n.message;
   Json shortZ = j;
   shortZ["wheel"]["measuredProfile"]["Z"].erase(3);
   expectRefused(shortZ, "wheel.measuredProfile.Z", "one value per radius");

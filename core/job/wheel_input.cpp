@@ -88,7 +88,12 @@ Outcome<WheelSurface> resolveWheelSurface(const CaseInput& in, const SharpeningS
   const double margin = 0.25 * (outerRadius - rootRadius);
   const double rLow = std::max(rootRadius - margin, 0.5 * (rootRadius + std::abs(setup.face.rakeOffset)));
   auto projected = projectOntoConjugateProfile(setup, m.R, m.values, rLow, outerRadius + margin, "wheel.measuredProfile");
-  if (!projected) return projected.error();  // names the point in words
+  if (!projected) {  // names the point in words, and the radii searched beside the face's own
+    Error e = projected.error();
+    e.message += " (The face runs from r = " + numberText(rootRadius) + " to " + numberText(outerRadius) +
+                 " mm; a wheel point is sought a quarter of its depth past either end.)";
+    return e;
+  }
   // The feet's radii in the order of the points, and covering the contact range.
   for (size_t i = 1; i < projected->R.size(); ++i)
     if (!(projected->R[i] > projected->R[i - 1]))
