@@ -161,7 +161,7 @@ test('a bad CSV is refused with a message and the old results stay', async () =>
   // Where a face is loaded, the page says its sign is not confirmed on a real machine, as the docs
   // do (docs/conventions.md, Sign: the swept volume puts the normal into the tooth): a first
   // correction of a face signed the other way round would add to the error.
-  assert.match(await page.textContent('#measured-hint'), /plus = excess material \(this sign is not yet confirmed on a real machine: before acting on a first correction, grind a known offset of one axis/);
+  assert.match(await page.textContent('#measured-hint'), /^CSV, µm, plus = excess material: .* The sign is not yet confirmed on a real machine: before acting on a first correction, grind a known offset of one axis/);
   await page.fill('#measured-csv', Array.from({ length: 5 }, () => Array(9).fill('1.0').join(', ')).join('\n'));
   await afterResult(page, () => page.click('#use-measured'));
   assert.equal(await page.isVisible('#measured-error'), false);
