@@ -199,9 +199,7 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
   // minimum that explains neither face; it is kept where it explains them. Where none does, the
   // note speaks of the one of the first two that came nearest (the least rms left): a start that
   // ended above the noise says nothing of the faces while the other left less.
-  Eigen::VectorXd e0(q);
-  for (int k = 0; k < q; ++k)
-    e0(k) = history.nominal[cs[k].axis].coefficient(cs[k].degree) - run[cs[k].axis].coefficient(cs[k].degree);
+  const Eigen::VectorXd e0 = errorCompensated(history.nominal, run, cs);
   FreeSearch j = freeSearch(m, setup, run, runFace, measured, o, history, e0);
   if (!converged(j)) {
     FreeSearch own = freeSearch(m, setup, run, runFace, measured, o, history, m.coefficientError);
@@ -270,6 +268,14 @@ void joinHistory(MachineErrorEstimate& m, const SharpeningSetup& setup, const Ax
 }
 
 }  // namespace
+
+Eigen::VectorXd errorCompensated(const AxisPolynomials& nominal, const AxisPolynomials& run,
+                                 const std::vector<Coefficient>& cs) {
+  Eigen::VectorXd e0(static_cast<int>(cs.size()));
+  for (size_t k = 0; k < cs.size(); ++k)
+    e0(static_cast<int>(k)) = nominal[cs[k].axis].coefficient(cs[k].degree) - run[cs[k].axis].coefficient(cs[k].degree);
+  return e0;
+}
 
 const char* statusName(SolveStatus s) {
   switch (s) {

@@ -76,6 +76,12 @@ struct MachineErrorEstimate {
   std::string historyNote;
 };
 
+// The error the run compensates, E0 = nominal - run, at the coefficients cs (their units): each
+// pass proposes nominal - E, so a later pass's run is nominal - E of the pass before, and E0 is
+// where its search for E starts (the history's here, the wheel's in wheel_error.h).
+Eigen::VectorXd errorCompensated(const AxisPolynomials& nominal, const AxisPolynomials& run,
+                                 const std::vector<Coefficient>& cs);
+
 // On a grid, an identification that ends above the noise with a structural null space left out is
 // sought once more over every free coefficient, started at its E, and kept when it converges
 // (structuralFreed). With a `history` of earlier passes measured on the grid, E is then sought once more over every

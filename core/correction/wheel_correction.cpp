@@ -79,7 +79,9 @@ Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup
                                       "error, which the linear step does not do.");
   auto knots = wheelKnots(setup, runFace.grid, rLow, rHigh);
   if (!knots) return knots.error();
-  auto estimate = identifyMachineAndWheelError(setup, linearisedAt ? *linearisedAt : run, runFace, measured, o, *knots);
+  // A later pass's search starts at the error its run compensates (wheel_error.h).
+  auto estimate = identifyMachineAndWheelError(setup, linearisedAt ? *linearisedAt : run, runFace, measured, o, *knots,
+                                               linearisedAt ? nullptr : &nominal);
   if (!estimate) return estimate.error();
   // The dressing takes the case's own offset O away too, so that the wheel after the pass is the
   // conjugate one, which grinds the nominal face: -(O + W) at the points. W and -W through the same

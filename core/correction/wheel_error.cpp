@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <Eigen/QR>
@@ -92,7 +93,8 @@ SharpeningSetup withWheelDeviation(const SharpeningSetup& setup, const WheelKnot
 
 Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& setup, const AxisPolynomials& run,
                                                          const GroundFace& runFace, const Eigen::MatrixXd& measured,
-                                                         const CorrectionOptions& o, const WheelKnots& knots) {
+                                                         const CorrectionOptions& o, const WheelKnots& knots,
+                                                         const AxisPolynomials* nominal) {
   const FaceGrid& grid = runFace.grid;
   if (measured.rows() != grid.rows() || measured.cols() != grid.cols())
     return refuse("measured", "the topography has " + std::to_string(measured.rows()) + " x " +
@@ -111,11 +113,28 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
   const int K = static_cast<int>(knots.R.size());
   const CubicSpline wheelBasis = wheelDeviationSpline(knots, Eigen::VectorXd::Zero(K));
 
-  // The run face with W = 0 in the model, so that it carries the partials to W: its envelope
-  // points are runFace's (a zero offset grinds today's face), given the sensitivities again.
-  GroundFace start = runFace;
+  // Where the search starts (wheel_error.h): at E0, the error the run compensates, within the
+  // identifiable space (orthonormal in machine steps), where the face run + E0 grinds can be
+  // simulated; otherwise at E = 0: the run face with W = 0 in the model, so that it carries the
+  // partials to W (its envelope points are runFace's: a zero offset grinds today's face), given the
+  // sensitivities again.
   const SharpeningSetup withoutDeviation = withWheelDeviation(setup, knots, Eigen::VectorXd::Zero(K));
-  if (runFace.atProbes()) {
+  Eigen::VectorXd e0 = Eigen::VectorXd::Zero(q);
+  if (nominal) {
+    const Eigen::VectorXd z = errorCompensated(*nominal, run, cs).cwiseQuotient(a.space.step);
+    e0 = a.space.step.cwiseProduct(a.space.basis * (a.space.basis.transpose() * z));
+  }
+  std::optional<GroundFace> fromE0;
+  if (e0.allFinite() && !e0.isZero(0.0)) {
+    auto f = simulateGroundFace(withoutDeviation, plusChange(run, cs, e0), grid);
+    if (f) fromE0 = std::move(f).value();
+  }
+  if (!fromE0) e0.setZero();
+  const AxisPolynomials base = plusChange(run, cs, e0);
+  GroundFace start = fromE0 ? std::move(*fromE0) : runFace;
+  if (fromE0) {
+    // simulated with its sensitivities
+  } else if (runFace.atProbes()) {
     auto f = simulateGroundFace(withoutDeviation, run, grid);
     if (!f) return f.error();
     start = std::move(f).value();
@@ -126,15 +145,17 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
   // Two blocks: the axes first, as machine_error.h takes them, then the wheel off the span of what
   // the axes take, so that W holds only the shape the axes cannot make. A wild direction of either
   // would chase the other's shapes, so neither takes one.
-  const ParameterBlock axes{a.space.step.asDiagonal() * a.space.basis, Wild::LeftOut, Eigen::VectorXd()};
+  // Started at E0, its directions are decided on what the whole error makes (identification.h).
+  const ParameterBlock axes{a.space.step.asDiagonal() * a.space.basis, Wild::LeftOut,
+                            fromE0 ? e0 : Eigen::VectorXd()};
   const ParameterBlock wheel = ParameterBlock::free(K, Wild::LeftOut);
   const auto setupAt = [&](const std::vector<Eigen::VectorXd>& x) { return withWheelDeviation(setup, knots, x[1]); };
   const FaceModel model{
       [&](const std::vector<Eigen::VectorXd>& x) {
-        return simulateGroundFace(setupAt(x), plusChange(run, cs, x[0]), grid, Sensitivities::Skip);
+        return simulateGroundFace(setupAt(x), plusChange(base, cs, x[0]), grid, Sensitivities::Skip);
       },
       [&](GroundFace& f, const std::vector<Eigen::VectorXd>& x) {
-        return static_cast<bool>(addSensitivities(f, setupAt(x), plusChange(run, cs, x[0])));
+        return static_cast<bool>(addSensitivities(f, setupAt(x), plusChange(base, cs, x[0])));
       },
       [&](const GroundFace& f, int block) {
         return block == 0 ? sensitivityMatrix(f, cs).normal : wheelOffsetSensitivity(f, wheelBasis).normal;
@@ -154,7 +175,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
   m.wheelWithinNoise = w.decision.withinNoise;
   m.wheelAmplifying = w.decision.amplifying;
 
-  a.coefficientError = id.value[0];
+  a.coefficientError = e0 + id.value[0];
   m.deviation = id.value[1];
   a.error = run;
   for (Axis x : kAxes) std::fill(a.error[x].a.begin(), a.error[x].a.end(), 0.0);

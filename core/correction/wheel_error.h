@@ -67,8 +67,16 @@ struct WheelErrorEstimate {
   Eigen::MatrixXd axesSpan;
 };
 
+// With `nominal`, the search starts at the error the run compensates (nominal - run, machine_error.h),
+// within the identifiable space, where the face of run plus it can be simulated; otherwise at E = 0.
+// A later pass's run is nominal - E of the pass before, and its face is what that E left: one face
+// does not decide the error along the directions it barely shows (a wheel slope and the axis changes
+// that mimic it), and a search from E = 0 (the whole error again) could end far from that E along
+// them, which on the true machine left 3 to 8 µm where the face measured 0.02 to 0.16 µm
+// (docs/validation.md, "Where a later wheel pass starts").
 Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& setup, const AxisPolynomials& run,
                                                          const GroundFace& runFace, const Eigen::MatrixXd& measured,
-                                                         const CorrectionOptions& options, const WheelKnots& knots);
+                                                         const CorrectionOptions& options, const WheelKnots& knots,
+                                                         const AxisPolynomials* nominal = nullptr);
 
 }  // namespace hobsharp
