@@ -196,6 +196,25 @@ test('the blocks: degree 5 in X=PO(...), degree 3 in PO[X]=(...), HEIDENHAIN K3 
   }
 });
 
+// A HEIDENHAIN spline takes two to five axes (iTNC 530 manual, 12.7): where fewer than two move in
+// a block (a straight gash, nominal: X alone), the first still ones are written with zero K at
+// their positions, up to two. The cubic SINUMERIK
+// header names the coefficients it writes (a2 .. a3), the quintic one a2 .. a5.
+test('a HEIDENHAIN spline block has two axes at least; each SINUMERIK header names its own coefficients', () => {
+  const { caseObject, result } = evaluated['straight, nominal'];
+  const { text } = programFor(result, caseObject, 'heidenhain', { digits });
+  const blocks = text.split('\n').filter((l) => /^\d+ SPL /.test(l));
+  assert.ok(blocks.length > 0);
+  const axesOf = (l) => [...l.replace(/;.*$/, '').matchAll(/ ([XYZAB])[-+][\d.]+(?= |$)/g)].map((m) => m[1]);
+  assert.ok(blocks.some((l) => axesOf(l).length === 2 && / K3Y\+0\.0 K2Y\+0\.0 K1Y\+0\.0/.test(l)), blocks.join('\n'));
+  for (const l of blocks) assert.ok(axesOf(l).length >= 2, `a spline of fewer than two axes: ${l}`);
+  // (It reads back to the axes: "straight, nominal: the heidenhain program reads back ..." above.)
+  const cubic = programFor(evaluated['helical, corrected'].result, evaluated['helical, corrected'].caseObject, 'sinumerik-cubic', { digits }).text;
+  assert.match(cubic, /so a2 \.\. a3 are mm or deg over the block/);
+  const quintic = programFor(evaluated['helical, corrected'].result, evaluated['helical, corrected'].caseObject, 'sinumerik', { digits }).text;
+  assert.match(quintic, /so a2 \.\. a5 are mm or deg over the block/);
+});
+
 // Axes of degree 6 (the calculator goes up to 6): the quintic program splits them into pieces
 // of degree 5 that match value, slope and curvature, within 0.01 µm and 1e-6 deg.
 test('degree-6 axes: quintic pieces within 0.01 µm and 1e-6 deg; cubic ones too; read back within 1 µm and 1e-4 deg', () => {

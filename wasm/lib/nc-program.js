@@ -197,7 +197,7 @@ function headerLines(d, o, n, deviation, unit) {
     lines.push(`${n} SPL block${n > 1 ? 's' : ''}, each ${fixed((o.motion.max - lo) / n, 6)} ${per}; t runs from 1 at a block's start to 0 at its end.`);
   } else {
     lines.push(`${n} POLY block${n > 1 ? 's' : ''} of degree ${d.degree} at most, each ${fixed((o.motion.max - lo) / n, 6)} ${per}; p runs from 0 at a block's start to PL = 1 at its end,`);
-    lines.push('linearly with it, so a2 .. a5 are mm or deg over the block, of the size of the motion itself.');
+    lines.push(`linearly with it, so a2 .. a${d.degree} are mm or deg over the block, of the size of the motion itself.`);
   }
   lines.push(`Largest deviation of this program from the axes: ${fixed(deviation.linear * 1000, 4)} um (X Y Z), ${sinumerikReal(deviation.rotary, 2).replace('EX', 'e')} deg (A B).`);
   const r = h.rounding;
@@ -284,10 +284,17 @@ export function ncProgram(o) {
         const K1 = at[a] - end - k3 - k2;
         const k1 = Math.abs(K1) < NEGLIGIBLE ? 0 : Number(heidenhainK(K1).replace(' ', ''));
         polys[a] = { end, k3, k2, k1 };
-        if (end === at[a] && k3 === 0 && k2 === 0 && k1 === 0) continue;   // the axis stays
-        ends.push(`${a}${signed(position(end))}`);
-        ks.push(`K3${a}${heidenhainK(k3)} K2${a}${heidenhainK(k2)} K1${a}${heidenhainK(k1)}`);
-        at[a] = end;
+      }
+      // An axis that stays where it is is left out, unless fewer than two would be written: the
+      // spline takes two to five axes, and the manual's example writes a still axis with K = 0.
+      const moving = AXES.filter((a) => !(polys[a].end === at[a] && polys[a].k3 === 0 && polys[a].k2 === 0 && polys[a].k1 === 0));
+      const still = AXES.filter((a) => !moving.includes(a));
+      const written = AXES.filter((a) => moving.includes(a) || still.indexOf(a) < 2 - moving.length);
+      for (const a of written) {
+        const q = polys[a];
+        ends.push(`${a}${signed(position(q.end))}`);
+        ks.push(`K3${a}${heidenhainK(q.k3)} K2${a}${heidenhainK(q.k2)} K1${a}${heidenhainK(q.k1)}`);
+        at[a] = q.end;
       }
       if (AXES.some((a) => Math.abs(at[a]) > POSITION_MAX)) throw new Error(`NC program: a position beyond +-${POSITION_MAX}.`);
       body.push(`SPL ${ends.join(' ')} ${ks.join(' ')}`);
