@@ -196,7 +196,12 @@ test('a saved case loads back', async () => {
   // the paper's rounded E_t = 69.446 mm).
   assert.ok(Math.abs(Number(csv[2].split(',')[1]) - 50) < 1e-5, csv[2]);
   const [results] = await Promise.all([page.waitForEvent('download'), page.click('#download-results')]);
-  assert.match(readFileSync(await results.path(), 'utf8'), /^X a1,mm\/rad,139\.508856916/m);
+  const resultsText = readFileSync(await results.path(), 'utf8');
+  assert.match(resultsText, /^X a1,mm\/rad,139\.508856916/m);
+  // The inputs as the form names them, each with the unit beside its field (views/field-names.js).
+  assert.match(resultsText, /^Normal module m_n,7,mm,hob\.normalModule$/m);
+  assert.match(resultsText, /^K_1 \(O_d to O_e along z_e\),120,mm,machine\.K1$/m);
+  assert.match(resultsText, /^[^,\n]+,\d+(\.\d+)?,deg,setup\.tilt$/m);
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-case')]);
   const file = await download.path();
   const c = JSON.parse(readFileSync(file, 'utf8'));

@@ -88,6 +88,20 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
         .map(([id, cls, r]) => `${id} ${cls}: ${Math.round(r.left)}..${Math.round(r.right)} px in ${Math.round(box.left)}..${Math.round(box.right)} (page ${w})`);
     }), width);
     assert.deepEqual(overflows, [], `${format}: drawn past its box`);
+    // The NC program one block a line: a block wider than the paper goes on lines indented under
+    // its first (a SINUMERIK "Y=PO(...)" at the margin would read as a block of its own).
+    const ncLines = await page.$$eval('#report-program .nc-block', (blocks) => blocks.map((b) => {
+      const range = document.createRange();
+      range.selectNodeContents(b);
+      const lefts = [...new Set([...range.getClientRects()].filter((r) => r.width > 0).map((r) => Math.round(r.top)))]
+        .map((top) => Math.min(...[...range.getClientRects()].filter((r) => r.width > 0 && Math.round(r.top) === top).map((r) => r.left)));
+      return { text: b.textContent.slice(0, 24), lefts };
+    }));
+    assert.ok(ncLines.length >= 3, `${format}: ${JSON.stringify(ncLines)}`);
+    assert.ok(ncLines.some((b) => b.lefts.length > 1), `${format}: no block of the program wraps at the paper's width`);
+    for (const b of ncLines) {
+      for (const left of b.lefts.slice(1)) assert.ok(left >= b.lefts[0] + 10, `${format}: "${b.text}…" continues at ${left} px, its block begins at ${b.lefts[0]} px`);
+    }
     // What page 1 and "Program this" must print: the page's own texts.
     const verdict = await page.textContent('#report-verdict');
     const inputs = await page.$$eval('#report-inputs tbody tr:not(.report-group)', (rows) => rows.map((r) => {

@@ -35,6 +35,26 @@ test('the results CSV holds every coefficient with its unit, and each grid row b
   assert.equal(lines.at(-2), `# thickness error at the mean point (µm),${r.topography.thickness}`);
 });
 
+// The inputs as the form shows them (issue 22's "units on every number"): each by its name, with
+// its value, its unit and its case field; without the page's words, the field's path is its name.
+test('the inputs block: each input by its name, with its unit and its case field', () => {
+  const r = hobsharp.evaluate(paper);
+  const caseObject = { ...paper, correction: { probeNoise: 0.5 } };
+  const inputWords = {
+    names: { 'hob.normalModule': 'Normal module m_n', 'setup.tilt': 'Wheel tilt ψ_c', 'correction.probeNoise': 'Probe noise σ' },
+    units: { 'hob.normalModule': 'mm', 'setup.tilt': 'deg', 'correction.probeNoise': 'µm', 'grid.radial': '' },
+  };
+  const lines = resultsCsv(r, { caseObject, inputWords }).split('\n');
+  const at = lines.indexOf('input,value,unit,case field');
+  assert.ok(at > 0, 'the inputs block with a unit column');
+  assert.ok(lines.includes('Normal module m_n,7,mm,hob.normalModule'));
+  assert.ok(lines.includes('Wheel tilt ψ_c,15,deg,setup.tilt'));
+  assert.ok(lines.includes('Probe noise σ,0.5,µm,correction.probeNoise'));
+  assert.ok(lines.includes('grid.radial,5,,grid.radial'));
+  const semicolon = resultsCsv(r, { caseObject, inputWords, style: 'semicolon' }).split('\n');
+  assert.ok(semicolon.includes('Probe noise σ;0,5;µm;correction.probeNoise'));
+});
+
 test('a record of the job: its inputs, the measured grid, the verdict, the figures before and after, the change to type in', () => {
   const measured = Array.from({ length: 5 }, (_, i) => Array(9).fill(1 + i / 4));
   const nominal = hobsharp.evaluate(paper).axes;
@@ -43,8 +63,8 @@ test('a record of the job: its inputs, the measured grid, the verdict, the figur
   const r = hobsharp.evaluate(caseObject);
   const lines = resultsCsv(r, { caseObject, date: new Date('2026-11-23T10:00:00Z') }).split('\n');
   assert.ok(lines.includes('# date,2026-11-23'));
-  assert.ok(lines.includes(`hob.normalModule,${paper.hob.normalModule}`));
-  assert.ok(lines.includes('correction.lockedAxes,A'));
+  assert.ok(lines.includes(`hob.normalModule,${paper.hob.normalModule},,hob.normalModule`));
+  assert.ok(lines.includes('correction.lockedAxes,A,,correction.lockedAxes'));
   assert.ok(lines.includes(`verdict,"${r.correction.verdict.replace(/"/g, '""')}"`) || lines.includes(`verdict,${r.correction.verdict}`));
   assert.ok(lines.includes(`rms,µm,${r.correction.rmsBefore},${r.correction.rmsAfter}`));
   assert.ok(lines.includes(`sum of squares,µm²,${r.correction.sseBefore},${r.correction.sseAfter}`));
@@ -128,7 +148,7 @@ test('the effect on the gear: its figures per flank with their units, or why the
   }
   // The inputs of the relief are in the record's inputs.
   const lines = resultsCsv(r, { caseObject }).split('\n');
-  assert.ok(lines.includes('hob.gashes,12') && lines.includes('hob.relief,4.5'));
+  assert.ok(lines.includes('hob.gashes,12,,hob.gashes') && lines.includes('hob.relief,4.5,,hob.relief'));
 
   const without = hobsharp.evaluate(paper);
   assert.match(without.gearEffect.reason, /no relief/);

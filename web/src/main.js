@@ -2,7 +2,7 @@
 // computes geometry; every number shown comes from the module's evaluate(case), in a worker.
 import { createStore } from './store.js';
 import { createCalculator } from './client.js';
-import { worded } from './views/field-names.js';
+import { inputWords, worded } from './views/field-names.js';
 import { startRecompute } from './recompute.js';
 import { loadPlotly, mountPlots } from './plots/passes.js';
 import { mountForm } from './form.js';
@@ -85,7 +85,7 @@ mountWheelSplit(store, plots);
 mountPassHistory(store, calculator, measuredView);
 mountUndo(store);
 const loader = createLoader({ store, calculator, form, measuredView, paperCase: self.HOBSHARP_PAPER_CASE });
-mountCaseFiles(store, loader, mountLink(store));
+mountCaseFiles(store, loader, mountLink(store), inputWords);
 hooks.watch(startRecompute(store, calculator).busy);
 
 // The module's limits first (the form's bounds, the axes, the case format) and the description of

@@ -9,8 +9,9 @@ import { leftOutText } from './url.js';
 const $ = (selector) => document.querySelector(selector);
 const MAX_CASE_BYTES = 40 * 1024 * 1024;
 
-// links: mountLink's (io/url.js), the link of the last good result.
-export function mountCaseFiles(store, loader, links) {
+// links: mountLink's (io/url.js), the link of the last good result; inputWords: the form's names
+// and units of the case's fields for the results CSV (views/field-names.js, inputWords).
+export function mountCaseFiles(store, loader, links, inputWords) {
   $('#preset-paper').addEventListener('click', () => {
     const losing = userData(store.state);
     if (losing.length && !window.confirm(`Load the paper example? It replaces ${losing.join(', ')}. ` +
@@ -57,6 +58,6 @@ export function mountCaseFiles(store, loader, links) {
     const { result, resultCase } = store.state;
     if (!result) return;
     const style = $('#csv-style').value;
-    download(resultsFileName(resultCase), resultsCsv(result, { caseObject: resultCase, style }), 'text/csv;charset=utf-8');
+    download(resultsFileName(resultCase), resultsCsv(result, { caseObject: resultCase, style, inputWords: inputWords() }), 'text/csv;charset=utf-8');
   });
 }

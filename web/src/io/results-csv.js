@@ -25,7 +25,10 @@ export function resultsFileName(caseObject, date = new Date()) {
   return `hobsharp-${job}-${date.toISOString().slice(0, 10)}.csv`;
 }
 
-export function resultsCsv(r, { caseObject = null, style = 'comma', date = new Date() } = {}) {
+// inputWords: the page's names and units of the case's fields by path ({names: {path: text},
+// units: {path: unit}}, views/field-names.js), so that each input is written as the form shows it,
+// with its unit; a field without a name keeps its path as its name.
+export function resultsCsv(r, { caseObject = null, style = 'comma', date = new Date(), inputWords = { names: {}, units: {} } } = {}) {
   const semicolon = style === 'semicolon';
   const sep = semicolon ? ';' : ',';
   const cell = (v) => {
@@ -36,8 +39,10 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   const row = (...cells) => cells.map(cell).join(sep);
   const lines = ['# HobSharp results (hobsharp-case/1)', row('# date', date.toISOString().slice(0, 10))];
   if (caseObject) {
-    lines.push('', '# inputs', row('input', 'value'));
-    for (const [k, v] of inputRows(caseObject)) lines.push(row(k, Array.isArray(v) ? v.join(' ') : v));
+    lines.push('', '# inputs', row('input', 'value', 'unit', 'case field'));
+    for (const [k, v] of inputRows(caseObject)) {
+      lines.push(row(inputWords.names[k] || k, Array.isArray(v) ? v.join(' ') : v, inputWords.units[k] || '', k));
+    }
   }
   const c = r.correction;
   if (c) {

@@ -45,3 +45,28 @@ export function worded(error) {
   const text = String(error.message || '');
   return { text, html: escapeHtml(text) };
 }
+
+// The unit the page shows beside each case field's input, by the field's path ('' where it has
+// none): the form's fields, the probe noise and the machine resolution of the correction's
+// options, and the measurement uncertainty (whose unit the result's schema gives).
+export function fieldUnits() {
+  const unitOf = (input) => {
+    const unit = input.closest('label') && input.closest('label').querySelector('.unit:not([data-limit])');
+    return unit ? unit.textContent.trim() : '';
+  };
+  const units = {};
+  for (const input of document.querySelectorAll('#inputs [data-field]')) units[input.dataset.field] = unitOf(input);
+  for (const input of document.querySelectorAll('[data-resolution]')) units[`correction.resolution.${input.dataset.resolution}`] = unitOf(input);
+  for (const [path, id] of [['correction.probeNoise', '#probe-noise'], ['inspection.uncertainty', '#inspection-uncertainty']]) {
+    const input = document.querySelector(id);
+    if (input) units[path] = unitOf(input);
+  }
+  return units;
+}
+
+// The names (plain text) and units of the case's fields by path, as the results CSV writes its
+// inputs (io/results-csv.js).
+export function inputWords() {
+  return { names: Object.fromEntries(Object.entries(fieldNames()).map(([path, name]) => [path, name.text])), units: fieldUnits() };
+}
+

@@ -13,7 +13,7 @@ import { unitText } from '../result-fields.js';
 import { machineUnit, programmed, roundedFiguresText } from '../machine-axes.js';
 import { axesToRun, machineCoefficients } from '../../../wasm/lib/axes-to-run.js';
 import { LINK_TOO_LONG, QR_MOST_BYTES, jobRows, linkBytes, reportDateLine, reportInputRows, reportInspectionLine, verdictLine } from '../report-lines.js';
-import { fieldNames } from './field-names.js';
+import { fieldNames, fieldUnits } from './field-names.js';
 import { openForPrint } from './on-demand.js';
 import { rowsOf } from './inspection.js';
 
@@ -26,10 +26,7 @@ function formWords() {
   const labels = {}, units = {}, groups = {};
   for (const [path, name] of Object.entries(names)) labels[path] = name.html;
   for (const fieldset of document.querySelectorAll('#inputs fieldset[data-group]')) groups[fieldset.dataset.group] = names[fieldset.dataset.group].html;
-  for (const input of document.querySelectorAll('#inputs [data-field]')) {
-    const unit = input.closest('label') && input.closest('label').querySelector('.unit:not([data-limit])');
-    units[input.dataset.field] = unit ? unit.textContent.trim() : '';
-  }
+  Object.assign(units, fieldUnits());
   return { labels, units, groups, text: Object.fromEntries(Object.entries(names).map(([p, n]) => [p, n.text])) };
 }
 
@@ -75,7 +72,15 @@ function showReportProgram(program) {
   const text = program && typeof program.text === 'string' ? program.text : '';
   box.hidden = !text;
   $('#report-program-name').textContent = text ? `NC program: ${program.name || ''}` : '';
-  $('#report-program-text').textContent = text;
+  // One block a line: a block wider than the paper wraps onto indented lines (style.css), so that
+  // no continuation reads as a block of its own (a SINUMERIK "Y=PO(...)" alone is a valid block).
+  const pre = $('#report-program-text');
+  pre.replaceChildren(...(text ? text.replace(/\n$/, '').split('\n') : []).map((line) => {
+    const block = document.createElement('span');
+    block.className = 'nc-block';
+    block.textContent = line;
+    return block;
+  }));
 }
 
 // The case link as a QR code, or a sentence when it is too long for one. Returns a promise.
