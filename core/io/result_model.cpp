@@ -181,17 +181,21 @@ const char* checkWhen(Check c) {
 
 // The class verdict of an inspection: its class, the check that limits it, and (measured, not
 // predicted) the class the measurement proves with its uncertainty taken off (ISO 14253-1).
-void verdict(ResultVisitor& v, const Inspection& in, const std::string& prefix, const char* when, bool proven) {
+// `measured`: the face inspected was measured; on a simulated one (the axes run, nothing measured)
+// no conformity is decided and no class proven, though measured gash deviations keep theirs.
+constexpr const char* kNotDecided = "not decided";
+void verdict(ResultVisitor& v, const Inspection& in, const std::string& prefix, const char* when, bool proven,
+             bool measured = true) {
   const std::string klass = prefix + "class", limiting = prefix + "limitingCheck";
   v.text({klass.c_str(), "", "\"AA\" .. \"D\", \"outside D\" (\"outside B\" where the table stops at B), or \"not graded\" (no check has a tolerance for the module): the worst graded check's class, without the measurement's uncertainty", when},
          classText(in));
   v.text({limiting.c_str(), "", "the check that sets the class (\"\" when not graded)", when},
          in.limiting ? checkName(*in.limiting) : "");
   if (!proven) return;
-  v.text({"inspection.provenClass", "", "the class the measurement proves (ISO 14253-1): every graded check within its tolerance less inspection.uncertainty; \"none\" when no class is proven, \"not graded\" when nothing is graded"},
-         in.grade == Grade::NotGraded ? std::string("not graded") : provenText(in.proven));
-  v.text({"inspection.conformity", "", "of every graded check to inspection.class (ISO 14253-1): \"conforms\" (within the tolerance less U), \"does not conform\" (beyond it plus U), \"undecided\" (within U of it), \"not graded\""},
-         conformityName(in.conformity));
+  v.text({"inspection.provenClass", "", "the class the measurement proves (ISO 14253-1): every graded check within its tolerance less inspection.uncertainty; \"none\" when no class is proven, \"not graded\" when nothing is graded, \"not decided\" when the face inspected is simulated (nothing measured proves a class)"},
+         in.grade == Grade::NotGraded ? std::string("not graded") : !measured ? std::string(kNotDecided) : provenText(in.proven));
+  v.text({"inspection.conformity", "", "of every graded check to inspection.class (ISO 14253-1): \"conforms\" (within the tolerance less U), \"does not conform\" (beyond it plus U), \"undecided\" (within U of it), \"not graded\", \"not decided\" when the face inspected is simulated"},
+         in.grade == Grade::NotGraded || measured ? conformityName(in.conformity) : kNotDecided);
   std::string warning;
   for (Check c : in.uncertaintyAboveTenth) warning += (warning.empty() ? "" : ", ") + std::string(checkName(c));
   v.text({"inspection.uncertaintyWarning", "", "the graded checks whose uncertainty U exceeds a tenth of the tolerance they are graded by (\"\" when none): their class rests on a measurement too coarse for it"},
@@ -286,7 +290,8 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
     if (helical || every)
       numbers(v, {"inspection.perGash.gashLead", "µm per 100 mm", "per gash: its gash lead deviation (helical gash only)", kWithGashTopographies}, lead);
   }
-  verdict(v, in, "inspection.", "", true);
+  const bool simulatedFace = !e.gashFaces && inspectedFace(e).source == FaceSource::Simulated;
+  verdict(v, in, "inspection.", "", true, !simulatedFace);
   // The face's checks left ungraded for their face (Inspection::faceNotGraded), then those the
   // table has no tolerance for.
   std::string faceChecks, notGraded;
@@ -305,6 +310,14 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
     notGraded = "Not graded: " + faceChecks + ": " + in.faceNotGraded + "." + (notGraded.empty() ? "" : " " + notGraded);
   v.text({"inspection.notGraded", "", "the checks without a tolerance in the module band and what to enter (\"\" when every check is graded)"},
          notGraded);
+  // DIN 3968's spacing checks need the gashes measured: without them the class rests on the face's.
+  const std::string notMeasured =
+      gashes ? std::string()
+             : std::string("Not measured: ") + checkWords(Check::AdjacentSpacing) + " and " + checkWords(Check::PitchJump) +
+                   " (the case gives no gash deviations or per-gash topographies), so the class rests on the face's "
+                   "checks alone. Enter one deviation per gash at the pitch radius to check the gashes' spacing.";
+  v.text({"inspection.notMeasured", "", "the checks the case measures nothing for, so that the class does not rest on them, and what to enter (\"\" when none): the single pitch and the pitch jump without gash deviations or per-gash topographies"},
+         notMeasured);
   const bool ownTable = e.job.inspection.ownTable.has_value();
   for (Check c : kChecks) {
     const CheckResult* r = in.find(c);
@@ -318,10 +331,12 @@ void visitInspection(const Evaluation& e, ResultVisitor& v, bool every) {
            gradeText(cr.grade, cr.loosest));
     const std::string conformity = base + "conformity", proven = base + "provenGrade", confidence = base + "confidence",
                       source = base + "source", uncertainty = base + "uncertainty";
-    v.text({conformity.c_str(), "", "ISO 14253-1, to the class graded (to the loosest class when outside it): \"conforms\", \"does not conform\", \"undecided\" (within U of the limit) or \"not graded\"", checkWhen(c)},
-           conformityName(cr.conformity));
-    v.text({proven.c_str(), "", "the tightest class whose tolerance less U holds the value: the class the measurement proves (\"none\", \"not graded\")", checkWhen(c)},
-           cr.grade == Grade::NotGraded ? std::string("not graded") : provenText(cr.proven));
+    // A face check on a simulated face decides nothing; measured gash deviations do.
+    const bool decided = !simulatedFace || c == Check::AdjacentSpacing || c == Check::PitchJump;
+    v.text({conformity.c_str(), "", "ISO 14253-1, to the class graded (to the loosest class when outside it): \"conforms\", \"does not conform\", \"undecided\" (within U of the limit), \"not graded\", or \"not decided\" (a face check on a simulated face)", checkWhen(c)},
+           cr.grade == Grade::NotGraded || decided ? conformityName(cr.conformity) : kNotDecided);
+    v.text({proven.c_str(), "", "the tightest class whose tolerance less U holds the value: the class the measurement proves (\"none\", \"not graded\", \"not decided\": a face check on a simulated face)", checkWhen(c)},
+           cr.grade == Grade::NotGraded ? std::string("not graded") : !decided ? std::string(kNotDecided) : provenText(cr.proven));
     v.text({confidence.c_str(), "", "where the tolerance the grade rests on comes from: \"printed\" (in the source named), \"series\" (filled from the series the source prints for other rows; not confirmed) or \"entered\" (the case's own table); \"\" when not graded", checkWhen(c)},
            cr.grade == Grade::NotGraded ? "" : confidenceName(cr.confidence));
     const std::string printed = ownTable ? "the case's own table (inspection.tolerances)" : defaultToleranceSource(c);

@@ -232,7 +232,12 @@ test('the tolerance table and the gash deviations are edited on the page, refuse
   const grade = (check) => page.textContent(`#inspection-table tr[data-check="${check}"] td:nth-child(3)`);
   assert.equal(await grade('cuttingFaceForm'), 'not graded');
 
+  // No gash deviations yet: the spacing checks are said not measured, under the checks and in the verdict.
+  assert.ok(await page.isVisible('#inspection-not-measured'));
+  assert.match(await page.textContent('#inspection-not-measured'), /^Not measured: single pitch \(adjacent spacing\) and pitch jump/);
+  assert.match(await page.textContent('#inspection-verdict'), /the gashes' spacing not measured/);
   await afterResult(page, async () => { await page.fill('#gash-deviations', '0; 3; −2; 1,5'); await page.dispatchEvent('#gash-deviations', 'change'); });
+  assert.ok(await page.isHidden('#inspection-not-measured'));
   assert.match(await page.textContent('#inspection-cumulative'), /: 5\.000 µm;/);
   assert.equal(await page.textContent('#inspection-table tr[data-check="pitchJump"] td:nth-child(2)'), '8.500 µm');
   assert.match(await page.textContent('#inspection-verdict'), /class AA \(limited by the pitch jump\)/);

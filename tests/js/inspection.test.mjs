@@ -221,9 +221,31 @@ test("the docs' worked example: 12 gashes, gash 3 at +10 µm, module 5: single p
   assert.equal(i.checks.adjacentSpacing.conformity, 'conforms');
   assert.equal(i.class, 'AA');
   assert.equal(i.limitingCheck, 'pitchJump');
-  assert.equal(i.conformity, 'undecided');
-  assert.equal(i.provenClass, 'A');
+  // The face is the simulated one (nothing measured): the hob's conformity and proven class rest on
+  // it too, so neither is decided; the measured gash deviations keep their own.
+  assert.equal(i.source, 'simulated');
+  assert.equal(i.conformity, 'not decided');
+  assert.equal(i.provenClass, 'not decided');
+  assert.equal(i.checks.radialAlignment.conformity, 'not decided');
+  assert.equal(i.checks.radialAlignment.provenGrade, 'not decided');
   assert.equal(i.uncertaintyWarning, '', 'U = 2 µm is a tenth of 20 µm, not more');
+  // Measured on the grid (the same face, as measured), the class is decided as the pitch jump says.
+  const measured = hobsharp.evaluate({ ...c, measured: grid(() => 0), correction: { probeNoise: 1e-4 }, inspection: { gashDeviations: d } }).inspection;
+  assert.equal(measured.source, 'measured');
+  assert.equal(measured.conformity, 'undecided');
+  assert.equal(measured.provenClass, 'A');
+});
+
+test('a simulated face (nothing measured) proves no class: conformity and proven class "not decided"', () => {
+  const i = hobsharp.evaluate(paper()).inspection;
+  assert.equal(i.source, 'simulated');
+  assert.notEqual(i.class, 'not graded');
+  assert.equal(i.conformity, 'not decided');
+  assert.equal(i.provenClass, 'not decided');
+  for (const k of ['radialAlignment', 'gashLead']) {
+    assert.equal(i.checks[k].conformity, 'not decided', k);
+    assert.equal(i.checks[k].provenGrade, 'not decided', k);
+  }
 });
 
 test('the uncertainty from the case changes the conformity and the proven class, not the class', () => {

@@ -187,6 +187,20 @@ test('a class and a proven class that rest on a series value carry its * and say
   assert.equal(classLead(hobsharp.evaluate({ ...paper, measured: grid(() => 1), correction: { probeNoise: 1e-4 } }).inspection).seriesNote, '');
 });
 
+// DIN 3968's spacing checks need the gashes measured: without gash deviations the class rests on
+// the face's checks alone, and the result and the verdict say so (an independent review).
+test('without gash deviations the single pitch and pitch jump are said not measured; with them, nothing is', () => {
+  const measured = grid((i) => 3 * i);
+  const without = hobsharp.evaluate({ ...paper, measured }).inspection;
+  assert.match(without.notMeasured, /^Not measured: single pitch \(adjacent spacing\) and pitch jump \(the case gives no gash deviations or per-gash topographies\), so the class rests on the face's checks alone\./);
+  assert.ok(!('adjacentSpacing' in without.checks) && !('pitchJump' in without.checks));
+  assert.match(verdictSentence(without), new RegExp(`: class ${without.class} \\(limited by the [a-z -]+\\), the gashes' spacing not measured \\(see the checks\\)`));
+  const gashDeviations = [0, 1.5, -2, 0.5, 3, 0, -1, 0.25, 0, 2, -0.5, 1];
+  const withGashes = hobsharp.evaluate({ ...paper, measured, inspection: { gashDeviations } }).inspection;
+  assert.equal(withGashes.notMeasured, '');
+  assert.doesNotMatch(verdictSentence(withGashes), /not measured/);
+});
+
 test('outside the table\'s bands: no after column, and not graded said in words with what to enter', () => {
   const tolerances = { moduleBands: [1, 2], checks: { pitchJump: { AA: [5] } } };
   const r = hobsharp.evaluate({ ...paper, inspection: { tolerances } });

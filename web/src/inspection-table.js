@@ -86,7 +86,8 @@ export function verdictSentence(inspection) {
   const klass = (c, limiting) => (c === 'not graded'
     ? faceNot ? 'not graded (the axes\' model of the face does not explain the measured points: see the checks)'
       : 'not graded (the tolerance table has no value for this module on any check computed)'
-    : `class ${c}${limiting ? ` (limited by the ${label(limiting)})` : ''}${faceNot ? ', the face\'s checks not graded (see the checks)' : ''}`);
+    : `class ${c}${limiting ? ` (limited by the ${label(limiting)})` : ''}${faceNot ? ', the face\'s checks not graded (see the checks)' : ''}${
+      inspection.notMeasured ? ', the gashes\' spacing not measured (see the checks)' : ''}`);
   const source = { gashTopographies: 'the worst of the gash topographies', measuredPoints: 'measured points' }[inspection.source] || `${inspection.source} face`;
   let text = `Rake face (DIN 3968, module band ${inspection.moduleBand}, ${source}): ${klass(inspection.class, inspection.limitingCheck)}`;
   if (inspection.after && inspection.after.class) text += `; after the correction, if the identified error is all of the machine's: ${klass(inspection.after.class, inspection.after.limitingCheck)}`;

@@ -95,6 +95,8 @@ function show(result, state) {
   $('#inspection-not-graded').hidden = !i.notGraded;
   $('#inspection-not-graded span').textContent = i.notGraded || '';
   $('#inspection-not-graded').dataset.check = (rows.find((r) => r.grade === 'not graded') || {}).check || '';
+  $('#inspection-not-measured').hidden = !i.notMeasured;
+  $('#inspection-not-measured').textContent = i.notMeasured || '';
   const sources = rows.filter((r) => r.source);
   $('#inspection-sources').hidden = !sources.length;
   $('#inspection-sources ul').innerHTML = sources.map((r) => `<li><b>${escapeHtml(r.label)}</b>: ${escapeHtml(r.source)}</li>`).join('');
