@@ -334,3 +334,30 @@ test("a case table's own marks: a series cell is said so, with the case's table 
   assert.equal(i.checks.gashLead.grade, 'not graded');
   assert.match(i.notGraded, /^Not graded: cutting-face form, gash lead \(/);
 });
+
+// With a measured grid and one topography per gash, "after" is each gash less what the pass removes
+// on the grid (the same axes grind every gash), the worst of them, as "before" is: not the measured
+// grid's residual alone (an independent review: gash 3 at 200 µm read class D before and AA after).
+test('with per-gash topographies, after is every gash less what the pass removes, the worst of them', () => {
+  const measured = grid((r, x) => 0.5 * (r - 19) + 0.04 * x);
+  const c = { ...paper(), measured, correction: { probeNoise: 1e-4 } };
+  const alone = hobsharp.evaluate(c).inspection;
+  // Every gash as measured: the same figures after as the measured grid's alone.
+  const same = hobsharp.evaluate({ ...c, inspection: { gashTopographies: [measured, measured, measured, measured] } }).inspection;
+  assert.equal(same.source, 'gashTopographies');
+  for (const k of ['cuttingFaceForm', 'radialAlignment', 'gashLead']) {
+    assert.ok(Math.abs(same.after[k] - alone.after[k]) < 1e-9, `${k}: ${same.after[k]} against ${alone.after[k]}`);
+  }
+  // Gash 3 stands out 200 µm more at the tip than at the root: its pitch jump makes the class D,
+  // its radial alignment about -105 µm (C). After the pass and the re-indexing the spacing is gone
+  // and gash 3's alignment stays about as it was (the pass removes the measured grid's error, not
+  // gash 3's own): class C, limited by the radial alignment; the measured grid alone would read AA.
+  const tilted = grid((r, x) => 0.5 * (r - 19) + 0.04 * x + 200 * (r - 19) / 21);
+  const worst = hobsharp.evaluate({ ...c, inspection: { gashTopographies: [measured, measured, tilted, measured] } }).inspection;
+  assert.equal(worst.class, 'D');
+  assert.equal(worst.checks.radialAlignment.grade, 'C');
+  assert.equal(worst.after.class, 'C');
+  assert.equal(worst.after.limitingCheck, 'radialAlignment');
+  assert.ok(Math.abs(worst.after.radialAlignment) > 0.9 * Math.abs(worst.radialAlignment), `${worst.after.radialAlignment} against ${worst.radialAlignment}`);
+  assert.ok(Math.abs(alone.after.radialAlignment) < 1, `the measured grid's own after: ${alone.after.radialAlignment}`);
+});
