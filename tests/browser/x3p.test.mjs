@@ -72,11 +72,11 @@ test('export the measured and predicted topography as X3P, import the measured o
   const otherGrid = writeX3p({ r: [10, 20, 30], x: [-5, 0, 5], values: [[0, 0, 0], [1, 1, 1], [2, 2, 2]], kind: 'measured' });
   const garbage = Buffer.alloc(3 * 1024 * 1024, 'garbage ');
   const refusals = [
-    ['wrong-md5.x3p', zipSync({ ...f, 'md5checksum.hex': strToU8(`${'0'.repeat(32)} *main.xml\n`) }), /^wrong-md5\.x3p: md5checksum\.hex: says 0{32}, but main\.xml's MD5 is [0-9a-f]{32}/],
-    ['garbage.x3p', garbage, /^garbage\.x3p: The file is not an X3P container/],
-    ['bomb.x3p', zipSync({ ...f, 'main.xml': bomb, 'md5checksum.hex': strToU8(`${md5(bomb)} *main.xml`) }), /^bomb\.x3p: main\.xml, line 2: a <!DOCTYPE> declaration/],
-    ['no-main.x3p', zipSync({ 'bindata/data.bin': f['bindata/data.bin'] }), /^no-main\.x3p: The X3P container holds no main\.xml/],
-    ['other-grid.x3p', otherGrid, /^other-grid\.x3p: main\.xml, Record3\/MatrixDimension\/SizeY: 3 radial lines, but the grid has 5\./],
+    ['wrong-md5.x3p', zipSync({ ...f, 'md5checksum.hex': strToU8(`${'0'.repeat(32)} *main.xml\n`) }), /^wrong-md5\.x3p is refused: md5checksum\.hex: says 0{32}, but main\.xml's MD5 is [0-9a-f]{32}/],
+    ['garbage.x3p', garbage, /^garbage\.x3p is refused: The file is not an X3P container/],
+    ['bomb.x3p', zipSync({ ...f, 'main.xml': bomb, 'md5checksum.hex': strToU8(`${md5(bomb)} *main.xml`) }), /^bomb\.x3p is refused: main\.xml, line 2: a <!DOCTYPE> declaration/],
+    ['no-main.x3p', zipSync({ 'bindata/data.bin': f['bindata/data.bin'] }), /^no-main\.x3p is refused: The X3P container holds no main\.xml/],
+    ['other-grid.x3p', otherGrid, /^other-grid\.x3p is refused: main\.xml, Record3\/MatrixDimension\/SizeY: 3 radial lines, but the grid has 5\./],
   ];
   const before = {
     box: await page.inputValue('#measured-csv'),
@@ -88,6 +88,8 @@ test('export the measured and predicted topography as X3P, import the measured o
   for (const [name, bytes, message] of refusals) {
     await afterError(page, () => page.setInputFiles('#measured-x3p-file', { name, mimeType: 'application/octet-stream', buffer: Buffer.from(bytes) }));
     assert.match(await page.textContent('#measured-error'), message);
+    // The status says what stays in use, as a refused CSV file's does (not "Measurement not used").
+    assert.match(await page.textContent('#status'), new RegExp(`^${name.replace('.', '\\.')} is refused \\(.+ stays in use\\): `));
     assert.equal(await page.isHidden('#measured-error'), false);
     assert.equal(await page.inputValue('#measured-csv'), before.box, `${name}: the box is as it was`);
     assert.equal(await page.textContent('#tab2'), before.tab2, `${name}: Tab. 2 is as it was`);

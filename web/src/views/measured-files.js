@@ -14,6 +14,7 @@ export function mountMeasuredFiles(store) {
   mountX3p(store, {
     take: (text) => { store.setMeasuredText(text, 'file'); useMeasurement(store, text); },
     refuse,
+    refuseFile: (name, reason) => refuseFile(store, name, reason),
   });
   $('#use-measured').addEventListener('click', () => useMeasurement(store, store.state.measuredText));
   $('#clear-measured').addEventListener('click', () => clearMeasurement(store));

@@ -24,8 +24,9 @@ async function chosenFileBytes(input) {
 }
 
 // take(text): puts text into the box, previews and uses it (the CSV upload's
-// path); refuse(message): the measured grid's refusal.
-export function mountX3p(store, { take, refuse }) {
+// path); refuse(message): the measured grid's refusal; refuseFile(name, reason): a file's refusal,
+// which says what stays in use (measurement.js), as a CSV file's does.
+export function mountX3p(store, { take, refuse, refuseFile }) {
   const kind = $('#x3p-kind');
   const exportButton = $('#export-x3p');
   let offered = [];
@@ -43,7 +44,8 @@ export function mountX3p(store, { take, refuse }) {
       $('#x3p-read').textContent = `Read ${file.name}: ${notes.join(', ')}; its lines are the grid's.`;
       take(x3pGridCsv({ r: t.r, x: t.x, values }));
     } catch (err) {
-      refuse(file ? `${file.name}: ${err.message}` : err.message);
+      if (file) refuseFile(file.name, err.message);
+      else refuse(err.message);
     }
   });
 
