@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { loadHobSharp } from '../../wasm/hobsharp.mjs';
-import { classLead, cumulativeText, inspectionRows, rakeText, uncertaintyWarningText, verdictSentence, withUnit } from '../../web/src/inspection-table.js';
+import { checkValueText, classLead, cumulativeText, inspectionRows, rakeText, uncertaintyWarningText, verdictSentence, withUnit } from '../../web/src/inspection-table.js';
 import { setResultFields } from '../../web/src/result-fields.js';
 import { cellConfidence, cellConfidenceOf, tableInUse, withCell } from '../../web/src/tolerance-edit.js';
 
@@ -211,4 +211,36 @@ test('outside the table\'s bands: no after column, and not graded said in words 
   const lead = classLead(r.inspection);
   assert.equal(lead.graded, false);
   assert.match(r.inspection.notGraded, /^Not graded: cutting-face form, radial alignment, gash lead \(the tolerance table has no value for this module: it is outside the table's module bands\)\. Enter/);
+});
+
+// A value is shown with the digits that keep it from reading as a limit it is not (an independent
+// review: 25.0004 µm graded A against AA 25 µm was shown "25.000 µm").
+test("a check's value near a tolerance or a conformity limit is shown with the digits that tell them apart", () => {
+  assert.equal(checkValueText(25.0004, [25, 40, 80], 2), '25.0004');
+  assert.equal(checkValueText(-25.0004, [25, 40, 80], 2), '-25.0004');
+  assert.equal(checkValueText(23.0004, [25, 40, 80], 2), '23.0004', 'T - U = 23 µm');
+  assert.equal(checkValueText(25.0000004, [25], 2), '25.000000', 'at most 6 decimals, the grading\'s 1e-6 µm');
+  assert.equal(checkValueText(25, [25], 2), '25.000', 'at the tolerance itself');
+  assert.equal(checkValueText(24.467, [25], 2), '24.467');
+  assert.equal(checkValueText(null, [25], 2), null);
+  // Through the module: the review's case, a radial alignment of 25.0004 µm at module 8.19 (AA 25 µm), graded A.
+  const c = JSON.parse(readFileSync(new URL('../data/inspection-near-tolerance.json', import.meta.url), 'utf8'));
+  const row = inspectionRows(hobsharp.evaluate(c).inspection).find((r) => r.check === 'radialAlignment');
+  assert.equal(row.grade, 'A');
+  assert.equal(row.valueText, '25.0004');
+});
+
+
+// "Outside B" by a check whose table stops at B names the checks graded C or worse (an
+// independent review: the gash lead's "outside B" had hidden a radial alignment of class D).
+test('a class outside a table that stops early names the checks graded worse than its last class', () => {
+  const c = JSON.parse(readFileSync(new URL('../data/inspection-outside-b.json', import.meta.url), 'utf8'));
+  const i = hobsharp.evaluate(c).inspection;
+  assert.equal(i.class, 'outside B');
+  assert.equal(i.limitingCheck, 'gashLead');
+  assert.equal(i.checks.radialAlignment.grade, 'D');
+  assert.match(verdictSentence(i), /: class outside B \(limited by the gash lead, whose table stops at B; the radial alignment D\)/);
+  // A class inside the table names nothing more.
+  const measured = Array.from({ length: 5 }, (_, k) => Array(9).fill(3 * k));
+  assert.doesNotMatch(verdictSentence(hobsharp.evaluate({ ...paper, measured }).inspection), /table stops/);
 });

@@ -83,14 +83,24 @@ export function verdictSentence(inspection) {
   // The face's checks left ungraded (inspection.faceNotGraded): measured points the axes' model of
   // the face does not explain; the table's gaps otherwise.
   const faceNot = Boolean(inspection.faceNotGraded);
-  const klass = (c, limiting) => (c === 'not graded'
-    ? faceNot ? 'not graded (the axes\' model of the face does not explain the measured points: see the checks)'
-      : 'not graded (the tolerance table has no value for this module on any check computed)'
-    : `class ${c}${limiting ? ` (limited by the ${label(limiting)})` : ''}${faceNot ? ', the face\'s checks not graded (see the checks)' : ''}${
-      inspection.notMeasured ? ', the gashes\' spacing not measured (see the checks)' : ''}`);
+  // "Outside B" where the limiting check's table stops at B: the other checks graded C or worse
+  // are named, as the hob is no better than they are (an independent review: "outside B" by the
+  // gash lead had hidden a radial alignment of class D).
+  const worse = (checks, limiting, c) => (/^outside [^D]/.test(c) ? Object.entries(checks || {})
+    .filter(([k, x]) => k !== limiting && /^(C|D|outside .+)$/.test(x.grade)).map(([k, x]) => `the ${label(k)} ${x.grade}`) : []);
+  const klass = (c, limiting, checks) => {
+    if (c === 'not graded') {
+      return faceNot ? 'not graded (the axes\' model of the face does not explain the measured points: see the checks)'
+        : 'not graded (the tolerance table has no value for this module on any check computed)';
+    }
+    const others = worse(checks, limiting, c);
+    const limited = limiting ? ` (limited by the ${label(limiting)}${others.length ? `, whose table stops at ${c.slice(8)}; ${others.join(', ')}` : ''})` : '';
+    return `class ${c}${limited}${faceNot ? ', the face\'s checks not graded (see the checks)' : ''}${
+      inspection.notMeasured ? ', the gashes\' spacing not measured (see the checks)' : ''}`;
+  };
   const source = { gashTopographies: 'the worst of the gash topographies', measuredPoints: 'measured points' }[inspection.source] || `${inspection.source} face`;
-  let text = `Rake face (DIN 3968, module band ${inspection.moduleBand}, ${source}): ${klass(inspection.class, inspection.limitingCheck)}`;
-  if (inspection.after && inspection.after.class) text += `; after the correction, if the identified error is all of the machine's: ${klass(inspection.after.class, inspection.after.limitingCheck)}`;
+  let text = `Rake face (DIN 3968, module band ${inspection.moduleBand}, ${source}): ${klass(inspection.class, inspection.limitingCheck, inspection.checks)}`;
+  if (inspection.after && inspection.after.class) text += `; after the correction, if the identified error is all of the machine's: ${klass(inspection.after.class, inspection.after.limitingCheck, inspection.after.checks)}`;
   return `${text}.`;
 }
 
@@ -152,7 +162,19 @@ export function cumulativeText(inspection, unitOf = unitText) {
     after === null ? '' : `; predicted after the correction ${withUnit(fixed(after, 3), unitOf('inspection.after.cumulativeSpacing'))}`}.`;
 }
 
-// One row per check computed: {check, label, unit, value, grade, gradeText, conformity, proven,
+// A check's value as the table shows it: 3 decimals, or as many more (up to 6, the grading's
+// 1e-6 µm) as it takes not to read as a limit it is not: a tolerance, or a tolerance less or plus
+// U (the conformity's limits). 25.0004 µm graded A against AA 25 µm reads "25.0004", not "25.000".
+export function checkValueText(value, tolerances = [], uncertainty = 0) {
+  if (value === null) return null;
+  const u = uncertainty || 0;
+  const limits = tolerances.filter((t) => typeof t === 'number').flatMap((t) => [t, t - u, t + u]);
+  let digits = 3;
+  while (digits < 6 && limits.some((t) => Math.abs(value) !== t && Number(fixed(Math.abs(value), digits)) === t)) digits += 1;
+  return fixed(value, digits);
+}
+
+// One row per check computed: {check, label, unit, value, valueText, grade, gradeText, conformity, proven,
 // provenText, decided, confidence, series, source, uncertainty, tolerances, after: {value, grade} | null}.
 // decided: false for a check of the simulated face, whose conformity and proven grade are no decision.
 // gradeText is the grade with a * when its tolerance is a series value, and provenText the proven
@@ -170,6 +192,7 @@ export function inspectionRows(inspection, { unitOf = unitText, confidenceOf = n
     const star = (klass) => (confidenceOf && confidenceOf(k, klass) === 'series' ? '*' : '');
     return {
       check: k, label: label(k), unit: unitOf(`inspection.${k}`), value: num(c.value), grade: c.grade,
+      valueText: checkValueText(num(c.value), c.tolerances || [], graded ? num(c.uncertainty) : 0),
       gradeText: `${c.grade}${series ? '*' : ''}`,
       conformity: c.conformity, proven: graded ? c.provenGrade : '',
       decided: !(onSimulatedFace(inspection) && !CHECK_WORDS[k].spacing),

@@ -12,7 +12,7 @@ import { cellConfidenceOf } from '../tolerance-edit.js';
 
 const $ = (selector) => document.querySelector(selector);
 // A figure and its unit, each kept on one line; a narrow column breaks between them.
-const value = (v, unit) => (v === null ? '—' : `<span>${fixed(v, 3)}</span> <span>${unit}</span>`);
+const value = (v, unit, text = v === null ? null : fixed(v, 3)) => (v === null ? '—' : `<span>${text}</span> <span>${unit}</span>`);
 const CONFIDENCE_WORDS = { printed: 'printed', series: 'series*', entered: 'entered' };
 
 function leadHtml(lead, inspection) {
@@ -48,7 +48,7 @@ function rowHtml(r, after, notGraded) {
   // A check of the simulated face: no conformity, no proven grade (nothing measured).
   const undecided = `<td title="${escapeHtml(SIMULATED_NOTE)}">—</td>`;
   const cells = [
-    `<td class="num">${value(r.value, escapeHtml(r.unit))}</td>`,
+    `<td class="num">${value(r.value, escapeHtml(r.unit), r.valueText)}</td>`,
     `<td class="word" data-series="${r.series}"${gradeTitle ? ` title="${escapeHtml(gradeTitle)}"` : ''}>${escapeHtml(graded ? r.gradeText : r.grade)}</td>`,
     !graded ? '<td>—</td>' : !r.decided ? undecided
       : `<td class="word" data-conformity="${escapeHtml(r.conformity)}" title="${escapeHtml(uText)}">${escapeHtml(r.conformity)}</td>`,
