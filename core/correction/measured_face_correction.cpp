@@ -105,8 +105,14 @@ std::string verdictOf(const Correction& c, const CorrectionOptions& o, int point
     v << "No change proposed: the correction found would leave a sum of squares of " << squaresText(c.discardedSse)
       << " µm², more than the " << squaresText(c.before.sse) << " µm² measured, so the axes run stay as they are.";
   } else if (c.stop) {
-    v << "Stop: the measured face (" << std::setprecision(2) << c.before.rms << " µm rms) is within the probe noise (sigma "
-      << o.probeNoise << " µm); another pass would only move noise. Keep the axes run.";
+    v << "Stop: the measured face (" << numberText(c.before.rms, 2) << " µm rms) is within the probe noise (sigma "
+      << numberText(o.probeNoise, 3) << " µm); another pass would only move noise. Keep the axes run.";
+    // A sigma far above a measuring machine's (about 1 µm, U95 about 2 µm) is likely a unit slip,
+    // and the stop rests on it alone.
+    constexpr double kProbeSigmaTenfold = 10;  // µm: ten times a probe's sigma
+    if (o.probeNoise > kProbeSigmaTenfold)
+      v << " The probe noise declared, sigma " << numberText(o.probeNoise, 3) << " µm, is more than ten times a measuring machine's "
+        << "(about 1 µm, U95 about 2 µm): if it was entered in another unit, this stop rests on that.";
   } else if (c.uncertain()) {
     // A bound above the face measured, or a sampled error with which part of the face stays
     // unground (correction.h, uncertain()): the pass may leave the face worse than it is, and the

@@ -121,4 +121,9 @@ test('stop: a face measured within the probe noise says so first, with the figur
   assert.match(text, /Measured: RMS [\d.]+ µm; sum of squares [\d.e+-]+ µm²; thickness [+-]?[\d.]+ µm\.$/);
   assert.doesNotMatch(text, /→|predicted|NaN|undefined/);
   assert.equal(predictionText(c, fieldUnit), null);
+  assert.doesNotMatch(text, /another unit/, 'a probe sigma of 0.5 µm is a probe\'s');
+  // A sigma typed in another unit (500 for 0.5 µm): the stop says what it rests on.
+  const slipped = hobsharp.evaluate({ ...paper(), measured: noisy(), correction: { probeNoise: 500 } }).correction;
+  assert.equal(slipped.stop, true);
+  assert.match(verdictText(slipped), /The probe noise declared, sigma 500 µm, is more than ten times a measuring machine's \(about 1 µm, U95 about 2 µm\): if it was entered in another unit, this stop rests on that\./);
 });
