@@ -124,22 +124,19 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
     const Eigen::VectorXd z = errorCompensated(*nominal, run, cs).cwiseQuotient(a.space.step);
     e0 = a.space.step.cwiseProduct(a.space.basis * (a.space.basis.transpose() * z));
   }
-  std::optional<GroundFace> fromE0;
-  if (e0.allFinite() && !e0.isZero(0.0)) {
-    auto f = simulateGroundFace(withoutDeviation, plusChange(run, cs, e0), grid);
-    if (f) fromE0 = std::move(f).value();
-  }
-  if (!fromE0) e0.setZero();
+  std::optional<GroundFace> atE0;  // simulated with its sensitivities
+  if (e0.allFinite() && !e0.isZero(0.0))
+    if (auto f = simulateGroundFace(withoutDeviation, plusChange(run, cs, e0), grid)) atE0 = std::move(f).value();
+  const bool startsAtE0 = atE0.has_value();
+  if (!startsAtE0) e0.setZero();
   const AxisPolynomials base = plusChange(run, cs, e0);
-  GroundFace start = fromE0 ? std::move(*fromE0) : runFace;
-  if (fromE0) {
-    // simulated with its sensitivities
-  } else if (runFace.atProbes()) {
+  GroundFace start = startsAtE0 ? std::move(*atE0) : runFace;
+  if (!startsAtE0 && runFace.atProbes()) {
     auto f = simulateGroundFace(withoutDeviation, run, grid);
     if (!f) return f.error();
     start = std::move(f).value();
-  } else if (auto added = addSensitivities(start, withoutDeviation, run); !added) {
-    return added.error();
+  } else if (!startsAtE0) {
+    if (auto added = addSensitivities(start, withoutDeviation, run); !added) return added.error();
   }
 
   // Two blocks: the axes first, as machine_error.h takes them, then the wheel off the span of what
@@ -147,7 +144,7 @@ Outcome<WheelErrorEstimate> identifyMachineAndWheelError(const SharpeningSetup& 
   // would chase the other's shapes, so neither takes one.
   // Started at E0, its directions are decided on what the whole error makes (identification.h).
   const ParameterBlock axes{a.space.step.asDiagonal() * a.space.basis, Wild::LeftOut,
-                            fromE0 ? e0 : Eigen::VectorXd()};
+                            startsAtE0 ? e0 : Eigen::VectorXd()};
   const ParameterBlock wheel = ParameterBlock::free(K, Wild::LeftOut);
   const auto setupAt = [&](const std::vector<Eigen::VectorXd>& x) { return withWheelDeviation(setup, knots, x[1]); };
   const FaceModel model{
