@@ -410,6 +410,25 @@ TEST(Validation, ALaterWheelPassStartsAtTheErrorItsRunCompensates) {
   EXPECT_LE(second.probeRms, second.predictedRmsHigh);
 }
 
+// A later wheel pass whose search from the earlier error runs out of iterations is sought once more
+// from E = 0, and the one that explains the face better is kept (wheel_error.h). Seed 1005's
+// scenario 293: from the first pass's error the search ran out of iterations, and its proposal left
+// the true machine 172 µm from a face of 0.942 µm, with a bound of 1,650 µm. The search from E = 0
+// explains the face better; its proposal (bound 2.5 µm) is one the true machine does not grind in
+// full, told "Uncertain:", as before the start at the earlier error.
+TEST(Validation, ALaterWheelPassOutOfIterationsFromTheEarlierErrorIsSoughtFromZeroToo) {
+  auto s = makeScenario(1005, 293);
+  ASSERT_TRUE(s.ok());
+  ASSERT_EQ(s->spec.kind, ScenarioClass::Wheel);
+  const ScenarioOutcome o = runScenario(*s);
+  ASSERT_EQ(o.passes.size(), 2u);
+  const PassOutcome& second = o.passes[1];
+  EXPECT_LT(second.measuredRms, 1.0);
+  EXPECT_LT(second.predictedRmsHigh, 10.0);
+  EXPECT_FALSE(second.ground() && second.probeRms > 10.0) << second.probeRms;
+  EXPECT_EQ(second.verdict.rfind("Uncertain:", 0), 0u) << second.verdict;
+}
+
 // Scenario 97 (30 µm rms): trial faces the wheel cannot grind along the way (rejected steps, not
 // an error); the best iterate comes back with its status, and the pass improves the face.
 TEST(Validation, TrialFacesThatCannotBeGroundAreRejectedStepsNotErrors) {
