@@ -192,10 +192,23 @@ void verdict(ResultVisitor& v, const Inspection& in, const std::string& prefix, 
   v.text({limiting.c_str(), "", "the check that sets the class (\"\" when not graded)", when},
          in.limiting ? checkName(*in.limiting) : "");
   if (!proven) return;
-  v.text({"inspection.provenClass", "", "the class the measurement proves (ISO 14253-1): every graded check within its tolerance less inspection.uncertainty; \"none\" when no class is proven, \"not graded\" when nothing is graded, \"not decided\" when the face inspected is simulated (nothing measured proves a class)"},
-         in.grade == Grade::NotGraded ? std::string("not graded") : !measured ? std::string(kNotDecided) : provenText(in.proven));
-  v.text({"inspection.conformity", "", "of every graded check to inspection.class (ISO 14253-1): \"conforms\" (within the tolerance less U), \"does not conform\" (beyond it plus U), \"undecided\" (within U of it), \"not graded\", \"not decided\" when the face inspected is simulated"},
-         in.grade == Grade::NotGraded || measured ? conformityName(in.conformity) : kNotDecided);
+  // On a simulated face only the measured checks (the gashes' spacing) decide, and only against:
+  // one beyond the table's loosest class plus U proves that the hob does not conform.
+  bool measuredFails = false, measuredProvesNone = false;
+  for (const CheckResult& c : in.checks) {
+    if (c.check != Check::AdjacentSpacing && c.check != Check::PitchJump) continue;
+    measuredFails = measuredFails || c.conformity == Conformity::DoesNotConform;
+    measuredProvesNone = measuredProvesNone || (c.grade != Grade::NotGraded && c.proven == Grade::OutsideD);
+  }
+  v.text({"inspection.provenClass", "", "the class the measurement proves (ISO 14253-1): every graded check within its tolerance less inspection.uncertainty; \"none\" when no class is proven, \"not graded\" when nothing is graded, \"not decided\" when the face inspected is simulated (nothing measured proves a class; \"none\" still where a measured gash spacing proves none)"},
+         in.grade == Grade::NotGraded ? std::string("not graded")
+         : measured                   ? provenText(in.proven)
+         : measuredProvesNone         ? provenText(Grade::OutsideD)
+                                      : std::string(kNotDecided));
+  v.text({"inspection.conformity", "", "of every graded check to inspection.class (ISO 14253-1): \"conforms\" (within the tolerance less U), \"does not conform\" (beyond it plus U), \"undecided\" (within U of it), \"not graded\", \"not decided\" when the face inspected is simulated (\"does not conform\" still where a measured gash spacing does not)"},
+         in.grade == Grade::NotGraded || measured ? conformityName(in.conformity)
+         : measuredFails                          ? conformityName(Conformity::DoesNotConform)
+                                                  : kNotDecided);
   std::string warning;
   for (Check c : in.uncertaintyAboveTenth) warning += (warning.empty() ? "" : ", ") + std::string(checkName(c));
   v.text({"inspection.uncertaintyWarning", "", "the graded checks whose uncertainty U exceeds a tenth of the tolerance they are graded by (\"\" when none): their class rests on a measurement too coarse for it"},

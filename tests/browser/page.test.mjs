@@ -202,6 +202,7 @@ test('a saved case loads back', async () => {
   assert.match(resultsText, /^Normal module m_n,7,mm,hob\.normalModule$/m);
   assert.match(resultsText, /^K_1 \(O_d to O_e along z_e\),120,mm,machine\.K1$/m);
   assert.match(resultsText, /^[^,\n]+,\d+(\.\d+)?,deg,setup\.tilt$/m);
+  assert.match(resultsText, /^Radial lines,\d+,,grid\.radial$/m, 'a count has no unit (its label\'s "root to tip" is none)');
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-case')]);
   const file = await download.path();
   const c = JSON.parse(readFileSync(file, 'utf8'));

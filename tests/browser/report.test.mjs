@@ -162,7 +162,7 @@ test('the report prints on A4 and Letter: nothing cut, nothing blank', async () 
     // The verdict in one line: the class with its conformity, the verdict's word, the face's rms
     // measured and predicted, with the condition the bound holds on when the verdict states one.
     assert.ok(firstFlat.includes(verdict), `${format}: the verdict "${verdict}" on page 1`);
-    assert.match(verdict, /^Class (AA|A|B|C|D)\*? — (conforms|undecided|does not conform)( \(\* on a series value, not confirmed\))?; (Correctable|Uncertain|Partly uncorrectable)[^:]*: face [\d.]+ µm rms measured, at most [\d.e-]+ µm rms after the correction( if the error the face cannot show is no larger than the one it shows)?(; that is with the exact axes, and the machine's position resolution sets a floor of about [\d.]+ µm rms)?\.$/);
+    assert.match(verdict, /^Class (AA|A|B|C|D)\*? — (conforms|undecided|does not conform)(, the gashes' spacing not measured)?( \(\* on a series value, not confirmed\))?; (Correctable|Uncertain|Partly uncorrectable)[^:]*: face [\d.]+ µm rms measured, at most [\d.e-]+ µm rms after the correction( if the error the face cannot show is no larger than the one it shows)?(; that is with the exact axes, and the machine's position resolution sets a floor of about [\d.]+ µm rms)?\.$/);
     // The rake face's class with its conformity and the proven class.
     assert.match(firstFlat, /Rake face \(DIN 3968\): Class (AA|A|B|C|D) — (conforms|undecided|does not conform) \(ISO 14253-1, U95 = 2 µm\); proven class (AA|A|B|C|D|none)\./);
     // The job, by the form's labels.
@@ -251,10 +251,10 @@ test("page 1 carries the verdict's word, its condition and warning, and the clas
   const pdf = path.join(out, 'report-uncertain.pdf');
   writeFileSync(pdf, await page.pdf({ format: 'A4', printBackground: true }));
   const first = execFileSync('pdftotext', ['-f', '1', '-l', '1', pdf, '-'], { encoding: 'utf8' }).replace(/\s+/g, ' ');
-  assert.ok(first.includes('Class B* — conforms (* on a series value, not confirmed); Uncertain: face 149 µm rms measured, at most 106 µm rms after the correction '
+  assert.ok(first.includes('Class B* — conforms, the gashes\' spacing not measured (* on a series value, not confirmed); Uncertain: face 149 µm rms measured, at most 106 µm rms after the correction '
     + 'if the error the face cannot show is no larger than the one it shows; part of the face may stay unground.'), first);
   assert.ok(first.includes("Rake face (DIN 3968): Class B* — conforms (ISO 14253-1, U95 = 2 µm); proven class B* (* the class and the proven class rest on "
-    + "a series value, not confirmed: enter the hob maker's table)."), first);
+    + "a series value, not confirmed: enter the hob maker's table). The gashes' spacing is not measured: the class rests on the face's checks alone."), first);
   execFileSync('pdftoppm', ['-r', '80', '-f', '1', '-l', '1', '-png', pdf, path.join(out, 'uncertain-page')]);
   assert.deepEqual(page.problems, []);
   await page.context().close();

@@ -89,7 +89,8 @@ test('export the measured and predicted topography as X3P, import the measured o
     await afterError(page, () => page.setInputFiles('#measured-x3p-file', { name, mimeType: 'application/octet-stream', buffer: Buffer.from(bytes) }));
     assert.match(await page.textContent('#measured-error'), message);
     // The status says what stays in use, as a refused CSV file's does (not "Measurement not used").
-    assert.match(await page.textContent('#status'), new RegExp(`^${name.replace('.', '\\.')} is refused \\(.+ stays in use\\): `));
+    // The X3P file imported before is named as what stays in use, not "the grid in the box".
+    assert.match(await page.textContent('#status'), new RegExp(`^${name.replace('.', '\\.')} is refused \\(face\\.x3p stays in use\\): `));
     assert.equal(await page.isHidden('#measured-error'), false);
     assert.equal(await page.inputValue('#measured-csv'), before.box, `${name}: the box is as it was`);
     assert.equal(await page.textContent('#tab2'), before.tab2, `${name}: Tab. 2 is as it was`);

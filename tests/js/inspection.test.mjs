@@ -9,6 +9,7 @@ import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { loadHobSharp, HobSharpError } from '../../wasm/hobsharp.mjs';
 import { native, paper, root } from './native-build.mjs';
+import { classLead } from '../../web/src/inspection-table.js';
 
 const hobsharp = await loadHobSharp();
 
@@ -234,6 +235,24 @@ test("the docs' worked example: 12 gashes, gash 3 at +10 µm, module 5: single p
   assert.equal(measured.source, 'measured');
   assert.equal(measured.conformity, 'undecided');
   assert.equal(measured.provenClass, 'A');
+});
+
+// A measured gash spacing beyond the table plus U decides on a simulated face too: the hob does not
+// conform, whatever the face (an independent review: it read "not decided").
+test('on a simulated face a measured gash spacing beyond the table plus U still decides: does not conform, proven none', () => {
+  const c = paper();
+  c.hob.normalModule = 5;
+  const d = Array(12).fill(0);
+  d[2] = 500;
+  const i = hobsharp.evaluate({ ...c, inspection: { gashDeviations: d } }).inspection;
+  assert.equal(i.source, 'simulated');
+  assert.equal(i.class, 'outside D');
+  assert.equal(i.checks.pitchJump.conformity, 'does not conform');
+  assert.equal(i.conformity, 'does not conform');
+  assert.equal(i.provenClass, 'none');
+  const lead = classLead(i);
+  assert.equal(lead.conformity, 'does not conform');
+  assert.match(lead.text, /^Class outside D — does not conform \(ISO 14253-1: the gashes' spacing measured is beyond the tolerance plus U95; the face is not measured\); proven class: none$/);
 });
 
 test('a simulated face (nothing measured) proves no class: conformity and proven class "not decided"', () => {

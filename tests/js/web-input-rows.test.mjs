@@ -85,19 +85,21 @@ test("the report's verdict line: the class with its conformity, the face's rms b
   const c = r.correction;
   assert.equal(c.stop, false);
   const f = (v) => fmt(v, 3);
+  // No gash deviations: the class says that the gashes' spacing is not measured (inspection.notMeasured).
+  assert.notEqual(r.inspection.notMeasured, '');
   // What the pass leaves by its bound alone, not the model's figure below it, led by the verdict's
   // word and with the condition the bound holds on, as the verdict states them.
   assert.match(c.verdict, /^Correctable: .* if the error the face cannot show is no larger than the one it shows\./);
-  assert.equal(verdictLine(r, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; Correctable: face ${f(c.rmsBefore)} µm rms measured, at most ${
+  assert.equal(verdictLine(r, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}, the gashes' spacing not measured; Correctable: face ${f(c.rmsBefore)} µm rms measured, at most ${
     f(c.predictedRmsHigh)} µm rms after the correction if the error the face cannot show is no larger than the one it shows.`);
-  assert.equal(verdictLine({ ...r, correction: { ...c, runKept: true } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured: no change proposed, keep the axes run.`);
+  assert.equal(verdictLine({ ...r, correction: { ...c, runKept: true } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}, the gashes' spacing not measured; face ${f(c.rmsBefore)} µm rms measured: no change proposed, keep the axes run.`);
   // Nothing changed (no axis direction above the noise: every change 0): the same, not "at most … after".
   const unchanged = { ...c, change: c.change.map(() => 0) };
-  assert.equal(verdictLine({ ...r, correction: unchanged }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; face ${f(c.rmsBefore)} µm rms measured: no change proposed, keep the axes run.`);
+  assert.equal(verdictLine({ ...r, correction: unchanged }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}, the gashes' spacing not measured; face ${f(c.rmsBefore)} µm rms measured: no change proposed, keep the axes run.`);
   // Faces that moved against the change of the axes (correction.signReversed): no figure after.
-  assert.equal(verdictLine({ ...r, correction: { ...c, signReversed: true } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; Check the sign: face ${f(c.rmsBefore)} µm rms measured, moved against the change of the axes since the last pass; no figure after the correction until the measuring machine's sign is checked.`);
+  assert.equal(verdictLine({ ...r, correction: { ...c, signReversed: true } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}, the gashes' spacing not measured; Check the sign: face ${f(c.rmsBefore)} µm rms measured, moved against the change of the axes since the last pass; no figure after the correction until the measuring machine's sign is checked.`);
   assert.equal(c.signReversed, false, 'a first pass has no history to check against');
-  assert.equal(verdictLine({ ...r, correction: { ...c, predictedRmsHigh: NaN } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}; Correctable: face ${f(c.rmsBefore)} µm rms measured.`);
+  assert.equal(verdictLine({ ...r, correction: { ...c, predictedRmsHigh: NaN } }, unitOf), `Class ${r.inspection.class} — ${r.inspection.conformity}, the gashes' spacing not measured; Correctable: face ${f(c.rmsBefore)} µm rms measured.`);
   // Within the probe noise: stop, the axes run stay.
   const quiet = hobsharp.evaluate({ ...paper, measured: measured.map((row) => row.map(() => 0.01)), correction: { probeNoise: 0.5 } });
   assert.equal(quiet.correction.stop, true);
@@ -165,9 +167,9 @@ test("the report's page 1 carries the class's * where it rests on a series value
   const unitOf = (p) => fieldUnit(p) || '';
   const sample = JSON.parse(readFileSync(new URL('../data/unground-sample-pass.json', import.meta.url), 'utf8'));
   const r = hobsharp.evaluate(sample);
-  assert.match(verdictLine(r, unitOf), /^Class B\* — conforms \(\* on a series value, not confirmed\); /);
+  assert.match(verdictLine(r, unitOf), /^Class B\* — conforms, the gashes' spacing not measured \(\* on a series value, not confirmed\); /);
   assert.equal(reportInspectionLine(r.inspection), "Rake face (DIN 3968): Class B* — conforms (ISO 14253-1, U95 = 2 µm); proven class B* "
-    + "(* the class and the proven class rest on a series value, not confirmed: enter the hob maker's table).");
+    + "(* the class and the proven class rest on a series value, not confirmed: enter the hob maker's table). The gashes' spacing is not measured: the class rests on the face's checks alone.");
 });
 
 test("the report's verdict line carries the verdict's word, the condition its bound holds on, and part of the face left unground", () => {
@@ -176,7 +178,7 @@ test("the report's verdict line carries the verdict's word, the condition its bo
   // Uncertain: some errors the face cannot show keep the wheel from part of it.
   const sample = hobsharp.evaluate(read('unground-sample-pass.json'));
   assert.match(sample.correction.verdict, /^Uncertain: .* if the error the face cannot show is no larger than the one it shows, .*\(part of it would stay unground\)/);
-  assert.equal(verdictLine(sample, unitOf), 'Class B* — conforms (* on a series value, not confirmed); Uncertain: face 149 µm rms measured, at most 106 µm rms after the correction '
+  assert.equal(verdictLine(sample, unitOf), 'Class B* — conforms, the gashes\' spacing not measured (* on a series value, not confirmed); Uncertain: face 149 µm rms measured, at most 106 µm rms after the correction '
     + 'if the error the face cannot show is no larger than the one it shows; part of the face may stay unground.');
   // A fold near a point, and the top of the face past the wheel's edge: unground said too.
   const edge = hobsharp.evaluate(read('wheel-edge-pass.json'));

@@ -223,6 +223,11 @@ test("a check's value near a tolerance or a conformity limit is shown with the d
   assert.equal(checkValueText(25, [25], 2), '25.000', 'at the tolerance itself');
   assert.equal(checkValueText(24.467, [25], 2), '24.467');
   assert.equal(checkValueText(null, [25], 2), null);
+  // Limits binary cannot hold (10 - 1.12 is 8.879999999999999): compared as written.
+  assert.equal(checkValueText(8.8804, [10], 1.12), '8.8804');
+  assert.equal(checkValueText(8.8796, [10], 1.12), '8.8796');
+  assert.equal(checkValueText(0.2004, [0.3], 0.1), '0.2004');
+  assert.equal(checkValueText(8.88, [10], 1.12), '8.880', 'at the limit itself');
   // Through the module: the review's case, a radial alignment of 25.0004 µm at module 8.19 (AA 25 µm), graded A.
   const c = JSON.parse(readFileSync(new URL('../data/inspection-near-tolerance.json', import.meta.url), 'utf8'));
   const row = inspectionRows(hobsharp.evaluate(c).inspection).find((r) => r.check === 'radialAlignment');

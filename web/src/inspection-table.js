@@ -62,6 +62,12 @@ export function classLead(inspection, unitOf = unitText, rows = inspectionRows(i
   const seriesNote = rests.length ? `* the ${rests.join(' and the ')} ${rests.length > 1 ? 'rest' : 'rests'} on a ${SERIES_NOTE}` : '';
   const noted = (text) => (seriesNote ? `${text} (${seriesNote})` : text);
   const star = (on) => (on ? '*' : '');
+  if (simulated && conformity === 'does not conform') {
+    // The face is not measured, but a measured gash spacing beyond the table plus U95 decides.
+    const classText = `Class ${klass}${star(classStar)} — does not conform (ISO 14253-1: the gashes' spacing measured is beyond the tolerance plus U95; the face is not measured)`;
+    return { graded: true, simulated: true, same: true, klass, conformity, proven, classStar, provenStar: false, seriesNote,
+      text: noted(`${classText}; proven class: none`), classText, provenText: 'proven class: none' };
+  }
   if (simulated) {
     // Gash deviations given are measured, the face is not: the class rests on both.
     const spacing = Object.keys(inspection.checks || {}).some((k) => (CHECK_WORDS[k] || {}).spacing);
@@ -169,8 +175,11 @@ export function checkValueText(value, tolerances = [], uncertainty = 0) {
   if (value === null) return null;
   const u = uncertainty || 0;
   const limits = tolerances.filter((t) => typeof t === 'number').flatMap((t) => [t, t - u, t + u]);
+  // As written: a limit such as 10 - 1.12 is 8.879999999999999 in binary, and 8.8804 must not read
+  // as it. A value within 1e-9 of a limit is at it.
+  const a = Math.abs(value);
   let digits = 3;
-  while (digits < 6 && limits.some((t) => Math.abs(value) !== t && Number(fixed(Math.abs(value), digits)) === t)) digits += 1;
+  while (digits < 6 && limits.some((t) => Math.abs(a - t) > 1e-9 && fixed(a, digits) === fixed(t, digits))) digits += 1;
   return fixed(value, digits);
 }
 
@@ -203,7 +212,8 @@ export function inspectionRows(inspection, { unitOf = unitText, confidenceOf = n
       tolerances: (c.classes || []).map((name, i) => `${name} ${fmt(c.tolerances[i], 4)}${star(name)}`).join(' · ') || 'none in the table',
       // After the correction: not where the face's checks rest on a model that does not explain the points.
       after: (k in a || afterChecks[k]) && !(inspection.faceNotGraded && !CHECK_WORDS[k].spacing)
-        ? { value: num(a[k]), grade: afterChecks[k] ? afterChecks[k].grade : '' } : null,
+        ? { value: num(a[k]), grade: afterChecks[k] ? afterChecks[k].grade : '',
+          valueText: checkValueText(num(a[k]), c.tolerances || []) } : null,
     };
   });
 }

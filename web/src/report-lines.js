@@ -30,7 +30,10 @@ export function reportDateLine(caseObject, date = new Date()) {
 export function reportInspectionLine(inspection, rows) {
   const lead = classLead(inspection, undefined, rows);
   if (!lead) return '';
-  return `Rake face (DIN 3968): ${lead.graded ? `${lead.text}.` : inspection.notGraded || 'Not graded.'}`;
+  // On a measured face without the gashes' spacing, what the class rests on (on the simulated
+  // face, nothing measured, the class decides nothing anyway).
+  const spacing = lead.graded && !lead.simulated && inspection.notMeasured ? ' The gashes\' spacing is not measured: the class rests on the face\'s checks alone.' : '';
+  return `Rake face (DIN 3968): ${lead.graded ? `${lead.text}.` : inspection.notGraded || 'Not graded.'}${spacing}`;
 }
 
 // The correction verdict's lead, before its first colon: "Correctable", "Uncertain", "Partly
@@ -53,8 +56,11 @@ export function verdictLine(result, unitOf, rows) {
   // A class on a series value carries its * and says so, as the inspection's table does.
   const klass = lead ? `Class ${lead.klass}${lead.classStar ? '*' : ''}` : '';
   const series = lead && lead.classStar ? ' (* on a series value, not confirmed)' : '';
+  // What the class rests on: the gashes' spacing not measured (inspection.notMeasured) is said with it.
+  const spacing = lead && lead.graded && result.inspection.notMeasured ? ', the gashes\' spacing not measured' : '';
   const head = !lead ? 'Rake face not inspected' : !lead.graded ? 'Rake face not graded'
-    : lead.simulated ? `${klass} on the simulated face, no conformity decided${series}` : `${klass} — ${lead.conformity}${series}`;
+    : lead.simulated && lead.conformity === 'does not conform' ? `${klass} — does not conform (a measured gash spacing; the face is not measured)${series}`
+      : lead.simulated ? `${klass} on the simulated face, no conformity decided${series}` : `${klass} — ${lead.conformity}${spacing}${series}`;
   const c = result && result.correction;
   const before = num(c && c.rmsBefore);
   if (c && before !== null) {

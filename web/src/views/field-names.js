@@ -47,11 +47,12 @@ export function worded(error) {
 }
 
 // The unit the page shows beside each case field's input, by the field's path ('' where it has
-// none): the form's fields, the probe noise and the machine resolution of the correction's
-// options, and the measurement uncertainty (whose unit the result's schema gives).
+// none, or words in the unit's place, data-words, such as the grid lines' "root to tip"): the
+// form's fields, the probe noise and the machine resolution of the correction's options, and the
+// measurement uncertainty (whose unit the result's schema gives).
 export function fieldUnits() {
   const unitOf = (input) => {
-    const unit = input.closest('label') && input.closest('label').querySelector('.unit:not([data-limit])');
+    const unit = input.closest('label') && input.closest('label').querySelector('.unit:not([data-limit]):not([data-words])');
     return unit ? unit.textContent.trim() : '';
   };
   const units = {};

@@ -58,7 +58,7 @@ function rowHtml(r, after, notGraded) {
       escapeHtml(CONFIDENCE_WORDS[r.confidence] || r.confidence)}</td>` : '<td>—</td>',
     `<td class="tolerances">${r.tolerances.split(' · ').map((t) => `<span>${escapeHtml(t)}</span>`).join(' · ')}</td>`,
   ];
-  if (after) cells.push(`<td class="num">${r.after ? value(r.after.value, escapeHtml(r.unit)) : '—'}</td><td class="word">${r.after ? escapeHtml(r.after.grade) : '—'}</td>`);
+  if (after) cells.push(`<td class="num">${r.after ? value(r.after.value, escapeHtml(r.unit), r.after.valueText) : '—'}</td><td class="word">${r.after ? escapeHtml(r.after.grade) : '—'}</td>`);
   return `<tr data-check="${r.check}"><th>${escapeHtml(r.label)}</th>${cells.join('')}</tr>`;
 }
 

@@ -12,7 +12,7 @@ const $ = (selector) => document.querySelector(selector);
 export function mountMeasuredFiles(store) {
   const refuse = (message) => store.refuse({ field: 'measured', message });
   mountX3p(store, {
-    take: (text) => { store.setMeasuredText(text, 'file'); useMeasurement(store, text); },
+    take: (text, name) => useFile(store, text, name),
     refuse,
     refuseFile: (name, reason) => refuseFile(store, name, reason),
   });

@@ -23,8 +23,8 @@ async function chosenFileBytes(input) {
   return { name: file.name, bytes: new Uint8Array(await file.arrayBuffer()) };
 }
 
-// take(text): puts text into the box, previews and uses it (the CSV upload's
-// path); refuse(message): the measured grid's refusal; refuseFile(name, reason): a file's refusal,
+// take(text, name): puts text into the box, previews and uses it as the file `name` (the CSV
+// upload's path); refuse(message): the measured grid's refusal; refuseFile(name, reason): a file's refusal,
 // which says what stays in use (measurement.js), as a CSV file's does.
 export function mountX3p(store, { take, refuse, refuseFile }) {
   const kind = $('#x3p-kind');
@@ -42,7 +42,7 @@ export function mountX3p(store, { take, refuse, refuseFile }) {
       store.setStatus(`Reading ${file.name}…`, 'busy');
       const { notes, values } = await readX3pOffPage(file.bytes, t);  // off the page's thread
       $('#x3p-read').textContent = `Read ${file.name}: ${notes.join(', ')}; its lines are the grid's.`;
-      take(x3pGridCsv({ r: t.r, x: t.x, values }));
+      take(x3pGridCsv({ r: t.r, x: t.x, values }), file.name);
     } catch (err) {
       if (file) refuseFile(file.name, err.message);
       else refuse(err.message);
