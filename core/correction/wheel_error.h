@@ -70,7 +70,7 @@ struct WheelErrorEstimate {
 // With `nominal`, the search starts at the error the run compensates (nominal - run, machine_error.h),
 // within the identifiable space, where the face of run plus it can be simulated; otherwise at E = 0,
 // and once more at E = 0 where the search from there runs out of iterations or stalls (the one that
-// leaves less is kept).
+// explains the face better is kept).
 // A later pass's run is nominal - E of the pass before, and its face is what that E left: one face
 // does not decide the error along the directions it barely shows (a wheel slope and the axis changes
 // that mimic it), and a search from E = 0 (the whole error again) could end far from that E along

@@ -184,7 +184,8 @@ export function checkValueText(value, tolerances = [], uncertainty = 0) {
 }
 
 // One row per check computed: {check, label, unit, value, valueText, grade, gradeText, conformity, proven,
-// provenText, decided, confidence, series, source, uncertainty, tolerances, after: {value, grade} | null}.
+// provenText, decided, confidence, series, source, uncertainty, tolerances, after: {value, grade,
+// valueText} | null}; valueText: the value as the table shows it (checkValueText).
 // decided: false for a check of the simulated face, whose conformity and proven grade are no decision.
 // gradeText is the grade with a * when its tolerance is a series value, and provenText the proven
 // class with a * when the tolerance it rests on is one (known from the table's cells, or the

@@ -70,4 +70,3 @@ export function fieldUnits() {
 export function inputWords() {
   return { names: Object.fromEntries(Object.entries(fieldNames()).map(([path, name]) => [path, name.text])), units: fieldUnits() };
 }
-
