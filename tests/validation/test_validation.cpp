@@ -348,9 +348,9 @@ TEST(Validation, AProposalNearAFoldIsUncertainAndNamesThePoint) {
 }
 
 // A wheel-class scenario of the committed seed, run (no outcome if it is not one).
-ScenarioOutcome runWheelScenario(int index) {
-  auto s = makeScenario(kSeed, index);
-  EXPECT_TRUE(s.ok() && s->spec.wheel) << index;
+ScenarioOutcome runWheelScenario(int index, std::uint64_t seed = kSeed) {
+  auto s = makeScenario(seed, index);
+  EXPECT_TRUE(s.ok() && s->spec.wheel) << "seed " << seed << ", scenario " << index;
   return s.ok() && s->spec.wheel ? runScenario(*s) : ScenarioOutcome{};
 }
 
@@ -397,10 +397,7 @@ TEST(Validation, TheBoundSamplesTheWheelShapeTheAxesMimic) {
 // 7.6 µm where the bound said 0.845 µm. Started at the first pass's error, it changes the axes and
 // the wheel by fractions of a micrometre, leaves less than it found, and within its bound.
 TEST(Validation, ALaterWheelPassStartsAtTheErrorItsRunCompensates) {
-  auto s = makeScenario(9401, 575);
-  ASSERT_TRUE(s.ok());
-  ASSERT_EQ(s->spec.kind, ScenarioClass::Wheel);
-  const ScenarioOutcome o = runScenario(*s);
+  const ScenarioOutcome o = runWheelScenario(575, 9401);
   ASSERT_EQ(o.passes.size(), 2u);
   const PassOutcome& second = o.passes[1];
   ASSERT_TRUE(second.ground()) << second.message;
@@ -417,10 +414,7 @@ TEST(Validation, ALaterWheelPassStartsAtTheErrorItsRunCompensates) {
 // explains the face better; its proposal (bound 2.5 µm) is one the true machine does not grind in
 // full, told "Uncertain:", as before the start at the earlier error.
 TEST(Validation, ALaterWheelPassOutOfIterationsFromTheEarlierErrorIsSoughtFromZeroToo) {
-  auto s = makeScenario(1005, 293);
-  ASSERT_TRUE(s.ok());
-  ASSERT_EQ(s->spec.kind, ScenarioClass::Wheel);
-  const ScenarioOutcome o = runScenario(*s);
+  const ScenarioOutcome o = runWheelScenario(293, 1005);
   ASSERT_EQ(o.passes.size(), 2u);
   const PassOutcome& second = o.passes[1];
   EXPECT_LT(second.measuredRms, 1.0);
