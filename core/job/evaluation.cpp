@@ -67,15 +67,15 @@ void inspectEvaluation(Evaluation& e) {
   // After: the corrected face's checks (on the grid, for points off it), or (only the gashes
   // re-indexed) the faces as they are. With one topography per gash, each gash less what the pass
   // removes on the grid (the same axes grind every gash): the worst of them, as before.
-  FaceChecks after = points ? checkFace(e.correction->afterOnGrid.normal, lines, helical)
-                     : e.correction ? checkFace(e.correction->after.normal, lines, helical)
-                                    : faceChecks;
+  FaceChecks after = faceChecks;
   if (e.gashFaces && e.correction) {
     const Eigen::MatrixXd removed = points ? Eigen::MatrixXd(e.correction->explainedOnGrid.normal - e.correction->afterOnGrid.normal)
                                            : Eigen::MatrixXd(e.correction->before.normal - e.correction->after.normal);
     std::vector<Eigen::MatrixXd> gashesAfter;
     for (const Eigen::MatrixXd& g : plan.gashTopographies) gashesAfter.push_back(g - removed);
     after = inspectGashFaces(gashesAfter, lines, helical, job.setup.face.pitchRadius).worst;
+  } else if (e.correction) {
+    after = checkFace(points ? e.correction->afterOnGrid.normal : e.correction->after.normal, lines, helical);
   }
   std::optional<GashSpacing> spacingAfter;
   if (e.indexCorrection) spacingAfter = gashSpacing(e.indexCorrection->after);
