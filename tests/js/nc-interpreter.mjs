@@ -10,7 +10,7 @@
 //   readHeidenhain(text) -> { start, blocks: [{ end, K: {X: [K3, K2, K1]} }], at(i, t) }
 //     L X.. Y.. Z.. A.. B.. then SPL blocks: X(t) = K3X t^3 + K2X t^2 + K1X t + X (X the end
 //     point) with t from 1 (the start) to 0 (the end); the start must lie within 1 µm of the
-//     previous end (the control's own check, an Error here).
+//     previous end (the control's own check, an Error here); a block names two to five axes.
 // Both throw an Error naming the line for anything they do not take.
 export const AXES = ['X', 'Y', 'Z', 'A', 'B'];
 
@@ -142,6 +142,8 @@ export function readHeidenhain(text) {
     for (const [, order, a, mantissa, exponent] of body.slice(firstK).matchAll(/K([123])([XYZAB])([-+]\d+(?:\.\d+)?)(?: ?E([-+]?\d+))?/g)) {
       (K[a] = K[a] || {})[order] = kValue(mantissa, exponent, where);
     }
+    // The manual's spline takes two to five axes: a block of one axis is not a program the control runs.
+    if (Object.keys(ends).length < 2) throw new Error(`${where}: an SPL block takes two to five axes, this one ${Object.keys(ends).length}`);
     const block = { end: {}, K: {} };
     for (const a of AXES) {
       const has = ends[a] !== undefined;

@@ -208,6 +208,10 @@ test('a HEIDENHAIN spline block has two axes at least; each SINUMERIK header nam
   const axesOf = (l) => [...l.replace(/;.*$/, '').matchAll(/ ([XYZAB])[-+][\d.]+(?= |$)/g)].map((m) => m[1]);
   assert.ok(blocks.some((l) => axesOf(l).length === 2 && / K3Y\+0\.0 K2Y\+0\.0 K1Y\+0\.0/.test(l)), blocks.join('\n'));
   for (const l of blocks) assert.ok(axesOf(l).length >= 2, `a spline of fewer than two axes: ${l}`);
+  // The reader the round trips use refuses such a block too: the program with Y's zero-K words cut out.
+  const oneAxis = text.replace(/ Y[-+][\d.]+(?= K)/, '').replace(/ K3Y\+0\.0 K2Y\+0\.0 K1Y\+0\.0/, '');
+  assert.notEqual(oneAxis, text);
+  assert.throws(() => readHeidenhain(oneAxis), /an SPL block takes two to five axes, this one 1/);
   // (It reads back to the axes: "straight, nominal: the heidenhain program reads back ..." above.)
   const cubic = programFor(evaluated['helical, corrected'].result, evaluated['helical, corrected'].caseObject, 'sinumerik-cubic', { digits }).text;
   assert.match(cubic, /so a2 \.\. a3 are mm or deg over the block/);
@@ -318,12 +322,15 @@ test('the header names the job from the case\'s job, in plain ASCII; the file is
     assert.match(p.text, /; Job: job J-4711, customer Muller Verzahnung, GmbH, hob serial H 123, operator A\. Wei\? ?/);
     assert.match(p.text, /; Notes: first pass after regrind\n/);
     assert.ok(/^[\x20-\x7e\n]*$/.test(p.text), 'plain ASCII');
-    assert.equal(p.fileName, `HOBSHARP_J_4711_20261126.${dialect === 'heidenhain' ? 'h' : 'mpf'}`);
+    // The cubic SINUMERIK program is told from the degree-5 one by _P3, which leaves no room for the date here.
+    assert.equal(p.fileName, { sinumerik: 'HOBSHARP_J_4711_20261126.mpf', 'sinumerik-cubic': 'HOBSHARP_J_4711_P3.mpf', heidenhain: 'HOBSHARP_J_4711_20261126.h' }[dialect]);
     if (dialect === 'heidenhain') assert.match(p.text, /^0 BEGIN PGM HOBSHARP_J_4711_20261126 MM\n/);
   }
   const none = programFor(result, paper, 'sinumerik', { digits, date: new Date('2026-11-26T08:00:00Z') });
   assert.match(none.text, /; Job: \(none given\)\n/);
   assert.equal(none.fileName, 'HOBSHARP_M7_20261126.mpf');
+  // Both SINUMERIK dialects write .mpf: one name had let the second download replace the first.
+  assert.equal(programFor(result, paper, 'sinumerik-cubic', { digits, date: new Date('2026-11-26T08:00:00Z') }).fileName, 'HOBSHARP_M7_20261126_P3.mpf');
   // A derived case's module: 4 significant digits in the name (a review found HOBSHARP_M8_110317242852).
   const derived = programFor(result, { ...paper, hob: { ...paper.hob, normalModule: 8.11031724285288 } }, 'sinumerik', { digits, date: new Date('2026-11-26T08:00:00Z') });
   assert.equal(derived.fileName, 'HOBSHARP_M8_11_20261126.mpf');

@@ -319,13 +319,16 @@ export function ncProgram(o) {
 // the hob's module (to 4 significant digits: M8_11, not a derived case's M8_110317242852) and the
 // date (HOBSHARP_M7_20261126), at most 24 characters (SINUMERIK's limit; HEIDENHAIN's name is
 // kept the same). The date is whole or left out: a long job number cut it to "202612", which
-// reads as another date.
+// reads as another date. The cubic SINUMERIK program ends in _P3 (POLY degree 3): both SINUMERIK
+// dialects write .mpf, and one name for two programs let the second download replace the first.
 const NAME_MOST = 24;
 export function programName(header = {}, dialect = 'sinumerik') {
   const job = header && header.job && header.job.number !== undefined ? String(header.job.number) : '';
   const date = header && header.date ? String(header.date).replace(/[^0-9]/g, '') : '';
   const module = header && Number.isFinite(header.module) ? `M${String(Number(header.module.toPrecision(4))).replace('.', '_')}` : '';
+  const suffix = dialect === 'sinumerik-cubic' ? '_P3' : '';
+  const most = NAME_MOST - suffix.length;
   const clean = (t) => t.toUpperCase().replace(/[^A-Z0-9_]/g, '_').replace(/_+/g, '_');
-  const base = clean(['HOBSHARP', job ? commentText(job, 20) : module].filter(Boolean).join('_')).slice(0, NAME_MOST).replace(/_$/, '');
-  return date && base.length + 1 + date.length <= NAME_MOST ? `${base}_${date}` : base;
+  const base = clean(['HOBSHARP', job ? commentText(job, 20) : module].filter(Boolean).join('_')).slice(0, most).replace(/_$/, '');
+  return (date && base.length + 1 + date.length <= most ? `${base}_${date}` : base) + suffix;
 }
