@@ -143,8 +143,19 @@ const Rule kRules[] = {
     {"MeasuredRowsNotLists", [](Json& j) { j["measured"] = measuredRows(5, 9); j["measured"][1] = 7; }, "measured[1]", "Measured grid, row 2: must be a list of values; got a number."},
     // A long first row and 100,000 rows that are not lists: refused before 80 GB are allocated.
     {"MeasuredHugeFirstRow", [](Json& j) { j["measured"] = Json(std::vector<int>(100001, 1)); j["measured"][0] = std::vector<double>(100000, 0.0); }, "measured[1]", "Measured grid, row 2: must be a list of values"},
-    // A geometry for which a grid point cannot be solved: the message names r and x.
-    {"UnsolvableGridPoint", [](Json& j) { j["axes"] = {{"X", {222.4, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}}; }, "grid", "cannot be solved at the grid point r = 19 mm, x = -70 mm"},
+    // A geometry for which a grid point cannot be solved (Z a0 45 mm off, within a run's limits):
+    // the message names r and x.
+    {"UnsolvableGridPoint", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-71.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}}; }, "grid", "cannot be solved at the grid point r = 19 mm, x = -70 mm"},
+    // Axes run beyond a run's limits: a unit slip, named with the unit (run_axes.h).
+    {"RunAxisInDegrees", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {12.626, 0, 0, 0, 0}}}; }, "axes.B", "differs from the nominal axis by up to 12.41 rad (710.8 deg) over the motion; a run differs from it by a correction, µm and µrad, and at most 30 deg on A and B is taken. A and B are in rad: was it typed in degrees?"},
+    {"RunAxisInMicrometres", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5089, 0, 0, 0}}, {"Y", {39307.6, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}}; }, "axes.Y", "X, Y and Z are in mm: was it typed in µm?"},
+    {"PassAxisInDegrees", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["axes"]["B"][0] = 12.626; }, "passes[1].axes.B", "was it typed in degrees?"},
+    // The wheel's rim and the gash root (docs/conventions.md, "The wheel's rim").
+    {"RimPastTheRoot", [](Json& j) { j["setup"]["centerDistance"] = 60; }, "setup.centerDistance", "the wheel's rim (radius 50 mm) reaches about 9.28052 mm past the gash root"},
+    {"WheelAxisInsideTheHob", [](Json& j) { j["setup"]["centerDistance"] = 10; }, "setup.centerDistance", "The rim touches the root at a centre distance of 69.4462 mm"},
+    {"RimWiderThanTheWheelReaches", [](Json& j) { j["wheel"]["outerDiameter"] = 400; }, "setup.centerDistance", "reaches about 150 mm past the gash root"},
+    {"SettingAngleOfTheOtherHand", [](Json& j) { j["setup"].erase("centerDistance"); j["setup"]["settingAngle"] = -12.626; }, "setup.settingAngle", "Check the setting angle's sign for a right-hand hob (left out, it is derived: 12.626 deg)"},
+    {"TiltNearlyRight", [](Json& j) { j["setup"].erase("centerDistance"); j["setup"]["tilt"] = 89.999; }, "setup.tilt", "more than 4 times the wheel's and the hob's radii together (360 mm)"},
     // Correction options.
     {"GashDeviationsNotOnePerGash", [](Json& j) { j["hob"]["gashes"] = 12; j["inspection"] = {{"gashDeviations", {0, 1.5, -2}}}; },
      "inspection.gashDeviations", "needs one deviation per gash: the hob has 12 gashes (hob.gashes); got 3."},
@@ -321,15 +332,17 @@ TEST(CaseFile, LongStringsAreShownCut) {
   EXPECT_LT(e.message.size(), 300u);
 }
 
-// Absurd axis coefficients cannot overflow the way absurd measured values did: the wheel then
-// misses the face and the grid point is refused, or (an angle far beyond 2 pi) the numbers stay
-// finite. Tried for every coefficient up to 1e300, with a measured topography.
+// Absurd axis coefficients are refused at the axis, as a unit slip (run_axes.h), before anything
+// is simulated: tried for every coefficient up to 1e300, with a measured topography. Within the
+// limits, far from nominal, they cannot overflow the way absurd measured values did: the wheel then
+// misses the face and the grid point is refused, or the numbers stay finite.
 TEST(CaseFile, AbsurdAxisCoefficientsAreRefusedOrStayFinite) {
   const Json axes = {{"X", {22.4003, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}},
                      {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}};
   int refused = 0, finite = 0;
   for (const char* axis : {"X", "Y", "Z", "A", "B"})
-    for (int k = 0; k <= 4; ++k)
+    for (int k = 0; k <= 4; ++k) {
+      const bool rotary = std::string(axis) == "A" || std::string(axis) == "B";
       for (double v : {1e300, -1e300, 1e154, 1e20}) {
         Json j = paperJson();
         j["axes"] = axes;
@@ -338,6 +351,19 @@ TEST(CaseFile, AbsurdAxisCoefficientsAreRefusedOrStayFinite) {
         auto in = parseCase(j.dump());
         ASSERT_TRUE(in.ok()) << in.error().message;
         auto job = resolveJob(*in);
+        ASSERT_FALSE(job.ok()) << axis << " a" << k << " = " << v;
+        EXPECT_EQ(job.error().field, "axes." + std::string(axis));
+        EXPECT_NE(job.error().message.find(rotary ? "was it typed in degrees?" : "was it typed in µm?"), std::string::npos)
+            << job.error().message;
+      }
+      // Within the limits (50 mm, 30 deg over the motion, about 0.56 rad each way here), either sign.
+      for (double sign : {1.0, -1.0}) {
+        Json j = paperJson();
+        j["axes"] = axes;
+        const double most = rotary ? 0.5 : 45.0;
+        j["axes"][axis][k] = j["axes"][axis][k].get<double>() + sign * most / std::pow(0.6, k);
+        j["measured"] = measuredRows(5, 9);
+        auto job = resolveJob(*parseCase(j.dump()));
         ASSERT_TRUE(job.ok()) << job.error().message;
         auto e = evaluate(*job);
         if (!e) {
@@ -346,7 +372,7 @@ TEST(CaseFile, AbsurdAxisCoefficientsAreRefusedOrStayFinite) {
           continue;
         }
         ++finite;
-        const std::string what = std::string(axis) + " a" + std::to_string(k) + " = " + std::to_string(v);
+        const std::string what = std::string(axis) + " a" + std::to_string(k) + " " + (sign > 0 ? "+" : "-");
         EXPECT_TRUE(e->topography.normal.allFinite()) << what;
         EXPECT_TRUE(std::isfinite(e->topography.sse)) << what;
         EXPECT_TRUE(e->sensitivities.normal.allFinite()) << what;
@@ -357,6 +383,7 @@ TEST(CaseFile, AbsurdAxisCoefficientsAreRefusedOrStayFinite) {
         for (Axis a : kAxes)
           for (double c : e->correction->axes[a].a) EXPECT_TRUE(std::isfinite(c)) << what;
       }
+    }
   EXPECT_GT(refused, 0);
   EXPECT_GT(finite, 0);
 }

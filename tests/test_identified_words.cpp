@@ -154,6 +154,34 @@ TEST(IdentifiedWords, StraightGashSaysWhatItDoesNotShow) {
       << c.identified.sentences.back();
 }
 
+// The axes a straight gash's face does not show are run as nominal: a run 20 µm off on X and Y is
+// changed back, and the unseen axes' sentence says so (the change stood in the table with nothing to
+// say where it came from); run on nominal, the sentence has nothing to add.
+TEST(IdentifiedWords, UnseenAxesTakenBackToNominalAreSaidSo) {
+  for (bool offset : {true, false}) {
+    SCOPED_TRACE(offset ? "run off nominal" : "run nominal");
+    CaseInput in = straightGashCase();
+    const SharpeningJob job = jobOf(in);
+    AxisPolynomials run = job.nominalAxes;
+    if (offset) run[Axis::X].a[0] += 0.02, run[Axis::Y].a[0] += 0.02;
+    in.axes = run;
+    AxisPolynomials error = job.nominalAxes;
+    for (Axis a : kAxes)
+      for (double& c : error[a].a) c = 0;
+    error[Axis::Z].a[0] = 0.005;
+    in.measured = topographyFor(job, withMachineError(run, error)).normal;
+    auto e = evaluate(jobOf(in));
+    ASSERT_TRUE(e.ok() && e->correction);
+    const Correction& c = *e->correction;
+    ASSERT_FALSE(c.identified.sentences.empty());
+    const std::string& last = c.identified.sentences.back();
+    EXPECT_EQ(last.rfind("X, Y and B: the face does not show their errors at all", 0), 0u) << last;
+    const std::string back = "The change proposed there (X \u221220 µm and Y \u221220 µm) only takes the run back to the nominal axes";
+    EXPECT_EQ(last.find(back) != std::string::npos, offset) << last;
+    for (Axis a : {Axis::X, Axis::Y}) EXPECT_NEAR(c.axisChangeSize[static_cast<int>(a)], offset ? -20.0 : 0.0, 1e-6) << axisName(a);
+  }
+}
+
 // (b) The uncertainty is the spread: over 30 seeds of fresh probe noise (same hob, same true error)
 // the standard deviation of each value read alone is 0.7 to 1.4 times the uncertainty given with it;
 // and the uncertainty of the identified error is the change per µm of noise times sigma, exactly.

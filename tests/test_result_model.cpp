@@ -128,13 +128,13 @@ TEST(ResultModel, TheJsonHoldsExactlyTheDescribedFields) {
   for (const std::string& f : wheelOnly) EXPECT_EQ(writtenWithPoints.count(f), 0u) << f << " with points";
   writtenWithPoints.insert(wheelOnly.begin(), wheelOnly.end());
   EXPECT_EQ(writtenWithPoints, written);
-  // Axes run that alone grind no face the wheel envelops (A a0 one radian off): the correction is
+  // Axes run that alone grind no face the wheel envelops (Z a0 45 mm off): the correction is
   // linearised at the nominal axes, and the face the run grinds is not given (correction.*Simulated
   // would be the nominal axes' face).
   CaseInput lost = paperCase();
   lost.measured = measuredCase().measured;
   lost.axes = test::jobOf(lost).nominalAxes;
-  (*lost.axes)[Axis::A].a[0] += 1.0;
+  (*lost.axes)[Axis::Z].a[0] += 45.0;
   const Json linearised = Json::parse(resultJson(evaluated(lost)));
   ASSERT_TRUE(linearised["correction"]["linearisedAtNominal"].get<bool>());
   const std::set<std::string> runFaceOnly = {"correction.rmsSimulated", "correction.sseSimulated", "correction.maxSimulated",

@@ -632,4 +632,14 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& cs, const Eigen::V
   return out;
 }
 
+std::string backToNominalSentence(const std::vector<Axis>& changed, const std::array<double, kAxisCount>& change) {
+  if (changed.empty()) return "";
+  std::vector<std::string> parts;
+  for (Axis a : changed) parts.push_back(std::string(axisName(a)) + " " + amountText(change[static_cast<size_t>(a)]) + " " + unitOf(a));
+  const bool one = changed.size() == 1;
+  return "The change proposed there (" + listText(parts) + ") only takes the run back to the nominal " +
+         (one ? "axis" : "axes") + ": the face neither asks for it nor shows it, so where the run was set off nominal there on purpose, keep the run's " +
+         (one ? "value" : "values") + ".";
+}
+
 }  // namespace hobsharp

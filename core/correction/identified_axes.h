@@ -126,4 +126,10 @@ IdentifiedAxes identifiedAxes(const std::vector<Coefficient>& coefficients, cons
                               const Eigen::MatrixXd& basis = Eigen::MatrixXd(), const StepDecomposition* made = nullptr,
                               const Eigen::VectorXd* secondOrder = nullptr);
 
+// The sentence after the unseen axes' where the proposal changes them at all: their change (µm or
+// µrad, largest over the motion range) only takes the run back to the nominal axes, which the face
+// neither asks for nor shows. `changed`: the unseen axes whose change is above half a machine step
+// and whose proposal is the nominal motion; "" when there are none.
+std::string backToNominalSentence(const std::vector<Axis>& changed, const std::array<double, kAxisCount>& change);
+
 }  // namespace hobsharp

@@ -400,6 +400,20 @@ Outcome<Correction> correctMeasuredFace(const SharpeningSetup& setup, const Axis
                                 o.probeNoise, o, readingBasis,
                                 atRun && !freed && !atRunMade.empty() ? &atRunMade : nullptr,
                                 secondOrder.size() == linearised.size() ? &secondOrder : nullptr);
+  // The axes the face does not show are proposed as nominal (nominal - 0): a run off nominal on
+  // them is changed back, which the face neither asks for nor shows; the unseen axes' sentence
+  // (the last) says so, with the change.
+  if (!c.identified.unseen.empty() && !c.identified.sentences.empty()) {
+    const std::array<double, kAxisCount> fromNominal = axisChangeOver(c.axes, nominal, range);
+    std::vector<Axis> changed;
+    for (Axis a : c.identified.unseen) {
+      const size_t i = static_cast<size_t>(a);
+      const double halfStep = 0.5 * o.resolution.step[i] * (isRotary(a) ? kRadPerDeg * 1e6 : 1.0);  // µm or µrad
+      if (std::abs(c.axisChangeSize[i]) > halfStep && std::abs(fromNominal[i]) < 1e-6 * halfStep) changed.push_back(a);
+    }
+    const std::string back = backToNominalSentence(changed, c.axisChangeSize);
+    if (!back.empty()) c.identified.sentences.back() += " " + back;
+  }
   // One quantity: the uncertainty is the change per µm of noise times sigma. The identified error's
   // spread is its identification's, at the identified error (from the decomposition the
   // identification made there, where it made one and nothing was identified alongside); the values

@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "number_text.h"
+#include "units.h"
+
 namespace hobsharp {
 
 Outcome<void> checkAxes(const AxisPolynomials& axes, int degree, const std::string& name) {
@@ -13,6 +16,31 @@ Outcome<void> checkAxes(const AxisPolynomials& axes, int degree, const std::stri
                                " (degree " + std::to_string(degree) + "); got " + std::to_string(p.a.size()) + ".");
     for (size_t k = 0; k < p.a.size(); ++k)
       if (!std::isfinite(p.a[k])) return refuse(field + "[" + std::to_string(k) + "]", "must be a finite number.");
+  }
+  return success();
+}
+
+Outcome<void> checkNearNominal(const AxisPolynomials& axes, const AxisPolynomials& nominal, double reach,
+                               const std::string& name) {
+  constexpr int kSamples = 41;
+  for (Axis a : kAxes) {
+    const bool rotary = isRotary(a);
+    double worst = 0;
+    for (int i = 0; i < kSamples; ++i) {
+      const double w = -reach + 2 * reach * i / (kSamples - 1);
+      const double d = axes[a].at(w).value - nominal[a].at(w).value;
+      if (std::abs(d) > std::abs(worst)) worst = d;
+    }
+    const double most = rotary ? kMaxRunOffsetRotary : kMaxRunOffsetLinear;
+    if (std::abs(worst) > most) {
+      const std::string unit = rotary ? " rad" : " mm";
+      return refuse(name + "." + axisName(a),
+                    "differs from the nominal axis by up to " + numberText(std::abs(worst), 4) + unit +
+                        (rotary ? " (" + numberText(std::abs(worst) * kDegPerRad, 4) + " deg)" : "") +
+                        " over the motion; a run differs from it by a correction, µm and µrad, and at most " +
+                        (rotary ? "30 deg on A and B" : "50 mm on X, Y and Z") + " is taken. " +
+                        (rotary ? "A and B are in rad: was it typed in degrees?" : "X, Y and Z are in mm: was it typed in µm?"));
+    }
   }
   return success();
 }

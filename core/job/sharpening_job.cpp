@@ -19,6 +19,15 @@
 namespace hobsharp {
 namespace {
 
+// How far the derived centre distance's rim may lie from the root, per mm of wheel radius (the
+// boundary equation is solved to rounding; its other branches miss by tens of mm).
+constexpr double kRimTolerance = 1e-6;
+// How far a given centre distance's rim may pass the gash root, a share of the gash depth (a
+// clearance the engineer sets on purpose; beyond it the rim grinds into the hob below the gash).
+constexpr double kRimClearance = 0.1;
+// The farthest derived centre distance, per mm of the wheel's and the hob's radii together.
+constexpr double kFarthestCenterDistance = 4;
+
 // The settings the case gives directly: the wheel's size, the setup's angles and centre
 // distance, the machine constants and the axes' degree.
 Outcome<void> checkSettings(const CaseInput& in) {
@@ -60,6 +69,15 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   } else {
     auto E = centerDistanceFromWheelRim(face, universal, sign, job.rootRadius, job.wheelRadius);
     if (!E) return E.error();
+    // Near a tilt of 90 deg the rim meets the root only from far away (2,875,195 mm at 89.999 deg on
+    // the paper's hob; an independent review): farther than four times the wheel's and the hob's
+    // radii together (the paper's hob: 69 mm at 15 deg, 308 mm at 80 deg) no machine's axes reach.
+    const double farthest = kFarthestCenterDistance * (job.wheelRadius + job.outerRadius);
+    if (*E > farthest)
+      return refuse("setup.tilt", "at a tilt of " + numberText(in.tilt, 6) + " deg the wheel's rim meets the gash root only from a centre distance of " +
+                                      mmText(*E) + ", more than " + numberText(kFarthestCenterDistance, 1) +
+                                      " times the wheel's and the hob's radii together (" + mmText(farthest) +
+                                      "), where no machine's axes reach. Check the tilt (the paper's example sets 15 deg).");
     universal.centerDistance = Polynomial::constant(*E);
   }
   job.setup = SharpeningSetup::make(face, universal, in.machine);
@@ -72,6 +90,32 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
                   "the wheel is too small to reach the gash root: at the root radius " + numberText(job.rootRadius) +
                       " mm the wheel needs a radius of " + numberText(ends->R[0]) + " mm, but it has " +
                       numberText(job.wheelRadius) + " mm. Use a larger wheel or a smaller setup.centerDistance.");
+
+  // The wheel's rim at the gash root (docs/conventions.md, "The wheel's rim"). Derived, the centre
+  // distance puts the rim on the root (the boundary equation), which the profile must confirm: a
+  // setting angle of the wrong sign for the hand gave a solution on another branch (E = 6.27 mm on
+  // the paper's hob, its profile 16.2 mm at the root for a rim of 50 mm; an independent review).
+  // Given, the rim may pass the root by a clearance, not grind into the hob below the gash.
+  const double rimPast = job.wheelRadius - ends->R[0];  // mm of wheel radius beyond the root's contact
+  if (job.centerDistanceDerived && std::abs(rimPast) > kRimTolerance * (1 + job.wheelRadius))
+    return refuse(in.settingAngle ? "setup.settingAngle" : "setup.tilt",
+                  "no centre distance brings the wheel's rim (radius " + mmText(job.wheelRadius) + ") to the gash root with "
+                  "this setting: the boundary equation's solution, " + mmText(universal.centerDistance.coefficient(0)) +
+                  ", has the wheel's profile at " + mmText(ends->R[0]) + " at the root. Check the setting angle's sign for a " +
+                  (in.hob.hand == Hand::Left ? "left" : "right") + "-hand hob (left out, it is derived: " +
+                  numberText(defaultSettingAngle(face) * kDegPerRad, 5) + " deg), or give setup.centerDistance.");
+  if (!job.centerDistanceDerived && rimPast > kRimClearance * in.hob.gashDepth) {
+    auto atRoot = centerDistanceFromWheelRim(face, universal, sign, job.rootRadius, job.wheelRadius);
+    return refuse("setup.centerDistance",
+                  "the wheel's rim (radius " + mmText(job.wheelRadius) + ") reaches about " + mmText(rimPast) +
+                      " past the gash root: at the root radius " + mmText(job.rootRadius) + " the wheel grinds with radius " +
+                      mmText(ends->R[0]) + ", so its rim would grind into the hob below the gash (a clearance of at most " +
+                      numberText(100 * kRimClearance, 2) + " % of the gash depth, " + mmText(kRimClearance * in.hob.gashDepth) +
+                      ", is taken as set on purpose). " +
+                      (atRoot ? "The rim touches the root at a centre distance of " + mmText(*atRoot) + "; give about that, or leave "
+                                "setup.centerDistance out to have it derived, or use a smaller wheel."
+                              : "Give a larger centre distance or use a smaller wheel."));
+  }
 
   // The conjugate wheel's profile, and where it turns back below the tip: the face above lies
   // past the edge of the wheel's envelope (docs/method.md).
@@ -98,6 +142,10 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   auto run = runAxes(in.axes, job.nominalAxes, in.degree);
   if (!run) return run.error();
   job.runAxes = std::move(run).value();
+  // The motion over the hob's length: phi = x / p on a helical gash (rad), x on a straight one (mm).
+  const double reach = (in.hob.length / 2 + std::abs(xCentre)) / (face.helical() ? std::abs(face.screwParameter) : 1.0);
+  if (in.axes)
+    if (auto r = checkNearNominal(job.runAxes, job.nominalAxes, reach, "axes"); !r) return r.error();
 
   // Where the measuring machine's points may lie (docs/measured-points.md).
   const PointRegion region{job.rootRadius, job.outerRadius,
@@ -107,6 +155,9 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   if (!measured) return measured.error();
   job.measured = std::move(measured).value();
   if (auto r = checkPasses(in.passes, in.degree, job.grid, region); !r) return r.error();
+  for (size_t i = 0; i < in.passes.size(); ++i)
+    if (auto r = checkNearNominal(in.passes[i].axes, job.nominalAxes, reach, "passes[" + std::to_string(i) + "].axes"); !r)
+      return r.error();
 
   auto options = correctionOptions(in.correction, in.degree, "correction");
   if (!options) return options.error();

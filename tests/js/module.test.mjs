@@ -182,7 +182,10 @@ const bad = [
   ['measured of the wrong shape', (c) => { c.measured = [[1, 2, 3]]; }, 'measured', /^Measured grid: needs 5 rows \(the radial grid lines\) of 9 values \(the axial grid lines\); got 1 x 3\.$/],
   ['a measured value beyond 10 mm', (c) => { c.measured = Array.from({ length: 5 }, () => Array(9).fill(0)); c.measured[2][3] = 2e4; }, 'measured[2][3]', /^Measured grid, row 3 \(r = 29\.5 mm\), value 4 \(x = -17\.5 mm\): must lie within ±10000 µm \(10 mm\); got 20000 µm\.$/],
   ['a non-numeric measured cell', (c) => { c.measured = Array.from({ length: 5 }, () => Array(9).fill(0)); c.measured[1][2] = 'n/a'; }, 'measured[1][2]', /^Measured grid, row 2, value 3: must be a number; got a string\.$/],
-  ['an unsolvable grid point', (c) => { c.axes = { X: [222.4, 139.5089, 0, 0, 0], Y: [39.3076, 0, 0, 0, 0], Z: [-116.446, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.220365, 0, 0, 0, 0] }; }, 'grid', /r = 19 mm, x = -70 mm/, 'Unsolvable'],
+  ['an unsolvable grid point', (c) => { c.axes = { X: [22.4, 139.5089, 0, 0, 0], Y: [39.3076, 0, 0, 0, 0], Z: [-71.446, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [0.220365, 0, 0, 0, 0] }; }, 'grid', /r = 19 mm, x = -70 mm/, 'Unsolvable'],
+  ['a run axis typed in degrees', (c) => { c.axes = { X: [22.4, 139.5089, 0, 0, 0], Y: [39.3076, 0, 0, 0, 0], Z: [-116.446, 0, 0, 0, 0], A: [0, 1, 0, 0, 0], B: [12.626, 0, 0, 0, 0] }; }, 'axes.B', /^axes\.B: differs from the nominal axis by up to 12\.41 rad \(710\.8 deg\) over the motion; .* A and B are in rad: was it typed in degrees\?$/],
+  ['a wheel rim past the gash root', (c) => { c.setup.centerDistance = 60; }, 'setup.centerDistance', /reaches about 9\.28052 mm past the gash root/],
+  ['a setting angle of the other hand', (c) => { c.setup.settingAngle = -12.626; delete c.setup.centerDistance; }, 'setup.settingAngle', /Check the setting angle's sign for a right-hand hob/],
   ['no contact between wheel and face', (c) => { c.setup.settingAngle = -60; c.setup.centerDistance = 69.446; }, 'setup', /no contact between the wheel and the tooth face at radius r = 31.25 mm/, 'Unsolvable'],
   ['no centre distance from the boundary equation', (c) => { c.setup.settingAngle = 85; delete c.setup.centerDistance; }, 'wheel.outerDiameter', /no centre distance solves the boundary equation/, 'Unsolvable'],
 ];

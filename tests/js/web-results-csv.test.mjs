@@ -160,14 +160,14 @@ test('the effect on the gear: its figures per flank with their units, or why the
   assert.equal(text.split('\n')[at + 1], /[",;\n]/.test(reason) ? `no figures,"${reason.replace(/"/g, '""')}"` : `no figures,${reason}`);
 });
 
-// Axes run that alone grind no face the wheel envelops (A a0 one radian off the nominal): the
+// Axes run that alone grind no face the wheel envelops (Z a0 45 mm off the nominal): the
 // correction is linearised at the nominal axes, and the module's topography is the nominal axes'
 // face (about 0 everywhere), not a face of the axes run: the record writes no grid, and no
 // thickness, as the axes run's (a review found the nominal face written as theirs).
 test('axes run that grind no face: no simulated grid or thickness written as theirs', () => {
   const measured = Array.from({ length: 5 }, (_, i) => Array(9).fill(1 + i / 4));
   const nominal = hobsharp.evaluate(paper).axes;
-  const axes = { ...nominal, A: [nominal.A[0] + 1, ...nominal.A.slice(1)] };
+  const axes = { ...nominal, Z: [nominal.Z[0] + 45, ...nominal.Z.slice(1)] };
   const caseObject = { ...paper, axes, measured };
   const r = hobsharp.evaluate(caseObject);
   assert.equal(r.correction.linearisedAtNominal, true);

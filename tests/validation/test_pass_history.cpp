@@ -85,7 +85,9 @@ void expectSoughtAllTheSame(const Correction& c, const std::string& words) {
 }
 
 Correction corrected(const CaseInput& c) {
-  auto e = evaluate(*resolveJob(c));
+  auto job = resolveJob(c);
+  if (!job) ADD_FAILURE() << job.error().message;
+  auto e = evaluate(*job);
   EXPECT_TRUE(e.ok() && e->correction) << (e ? "" : e.error().message);
   return *e->correction;
 }
