@@ -146,6 +146,8 @@ const Rule kRules[] = {
     // A geometry for which a grid point cannot be solved (Z a0 45 mm off, within a run's limits):
     // the message names r and x.
     {"UnsolvableGridPoint", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-71.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}}; }, "grid", "cannot be solved at the grid point r = 19 mm, x = -70 mm"},
+    // A measured grid of fewer values than free coefficients, as measured points are refused.
+    {"GridTooFewForTheDegree", [](Json& j) { j["grid"] = {{"radial", 2}, {"axial", 2}}; j["degree"] = 6; j["measured"] = measuredRows(2, 2); }, "measured", "Measured grid: 4 values are too few for the 35 free coefficients of degree 6 (one equation per value)"},
     // Axes run beyond a run's limits: a unit slip, named with the unit (run_axes.h).
     {"RunAxisInDegrees", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {12.626, 0, 0, 0, 0}}}; }, "axes.B", "differs from the nominal axis by up to 12.41 rad (710.8 deg) over the motion; a run differs from it by a correction, µm and µrad, and at most 30 deg on A and B is taken. A and B are in rad: was it typed in degrees?"},
     {"RunAxisInMicrometres", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5089, 0, 0, 0}}, {"Y", {39307.6, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}}; }, "axes.Y", "X, Y and Z are in mm: was it typed in µm?"},

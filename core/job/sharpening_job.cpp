@@ -6,6 +6,7 @@
 #include "correction_input.h"
 #include "field_checks.h"
 #include "grid_input.h"
+#include "grid_words.h"
 #include "hob_input.h"
 #include "number_text.h"
 #include "pass_history.h"
@@ -163,6 +164,19 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   if (!options) return options.error();
   job.correction = *options;
   job.history = passHistory(in.passes, job.nominalAxes, job.correction.wheel);
+  // One equation per value, as measured points (measured_points_correction.cpp): a grid of fewer
+  // values than free coefficients cannot decide them (a 2 x 2 grid at degree 6 was called
+  // "Correctable" from 4 values for 35 coefficients; an independent review).
+  if (job.measured.grid) {
+    int free = 0;
+    for (const Coefficient& k : allCoefficients(in.degree)) free += isLocked(k, job.correction) ? 0 : 1;
+    if (job.grid.size() < free)
+      return Error{"measured", gridWords("measured") + ": " + std::to_string(job.grid.size()) + " values are too few for the " +
+                                   std::to_string(free) + " free coefficients of degree " + std::to_string(in.degree) +
+                                   " (one equation per value): measure a grid of at least " + std::to_string(free) +
+                                   " values, or lower the degree, or lock coefficients.",
+                   ErrorCode::InvalidInput};
+  }
   if (job.correction.wheel && job.measured.atPoints())
     return refuse("correction.wheel", "is not available for measured points off the grid yet: give the points at the "
                                       "grid's positions (or the grid as `measured`) to correct the wheel too.");
