@@ -466,6 +466,21 @@ TEST(WheelCase, AnOffsetTooLargeToGrindBlamesTheWheel) {
   EXPECT_EQ(e.message.find("grid"), std::string::npos) << e.message;
 }
 
+// The page's own conjugate profile, read back as a measured wheel, on a random hob (seed 4711's
+// scenario 131 of an independent review) whose equation of meshing has no solution a quarter of
+// the face's depth past the tip: it was refused ("no contact ... at r = 31.4 mm"), and with it the
+// dresser path, the documented way of recording a dressing. The search now keeps closer to the
+// face there, and the wheel read is the conjugate one: its face is the nominal one.
+TEST(WheelCase, AConjugateProfileReadBackWhereTheWheelEndsPastTheTip) {
+  auto in = parseCase(readFile("conjugate-past-tip.json"));
+  ASSERT_TRUE(in.ok()) << in.error().message;
+  auto job = resolveJob(*in);
+  ASSERT_TRUE(job.ok()) << job.error().message;
+  auto e = evaluate(*job);
+  ASSERT_TRUE(e.ok()) << e.error().message;
+  EXPECT_LT(e->topography.rms, 1e-6);
+}
+
 TEST(WheelCase, MeasuredProfileIsCheckedForCoverage) {
   const SharpeningJob plain = jobOf(paperCase());
   const WheelPointsInput m = measuredWheel(plain, [](double) { return 2.0; }, 21);

@@ -85,13 +85,24 @@ Outcome<WheelSurface> resolveWheelSurface(const CaseInput& in, const SharpeningS
   if (auto r = checkRadii(m.R, R); !r) return r.error();
   for (size_t i = 0; i < m.values.size(); ++i)
     if (!std::isfinite(m.values[i])) return refuseWheelPoint(Z, i, "Z must be a finite number.");
-  const double margin = 0.25 * (outerRadius - rootRadius);
-  const double rLow = std::max(rootRadius - margin, 0.5 * (rootRadius + std::abs(setup.face.rakeOffset)));
-  auto projected = projectOntoConjugateProfile(setup, m.R, m.values, rLow, outerRadius + margin, "wheel.measuredProfile");
+  // Where the equation of meshing has no solution a quarter of the depth past the tip (the wheel's
+  // profile ends there: the page's own dresser path was refused on 10 of 299 random hobs, an
+  // independent review), the search keeps closer to the face, down to the face itself.
+  Outcome<ProjectedProfile> projected = Error{};
+  double share = 0;
+  for (double s : {0.25, 0.125, 0.05, 0.0}) {
+    share = s;
+    const double margin = s * (outerRadius - rootRadius);
+    const double rLow = std::max(rootRadius - margin, 0.5 * (rootRadius + std::abs(setup.face.rakeOffset)));
+    projected = projectOntoConjugateProfile(setup, m.R, m.values, rLow, outerRadius + margin, "wheel.measuredProfile");
+    if (projected || projected.error().code != ErrorCode::Unsolvable) break;
+  }
   if (!projected) {  // names the point in words, and the radii searched beside the face's own
     Error e = projected.error();
-    e.message += " (The face runs from r = " + numberText(rootRadius) + " to " + numberText(outerRadius) +
-                 " mm; a wheel point is sought a quarter of its depth past either end.)";
+    e.message += " (The face runs from r = " + numberText(rootRadius) + " to " + numberText(outerRadius) + " mm; a wheel point is sought " +
+                 (share == 0.25 ? std::string("a quarter of its depth past either end.)")
+                  : share > 0 ? numberText(100 * share, 3) + " % of its depth past either end (the wheel's profile ends closer to the tip).)"
+                              : std::string("on the face's own radii (the wheel's profile ends at the tip).)"));
     return e;
   }
   // The feet's radii in the order of the points, and covering the contact range.
