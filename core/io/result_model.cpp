@@ -503,21 +503,21 @@ void visitWheelCorrection(const Evaluation& e, ResultVisitor& v) {
   if (!e.wheelCorrection && !v.listsEveryField()) return;
   static const WheelCorrection kNoWheel;
   const WheelCorrection& w = e.wheelCorrection ? *e.wheelCorrection : kNoWheel;
-  numbers(v, {"correction.wheelProfileOffset.R", "mm", "the dressing's spline points: conjugate wheel radius, over the radii the grid is ground with", kWithWheel},
+  numbers(v, {"correction.wheelProfileOffset.R", "mm", "the dressing's spline points: conjugate wheel radius, over the radii the grid is ground with", kWithWheel, "dressing point R"},
           w.knots.R);
-  numbers(v, {"correction.wheelProfileOffset.offset", "µm", "what to dress in addition to the current offset at those points, a not-a-knot cubic spline (+ = more wheel, less material)", kWithWheel},
+  numbers(v, {"correction.wheelProfileOffset.offset", "µm", "what to dress in addition to the current offset at those points, a not-a-knot cubic spline (+ = more wheel, less material)", kWithWheel, "dressing (+ = more wheel)"},
           w.offset);
-  numbers(v, {"correction.dresserPath.R", "mm", "the corrected axial wheel profile for the dresser: the current profile plus the dressing along its normal, at the wheelProfile points", kWithWheel},
+  numbers(v, {"correction.dresserPath.R", "mm", "the corrected axial wheel profile for the dresser: the current profile plus the dressing along its normal, at the wheelProfile points", kWithWheel, "dresser path R"},
           w.dresser.dressedR);
-  numbers(v, {"correction.dresserPath.Z", "mm", "its axial positions", kWithWheel}, w.dresser.dressedZ);
-  numbers(v, {"correction.dresserPath.offset", "µm", "the wheel's offset after the dressing at the wheelProfile points: the current offset plus the proposed spline (+ = more wheel)", kWithWheel},
+  numbers(v, {"correction.dresserPath.Z", "mm", "its axial positions", kWithWheel, "dresser path Z"}, w.dresser.dressedZ);
+  numbers(v, {"correction.dresserPath.offset", "µm", "the wheel's offset after the dressing at the wheelProfile points: the current offset plus the proposed spline (+ = more wheel)", kWithWheel, "offset after dressing (+ = more wheel)"},
           micrometres(w.dresser.offset));
   matrix(v, {"correction.removedByAxes", "µm", "the part of the measured face the axes remove (in the span of the directions they take)", kWithWheel},
          w.removedByAxes);
   matrix(v, {"correction.removedByWheel", "µm", "the part the wheel's dressing removes: the shape the axes cannot make", kWithWheel},
          w.removedByWheel);
-  v.number({"correction.axesShare", "", "share of the measured sum of squares the axes remove, 0..1", kWithWheel}, w.axesShare);
-  v.number({"correction.wheelShare", "", "share of the measured sum of squares the wheel removes, 0..1 (with axesShare and uncorrectableShare: 1)", kWithWheel},
+  v.number({"correction.axesShare", "", "share of the measured sum of squares the axes remove, 0..1", kWithWheel, "share the axis moves remove"}, w.axesShare);
+  v.number({"correction.wheelShare", "", "share of the measured sum of squares the wheel removes, 0..1 (with axesShare and uncorrectableShare: 1)", kWithWheel, "share the wheel removes"},
            w.wheelShare);
 }
 

@@ -36,6 +36,13 @@ test('a dressed wheel from a CSV file grinds the face, and Fig. 4 shows its offs
   assert.deepEqual(traces.filter((t) => t.xaxis === 'x2').map((t) => t.name), ['offset as dressed (µm, top scale)']);
   assert.ok(await colours(page, '#plot-wheel') > 8, 'Fig. 4 draws');
   await page.locator('#wheel-section').screenshot({ path: path.join(shots, 'wheel-dressed.png') });
+  // The results CSV lists the wheel file's points among the inputs by name and unit (they had no
+  // name and no unit, so that mm and µm looked alike; an independent review).
+  await page.evaluate(() => { document.querySelector('#files-menu').open = true; });
+  const [results] = await Promise.all([page.waitForEvent('download'), page.click('#download-results')]);
+  const record = readFileSync(await results.path(), 'utf8');
+  assert.match(record, /\nWheel offset: conjugate wheel radius R,29\.6 40 49\.9,mm,wheel\.profileOffset\.R\n/);
+  assert.match(record, /\nWheel offset \(\+ = more wheel\),0 4 0,µm,wheel\.profileOffset\.offset\n/);
 
   // A file the page cannot read: named by line and column; the wheel in use stays.
   // (The file is read asynchronously: wait for the page to say so, not for a fixed time.)
@@ -129,6 +136,13 @@ test('correcting the wheel too: the proposed offset on Fig. 4, the dresser path 
   const rising = { R: Array.from(expected.R).reverse(), Z: Array.from(expected.Z).reverse() };
   const gap = Math.max(...['R', 'Z'].flatMap((k) => dresser.points[k].map((v, i) => Math.abs(v - rising[k][i]))));
   assert.ok(gap < 1e-9, `the CSV holds the dresser path as the module computes it (to ${gap} mm)`);
+  // The results CSV, the job's record, holds the dressing proposed with the dresser path (an
+  // independent review found it without).
+  await page.evaluate(() => { document.querySelector('#files-menu').open = true; });
+  const [results] = await Promise.all([page.waitForEvent('download'), page.click('#download-results')]);
+  const record = readFileSync(await results.path(), 'utf8');
+  assert.match(record, /\n# wheel dressing proposed: /);
+  assert.match(record, /\ndresser path R \(mm\),dresser path Z \(mm\),offset after dressing \(\+ = more wheel\) \(µm\)\n/);
 
   await page.locator('#wheel-section').screenshot({ path: path.join(shots, 'wheel-corrected.png') });
   await page.locator('#wheel-split').screenshot({ path: path.join(shots, 'wheel-split.png') });

@@ -182,3 +182,34 @@ test('axes run that grind no face: no simulated grid or thickness written as the
   const ground = resultsCsv(hobsharp.evaluate({ ...paper, measured }), { caseObject: { ...paper, measured } });
   assert.ok(ground.includes('# simulated normal deviation (µm) for the axes run'));
 });
+
+// With the wheel's correction the record holds the dressing proposed: at its spline points, in µm
+// with its words from the module, and the dresser path (R, Z, offset), which may reach past the
+// points; an independent review found the record without it.
+test('the results CSV holds the wheel dressing proposed and the dresser path', () => {
+  const measured = Array.from({ length: 5 }, (_, i) => Array.from({ length: 9 }, (_, k) => 2 * Math.sin(i) + 0.1 * k));
+  const caseObject = { ...paper, measured, correction: { wheel: true } };
+  const r = hobsharp.evaluate(caseObject);
+  const w = r.correction.wheelProfileOffset;
+  assert.ok(w.R.length >= 2);
+  const text = resultsCsv(r, { caseObject });
+  const lines = text.split('\n');
+  const at = lines.findIndex((l) => l.startsWith('# wheel dressing proposed: '));
+  assert.ok(at > 0, 'a dressing block');
+  assert.match(lines[at], /\+ = more wheel/);
+  assert.ok(lines[at + 1].includes('µm'));
+  assert.match(lines[at + 2 + w.R.length], /axes remove|share/);
+  for (let i = 0; i < w.R.length; i++) {
+    const cells = lines[at + 2 + i].split(',');
+    assert.equal(Number(cells[0]), w.R[i]);
+    assert.equal(cells[1], 'mm');
+    assert.equal(Number(cells[2]), w.offset[i]);
+    assert.equal(cells[3], 'µm');
+  }
+  const path = lines.findIndex((l) => l.startsWith('# dresser path: '));
+  assert.ok(path > at);
+  assert.equal(lines.slice(path + 2).findIndex((l) => l === '') , r.correction.dresserPath.R.length);
+  assert.ok(text.includes(`\n${r.correction.dresserPath.R[3]},${r.correction.dresserPath.Z[3]},${r.correction.dresserPath.offset[3]}\n`));
+  // Without the wheel's correction, no such block.
+  assert.ok(!resultsCsv(hobsharp.evaluate({ ...paper, measured }), { caseObject: { ...paper, measured } }).includes('# wheel dressing proposed'));
+});

@@ -73,6 +73,27 @@ export function resultsCsv(r, { caseObject = null, style = 'comma', date = new D
   } else if (g) {
     lines.push('', '# effect on the gear', row('no figures', g.reason));
   }
+  // The wheel's dressing proposed (correction.wheel): the record holds what the figures after the
+  // pass take dressed, at its spline points and along the dresser path (the path may reach past the
+  // points), with the shares the axes and the wheel remove (an independent review found the record
+  // without it).
+  const w = c && c.wheelProfileOffset;
+  if (w && Array.isArray(w.R) && Array.isArray(w.offset) && w.R.length === w.offset.length) {
+    const R = 'correction.wheelProfileOffset.R', off = 'correction.wheelProfileOffset.offset';
+    lines.push('', `# wheel dressing proposed: ${fieldMeaning(off)}`, row(fieldLabel(R), fieldUnit(R), fieldLabel(off), fieldUnit(off)));
+    w.R.forEach((radius, i) => lines.push(row(radius, fieldUnit(R), w.offset[i], fieldUnit(off))));
+    for (const q of ['axesShare', 'wheelShare']) {
+      const path = `correction.${q}`;
+      if (typeof c[q] === 'number') lines.push(row(fieldLabel(path), 'share, 0..1', c[q]));
+    }
+    const d = c.dresserPath;
+    if (d && Array.isArray(d.R) && Array.isArray(d.Z) && Array.isArray(d.offset)) {
+      const pr = 'correction.dresserPath.R', pz = 'correction.dresserPath.Z', po = 'correction.dresserPath.offset';
+      lines.push('', `# dresser path: ${fieldMeaning(pr)}`,
+        row(`${fieldLabel(pr)} (${fieldUnit(pr)})`, `${fieldLabel(pz)} (${fieldUnit(pz)})`, `${fieldLabel(po)} (${fieldUnit(po)})`));
+      d.R.forEach((radius, i) => lines.push(row(radius, d.Z[i], d.offset[i])));
+    }
+  }
   lines.push('', '# axis polynomials; change = corrected - run: what the correction changes',
     row('coefficient', 'unit', 'nominal', 'run', 'corrected', 'change'));
   const per = motionUnit(r);

@@ -2,6 +2,7 @@
 // groups), for refusals worded as the user sees the form (field-words.js).
 import { wordedError } from '../field-words.js';
 import { escapeHtml } from '../format.js';
+import { fieldUnit } from '../result-fields.js';
 
 // A label's name as plain text, subscripts written with an underscore: "Pitch diameter d_p".
 function plainText(el) {
@@ -25,6 +26,8 @@ export function fieldNames() {
     'correction.resolution.X': 'Resolution of X', 'correction.resolution.Y': 'Resolution of Y', 'correction.resolution.Z': 'Resolution of Z',
     'correction.resolution.A': 'Resolution of A', 'correction.resolution.B': 'Resolution of B',
     'inspection.uncertainty': 'Measurement uncertainty U95', 'inspection.tolerances': 'Tolerance table',
+    'wheel.profileOffset.R': 'Wheel offset: conjugate wheel radius R', 'wheel.profileOffset.offset': 'Wheel offset (+ = more wheel)',
+    'wheel.measuredProfile.R': 'Measured wheel profile: radius R', 'wheel.measuredProfile.Z': 'Measured wheel profile: axial position Z',
   })) names[path] = { text, html: escapeHtml(text) };
   for (const fieldset of document.querySelectorAll('#inputs fieldset[data-group]')) {
     const legend = fieldset.querySelector('legend');
@@ -62,6 +65,9 @@ export function fieldUnits() {
     const input = document.querySelector(id);
     if (input) units[path] = unitOf(input);
   }
+  // A wheel file's points (views/wheel-input.js), in the units of the result fields they become.
+  for (const [path, resultPath] of [['wheel.profileOffset.R', 'wheelOffset.R'], ['wheel.profileOffset.offset', 'wheelOffset.offset'],
+    ['wheel.measuredProfile.R', 'wheelProfile.dressedR'], ['wheel.measuredProfile.Z', 'wheelProfile.dressedZ']]) units[path] = fieldUnit(resultPath);
   return units;
 }
 
