@@ -149,7 +149,7 @@ const Rule kRules[] = {
     // A measured grid of fewer values than free coefficients, as measured points are refused.
     {"GridTooFewForTheDegree", [](Json& j) { j["grid"] = {{"radial", 2}, {"axial", 2}}; j["degree"] = 6; j["measured"] = measuredRows(2, 2); }, "measured", "Measured grid: 4 values are too few for the 35 free coefficients of degree 6 (one equation per value)"},
     // Axes run beyond a run's limits: a unit slip, named with the unit (run_axes.h).
-    {"RunAxisInDegrees", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {12.626, 0, 0, 0, 0}}}; }, "axes.B", "differs from the nominal axis by up to 12.41 rad (710.8 deg) over the motion; a run differs from it by a correction, µm and µrad, and at most 30 deg on A and B is taken. A and B are in rad: was it typed in degrees?"},
+    {"RunAxisInDegrees", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5089, 0, 0, 0}}, {"Y", {39.3076, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {12.626, 0, 0, 0, 0}}}; }, "axes.B", "differs from the nominal axis by up to 12.41 rad (710.8 deg) over the motion; a run is taken to differ from it by at most 90 deg on A and B, far beyond any correction. A and B are in rad: was it typed in degrees?"},
     {"RunAxisInMicrometres", [](Json& j) { j["axes"] = {{"X", {22.4, 139.5089, 0, 0, 0}}, {"Y", {39307.6, 0, 0, 0, 0}}, {"Z", {-116.446, 0, 0, 0, 0}}, {"A", {0, 1, 0, 0, 0}}, {"B", {0.220365, 0, 0, 0, 0}}}; }, "axes.Y", "X, Y and Z are in mm: was it typed in µm?"},
     {"PassAxisInDegrees", [](Json& j) { j["passes"] = twoPasses(); j["passes"][1]["axes"]["B"][0] = 12.626; }, "passes[1].axes.B", "was it typed in degrees?"},
     // The wheel's rim and the gash root (docs/conventions.md, "The wheel's rim").
@@ -358,7 +358,7 @@ TEST(CaseFile, AbsurdAxisCoefficientsAreRefusedOrStayFinite) {
         EXPECT_NE(job.error().message.find(rotary ? "was it typed in degrees?" : "was it typed in µm?"), std::string::npos)
             << job.error().message;
       }
-      // Within the limits (50 mm, 30 deg over the motion, about 0.56 rad each way here), either sign.
+      // Far off, within the limits (1000 mm, 90 deg over the motion, about 0.56 rad each way here), either sign.
       for (double sign : {1.0, -1.0}) {
         Json j = paperJson();
         j["axes"] = axes;

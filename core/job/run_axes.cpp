@@ -37,8 +37,8 @@ Outcome<void> checkNearNominal(const AxisPolynomials& axes, const AxisPolynomial
       return refuse(name + "." + axisName(a),
                     "differs from the nominal axis by up to " + numberText(std::abs(worst), 4) + unit +
                         (rotary ? " (" + numberText(std::abs(worst) * kDegPerRad, 4) + " deg)" : "") +
-                        " over the motion; a run differs from it by a correction, µm and µrad, and at most " +
-                        (rotary ? "30 deg on A and B" : "50 mm on X, Y and Z") + " is taken. " +
+                        " over the motion; a run is taken to differ from it by at most " +
+                        (rotary ? "90 deg on A and B" : "1000 mm on X, Y and Z") + ", far beyond any correction. " +
                         (rotary ? "A and B are in rad: was it typed in degrees?" : "X, Y and Z are in mm: was it typed in µm?"));
     }
   }

@@ -14,15 +14,16 @@ namespace hobsharp {
 // "passes[0].axes").
 Outcome<void> checkAxes(const AxisPolynomials& axes, int degree, const std::string& name);
 
-// How far axes run may lie from the nominal ones anywhere over the motion: 50 mm on X, Y, Z and
-// 30 deg on A, B, far beyond any correction (µm and µrad) and any machine's error, and short of a
-// unit slip (µm typed in a mm field is 1000 times the value, degrees in a rad field 57 times);
-// past it the run is such a slip, and a machine error identified to explain it would be proposed
-// as a correction (an independent review: B typed in degrees gave usable axes). A linear
-// correction of faces signed the wrong way round proposed 12 mm on Y (test_pass_history.cpp): a
-// run that wild still grinds a face, and its next pass says what went wrong.
-constexpr double kMaxRunOffsetLinear = 50;                  // mm
-constexpr double kMaxRunOffsetRotary = 30 * 3.14159265358979323846 / 180;  // rad
+// How far axes run may lie from the nominal ones anywhere over the motion: 1000 mm on X, Y, Z and
+// 90 deg on A, B, beyond any correction and short of a unit slip of a setup value (µm typed in a
+// mm field is 1000 times the value, degrees in a rad field 57 times); past it the run is such a
+// slip, and a machine error identified to explain it would be proposed as a correction (an
+// independent review: B typed in degrees gave usable axes). The calculator's own proposals reach
+// far: on a straight gash with a 150 µm face, Y over the motion by 64 mm (the campaign's seed
+// 20261125, scenario 314, whose next pass a 50 mm limit refused), and a linear correction of faces
+// signed the wrong way round proposed 12 mm (test_pass_history.cpp).
+constexpr double kMaxRunOffsetLinear = 1000;                // mm
+constexpr double kMaxRunOffsetRotary = 90 * 3.14159265358979323846 / 180;  // rad
 
 // Axes run within those limits of `nominal` at every motion parameter in [-reach, reach] (rad, or mm
 // on a straight gash); `name` as checkAxes's.

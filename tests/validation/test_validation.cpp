@@ -394,6 +394,18 @@ TEST(Validation, TheBoundSamplesTheWheelShapeTheAxesMimic) {
   EXPECT_NE(p.verdict.find("or cannot tell from the wheel's shape"), std::string::npos) << p.verdict;
 }
 
+// The calculator's own proposal is a run its next pass takes: on seed 20261125's scenario 314 (150
+// µm, straight gash) the first pass moves Y by up to 64 mm over the motion (an axis the face hardly
+// shows), and a 50 mm limit on axes run (run_axes.h) refused the second pass, which reaches 0.02 µm.
+TEST(Validation, AFirstProposalFarOnAnUnseenAxisIsTakenAsTheNextRun) {
+  auto s = makeScenario(20261125, 314);
+  ASSERT_TRUE(s.ok());
+  const ScenarioOutcome o = runScenario(*s);
+  ASSERT_EQ(o.passes.size(), 2u);
+  for (const PassOutcome& p : o.passes) EXPECT_FALSE(p.refused) << p.message;
+  EXPECT_LT(o.passes.back().denseRms, 0.1);
+}
+
 // A wheel dressing below the machine's position resolution is told as none ("needs no dressing"),
 // while the figures after the pass take it dressed: the bound takes the wheel left undressed
 // (wheel_correction.cpp). Seed 4711's scenario 455 (wheel class), its first pass: the dressing
