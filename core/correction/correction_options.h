@@ -82,4 +82,11 @@ inline bool isLocked(const Coefficient& c, const CorrectionOptions& o) {
          std::find(o.locked.begin(), o.locked.end(), c) != o.locked.end();
 }
 
+// The coefficients of `degree` the correction seeks: all but the locked ones (one equation per
+// measured value each needs; a measurement of fewer values is refused).
+inline int freeCoefficients(int degree, const CorrectionOptions& o) {
+  const std::vector<Coefficient> all = allCoefficients(degree);
+  return static_cast<int>(std::count_if(all.begin(), all.end(), [&](const Coefficient& k) { return !isLocked(k, o); }));
+}
+
 }  // namespace hobsharp

@@ -25,8 +25,7 @@ Outcome<Correction> correctMeasuredPoints(const SharpeningSetup& setup, const Ax
   if (measured.size() != static_cast<Eigen::Index>(probes.size()))
     return refusePoints("measuredPoints", std::to_string(probes.size()) + " points but " +
                                         std::to_string(measured.size()) + " deviations.", ErrorCode::Internal);
-  int free = 0;
-  for (const Coefficient& k : allCoefficients(run.degree())) free += isLocked(k, o) ? 0 : 1;
+  const int free = freeCoefficients(run.degree(), o);
   if (static_cast<int>(probes.size()) < free)
     return refusePoints("measuredPoints", std::to_string(probes.size()) + " points are too few for the " +
                                         std::to_string(free) + " free coefficients of degree " + std::to_string(run.degree()) +

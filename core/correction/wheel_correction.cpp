@@ -15,6 +15,9 @@ namespace {
 
 // "the wheel needs no dressing (...)": why, for a largest dressing (µm) below the machine's linear
 // position resolution `step` (µm).
+// The machine's linear position resolution, µm: a dressing below it is none (verdictOf).
+double linearStep(const CorrectionOptions& o) { return o.resolution.inAxisUnit(Axis::X) * kMicrometresPerMm; }
+
 std::string noDressingText(double largest, double step) {
   std::ostringstream t;
   t.precision(3);
@@ -40,7 +43,7 @@ std::string verdictOf(const Correction& c, const WheelCorrection& w, const Corre
                             percentText(w.wheelShare);
   // A dressing below the machine's linear position resolution (µm) is none: the wheel's shape the
   // face shows, if any, the axes make (wheel_error.h).
-  const double step = o.resolution.inAxisUnit(Axis::X) * kMicrometresPerMm;
+  const double step = linearStep(o);
   const bool dressing = largest >= step;
   const bool correctable = c.uncorrectableShare <= o.correctableShare || withinNoise;
   if (c.changesNothing() && !dressing) {
@@ -121,8 +124,7 @@ Outcome<AxesAndWheelCorrection> correctAxesAndWheel(const SharpeningSetup& setup
   // normal as the wheel's normal at the contact, at most its largest magnitude at every point, so
   // the bound takes that much more (following "needs no dressing" had left more than the bound in 7
   // of 14 random scenarios, an independent review).
-  const double step = o.resolution.inAxisUnit(Axis::X) * kMicrometresPerMm;
-  if (!c.keepsRun() && w.largestOffset > 0 && w.largestOffset < step) out.correction.predictedRmsHigh += w.largestOffset;
+  if (!c.keepsRun() && w.largestOffset > 0 && w.largestOffset < linearStep(o)) out.correction.predictedRmsHigh += w.largestOffset;
 
   // What was removed, split along the axes' span: the axes' part, and the shape only the wheel makes.
   const int rows = runFace.grid.rows(), cols = runFace.grid.cols();

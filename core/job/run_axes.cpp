@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "correction.h"
 #include "number_text.h"
 #include "units.h"
 
@@ -22,21 +23,16 @@ Outcome<void> checkAxes(const AxisPolynomials& axes, int degree, const std::stri
 
 Outcome<void> checkNearNominal(const AxisPolynomials& axes, const AxisPolynomials& nominal, double reach,
                                const std::string& name) {
-  constexpr int kSamples = 41;
+  // axes - nominal of largest magnitude over the motion, µm or µrad (correction.h).
+  const std::array<double, kAxisCount> off = axisChangeOver(axes, nominal, MotionRange{-reach, reach});
   for (Axis a : kAxes) {
     const bool rotary = isRotary(a);
-    double worst = 0;
-    for (int i = 0; i < kSamples; ++i) {
-      const double w = -reach + 2 * reach * i / (kSamples - 1);
-      const double d = axes[a].at(w).value - nominal[a].at(w).value;
-      if (std::abs(d) > std::abs(worst)) worst = d;
-    }
-    const double most = rotary ? kMaxRunOffsetRotary : kMaxRunOffsetLinear;
-    if (std::abs(worst) > most) {
+    const double worst = std::abs(off[static_cast<size_t>(a)]) / (rotary ? 1e6 : kMicrometresPerMm);  // rad or mm
+    if (worst > (rotary ? kMaxRunOffsetRotary : kMaxRunOffsetLinear)) {
       const std::string unit = rotary ? " rad" : " mm";
       return refuse(name + "." + axisName(a),
-                    "differs from the nominal axis by up to " + numberText(std::abs(worst), 4) + unit +
-                        (rotary ? " (" + numberText(std::abs(worst) * kDegPerRad, 4) + " deg)" : "") +
+                    "differs from the nominal axis by up to " + numberText(worst, 4) + unit +
+                        (rotary ? " (" + numberText(worst * kDegPerRad, 4) + " deg)" : "") +
                         " over the motion; a run is taken to differ from it by at most " +
                         (rotary ? "90 deg on A and B" : "1000 mm on X, Y and Z") + ", far beyond any correction. " +
                         (rotary ? "A and B are in rad: was it typed in degrees?" : "X, Y and Z are in mm: was it typed in µm?"));

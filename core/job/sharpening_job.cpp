@@ -168,8 +168,7 @@ Outcome<SharpeningJob> resolveJob(const CaseInput& in) {
   // values than free coefficients cannot decide them (a 2 x 2 grid at degree 6 was called
   // "Correctable" from 4 values for 35 coefficients; an independent review).
   if (job.measured.grid) {
-    int free = 0;
-    for (const Coefficient& k : allCoefficients(in.degree)) free += isLocked(k, job.correction) ? 0 : 1;
+    const int free = freeCoefficients(in.degree, job.correction);
     if (job.grid.size() < free)
       return Error{"measured", gridWords("measured") + ": " + std::to_string(job.grid.size()) + " values are too few for the " +
                                    std::to_string(free) + " free coefficients of degree " + std::to_string(in.degree) +
