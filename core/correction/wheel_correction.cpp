@@ -13,11 +13,11 @@
 namespace hobsharp {
 namespace {
 
-// "the wheel needs no dressing (...)": why, for a largest dressing (µm) below the machine's linear
-// position resolution `step` (µm).
 // The machine's linear position resolution, µm: a dressing below it is none (verdictOf).
 double linearStep(const CorrectionOptions& o) { return o.resolution.inAxisUnit(Axis::X) * kMicrometresPerMm; }
 
+// "the wheel needs no dressing (...)": why, for a largest dressing (µm) below the machine's linear
+// position resolution `step` (µm).
 std::string noDressingText(double largest, double step) {
   std::ostringstream t;
   t.precision(3);
